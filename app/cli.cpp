@@ -1,0 +1,36 @@
+#include "app/cli.hpp"
+
+#include <exception>
+#include <iostream>
+
+#include <omp.h>
+
+#include "core/error.hpp"
+
+namespace contactbench {
+
+void add_threads_option(CLI::App& command, int& threads) {
+  threads = omp_get_max_threads();
+  command.add_option("--threads", threads, "Threads for FFTs and loops (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+}
+
+int run_cli(int argc, char** argv) {
+  CLI::App app{
+      "contactbench: how well cheap models of rough-surface contact predict the real contact area, and what "
+      "each answer costs in time."};
+  app.require_subcommand(1);
+  add_generate_command(app);
+  add_stats_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);  // --help lands here with status 0; a usage error prints its reason
+  } catch (const std::exception& e) {
+    std::cerr << "contactbench: error: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace contactbench

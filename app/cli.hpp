@@ -1,0 +1,19 @@
+// The contactbench command line: subcommands, their options, and how errors reach the user.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace contactbench {
+
+// Parses argv and runs the chosen subcommand. Returns the process exit status: 0 on success; on any error a
+// one-line reason on stderr and a non-zero status (2 for bad usage, 1 for bad input or a failed run).
+int run_cli(int argc, char** argv);
+
+// Each subcommand registers its options on `parent` and runs when chosen (one file each).
+void add_generate_command(CLI::App& parent);
+void add_stats_command(CLI::App& parent);
+
+// Threads for a command: --threads if given, else what OpenMP would use (the machine's cores).
+void add_threads_option(CLI::App& command, int& threads);
+
+}  // namespace contactbench

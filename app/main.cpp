@@ -1,0 +1,6 @@
+// The contactbench command: parses arguments and hands over to the app library.
+#include "app/cli.hpp"
+
+int main(int argc, char** argv) {
+  return contactbench::run_cli(argc, argv);
+}

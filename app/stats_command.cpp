@@ -1,0 +1,90 @@
+// contactbench stats: a topography's sizes and spectral statistics as one JSON object (THEORY.md section 1).
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "app/cli.hpp"
+#include "app/json_writer.hpp"
+#include "core/spectrum.hpp"
+#include "core/topography_io.hpp"
+
+namespace contactbench {
+
+namespace {
+
+struct StatsOptions {
+  std::string file;
+  std::optional<Real> size;
+  std::optional<Real> size_y;
+  bool periodic = false;
+  int threads = 1;
+};
+
+JsonObject conventions(Window window) {
+  JsonObject c;
+  c.add("units", "SI: lengths and sq in m, m0 in m^2, m2 dimensionless, m4 in m^-2");
+  c.add("moments",
+        "profile (Nayak) moments along x and y, summed over the lattice: m_n = sum_k q^n |hhat_k|^2, mean "
+        "removed (THEORY.md section 1)");
+  c.add("alpha", "Nayak bandwidth m0 m4x / m2x^2 of the x profile; alpha_y from the y profile");
+  c.add("rms_gradient", "areal sqrt(<|grad h|^2>) = sqrt(m2x + m2y)");
+  c.add("sq", "root-mean-square height about the mean, no detrending");
+  c.add("window", window == Window::hann
+                      ? "hann: the surface is not periodic, so it was Hann-windowed before the transform"
+                      : "none: the surface is periodic, the lattice sums are exact");
+  return c;
+}
+
+void run_stats(const StatsOptions& o) {
+  TopographyReadOptions read;
+  read.lx = o.size;
+  read.ly = o.size_y;
+  if (o.periodic) read.periodic = true;
+  const Surface surface = read_topography(o.file, read);
+  const FourierCoefficients coefficients = fourier_coefficients(surface, o.threads);
+  const SpectralMoments m = spectral_moments(coefficients);
+  const Grid& g = surface.grid();
+
+  JsonObject json;
+  json.add("file", o.file)
+      .add("format", to_string(detect_topography_format(o.file)))
+      .add("nx", g.nx)
+      .add("ny", g.ny)
+      .add("lx", g.lx)
+      .add("ly", g.ly)
+      .add("periodic", g.periodic)
+      .add("mean", surface.mean_height())
+      .add("sq", surface.rms_height())
+      .add("m0", m.m0)
+      .add("m2x", m.m2x)
+      .add("m4x", m.m4x)
+      .add("m2y", m.m2y)
+      .add("m4y", m.m4y)
+      .add("alpha", m.alpha_x())
+      .add("alpha_y", m.alpha_y())
+      .add("rms_gradient", m.rms_gradient())
+      .add("window", to_string(coefficients.window))
+      .add("conventions", conventions(coefficients.window));
+  std::cout << json.str() << '\n';
+}
+
+}  // namespace
+
+void add_stats_command(CLI::App& parent) {
+  auto options = std::make_shared<StatsOptions>();
+  CLI::App* command = parent.add_subcommand(
+      "stats", "Print a topography's sizes, Sq and spectral moments as one JSON object (SI units).");
+  command
+      ->add_option("FILE", options->file,
+                   "topography: the project's format, an interferometer or Gwyddion text export, or a "
+                   "plain matrix of heights in metres (then --size is needed)")
+      ->required();
+  command->add_option("--size", options->size, "lateral size along x [m] (for files that carry none)");
+  command->add_option("--size-y", options->size_y, "lateral size along y [m] (default: square pixels)");
+  command->add_flag("--periodic", options->periodic,
+                    "treat the surface as periodic (moments without a window)");
+  add_threads_option(*command, options->threads);
+  command->callback([options] { run_stats(*options); });
+}
+
+}  // namespace contactbench

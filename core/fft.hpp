@@ -1,0 +1,81 @@
+// FFT engine over FFTW: real-to-complex 2D plans made once per shape and reused.
+//
+// Conventions (THEORY.md section 1): forward is the unnormalised sum_x h(x) exp(-i q_k.x); backward is the
+// unnormalised sum_k c_k exp(+i q_k.x) over the full lattice, given its Hermitian half (types.hpp).
+// Divide the forward result by nx * ny to get the Fourier-series coefficients hhat_k.
+#pragma once
+
+#include <memory>
+
+#include <fftw3.h>
+
+#include "core/types.hpp"
+
+namespace contactbench {
+
+// How hard FFTW searches for a fast plan: `estimate` plans instantly, `measure` times candidates
+// (seconds for large grids) and pays off only for the many transforms of a solver.
+enum class FftRigor { estimate, measure };
+
+// A 2D real <-> half-complex transform of one shape, with its own aligned buffers.
+// Transforms run on `threads` threads. One RealFft2d serves one caller at a time; creating and destroying
+// plans is thread-safe (FFTW's planner is guarded by a process-wide lock).
+class RealFft2d {
+ public:
+  RealFft2d(Index nx, Index ny, int threads = 1, FftRigor rigor = FftRigor::estimate);
+  ~RealFft2d();
+  RealFft2d(const RealFft2d&) = delete;
+  RealFft2d& operator=(const RealFft2d&) = delete;
+
+  Index nx() const { return nx_; }
+  Index ny() const { return ny_; }
+  Index nx_half() const { return nx_ / 2 + 1; }
+  int threads() const { return threads_; }
+
+  // The plan's own buffers, for callers that transform in place without copies (ny x nx, ny x nx/2+1).
+  Eigen::Map<HeightMap> real() { return {real_, ny_, nx_}; }
+  Eigen::Map<SpectrumMap> spectrum() { return {reinterpret_cast<Complex*>(spectrum_), ny_, nx_half()}; }
+  void forward();   // spectrum() <- forward(real())
+  void backward();  // real() <- backward(spectrum()); spectrum() is destroyed (FFTW's multi-dim c2r)
+
+  // Copying conveniences; `in` is left untouched.
+  void forward(const HeightMap& in, SpectrumMap& out);
+  void backward(const SpectrumMap& in, HeightMap& out);
+
+ private:
+  Index nx_, ny_;
+  int threads_;
+  double* real_ = nullptr;
+  fftw_complex* spectrum_ = nullptr;
+  fftw_plan forward_plan_ = nullptr;
+  fftw_plan backward_plan_ = nullptr;
+};
+
+// A plan of this shape and thread count for the calling thread, made on first use and kept for reuse.
+RealFft2d& cached_fft(Index nx, Index ny, int threads = 1);
+
+// The backward transform with a result that is bit-identical for any thread count: the 2D transform is done
+// as 1D transforms over fixed chunks of lines, each chunk by the same single-threaded plan, so the
+// arithmetic never depends on how chunks are shared among threads. Used where reproducibility is promised
+// (surface generation).
+class ReproducibleInverseFft2d {
+ public:
+  ReproducibleInverseFft2d(Index nx, Index ny);
+  ~ReproducibleInverseFft2d();
+  ReproducibleInverseFft2d(const ReproducibleInverseFft2d&) = delete;
+  ReproducibleInverseFft2d& operator=(const ReproducibleInverseFft2d&) = delete;
+
+  // out(x) = sum_k in_k exp(+i q_k.x); `in` is ny x (nx/2+1), `out` becomes ny x nx. Runs on `threads`.
+  void backward(const SpectrumMap& in, HeightMap& out, int threads);
+
+ private:
+  static constexpr Index kLinesPerChunk = 16;
+  Index nx_, ny_;
+  SpectrumMap work_;
+  HeightMap result_;
+  // Per chunk size (full chunk, remainder chunk): complex backward along y, then c2r along x.
+  fftw_plan columns_full_ = nullptr, columns_rest_ = nullptr;
+  fftw_plan rows_full_ = nullptr, rows_rest_ = nullptr;
+};
+
+}  // namespace contactbench

@@ -1,0 +1,49 @@
+#include "core/surface.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace contactbench {
+
+void validate(const Grid& grid, const char* what) {
+  const std::string name(what);
+  if (grid.nx < 1 || grid.ny < 1)
+    throw Error(name + ": needs at least one point along x and y, got " + std::to_string(grid.nx) + " x " +
+                std::to_string(grid.ny));
+  if (!(std::isfinite(grid.lx) && grid.lx > 0) || !(std::isfinite(grid.ly) && grid.ly > 0))
+    throw Error(name + ": lateral sizes must be finite and > 0 m, got lx = " + std::to_string(grid.lx) +
+                ", ly = " + std::to_string(grid.ly));
+}
+
+Surface::Surface(Grid grid, HeightMap heights) : grid_(grid), heights_(std::move(heights)) {
+  validate(grid_, "surface");
+  if (heights_.rows() != grid_.ny || heights_.cols() != grid_.nx)
+    throw Error("surface: height array is " + std::to_string(heights_.cols()) + " x " +
+                std::to_string(heights_.rows()) + " (x by y) but the grid is " + std::to_string(grid_.nx) +
+                " x " + std::to_string(grid_.ny));
+  if (!heights_.allFinite()) {
+    for (Index iy = 0; iy < heights_.rows(); ++iy)
+      for (Index ix = 0; ix < heights_.cols(); ++ix)
+        if (!std::isfinite(heights_(iy, ix)))
+          throw Error("surface: height at (ix, iy) = (" + std::to_string(ix) + ", " + std::to_string(iy) +
+                      ") is not finite");
+  }
+}
+
+Real Surface::rms_height() const {
+  return std::sqrt((heights_ - heights_.mean()).square().mean());
+}
+
+Surface Surface::centred() const {
+  return Surface(grid_, heights_ - heights_.mean());
+}
+
+Surface Surface::with_periodic(bool periodic) const {
+  Grid grid = grid_;
+  grid.periodic = periodic;
+  return Surface(grid, heights_);
+}
+
+}  // namespace contactbench

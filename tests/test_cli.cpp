@@ -1,0 +1,140 @@
+// End to end through the contactbench binary: generate, stats, help, and errors a user would hit.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include <sys/wait.h>
+
+namespace contactbench {
+namespace {
+
+struct CommandResult {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ =
+        std::filesystem::temp_directory_path() /
+        ("contactbench_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::remove_all(folder_);
+    std::filesystem::create_directories(folder_);
+  }
+  void TearDown() override { std::filesystem::remove_all(folder_); }
+
+  CommandResult run(const std::string& arguments) {
+    const auto out = folder_ / "stdout.txt", err = folder_ / "stderr.txt";
+    const std::string command = std::string(CB_CLI_PATH) + " " + arguments + " >" + out.string() + " 2>" +
+                                err.string() + " </dev/null";
+    const int raw = std::system(command.c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  }
+
+  std::filesystem::path folder_;
+};
+
+// The number after "key": in a JSON text.
+double json_value(const std::string& json, const std::string& key) {
+  std::smatch match;
+  if (!std::regex_search(json, match, std::regex("\"" + key + "\": ([-+0-9.eE]+)")))
+    throw std::runtime_error("no numeric key " + key + " in " + json);
+  return std::stod(match[1]);
+}
+
+const std::string kSurfaceA = "--sigma 0.5e-6 --hurst 0.5 --qr 3.14e4 --size 200e-6 --grid 256 --seed 3";
+
+TEST_F(Cli, GeneratesSurfaceAAndItsStatsMatchTable2) {
+  const auto file = folder_ / "a.txt";
+  const CommandResult generated = run("generate " + kSurfaceA + " --out " + file.string());
+  ASSERT_EQ(generated.status, 0) << generated.err;
+  const CommandResult stats = run("stats " + file.string());
+  ASSERT_EQ(stats.status, 0) << stats.err;
+  for (const char* key :
+       {"nx", "ny", "lx", "ly", "sq", "m0", "m2x", "m4x", "m2y", "m4y", "alpha", "rms_gradient"})
+    EXPECT_NO_THROW(json_value(stats.out, key)) << key;
+  EXPECT_NE(stats.out.find("\"periodic\": true"), std::string::npos);
+  EXPECT_EQ(json_value(stats.out, "nx"), 256);
+  // Table 2 to 1 % (as in the library's own test): m0 = 0.250 um^2, m2 = 0.0110, m4 = 0.0446 um^-2.
+  EXPECT_NEAR(json_value(stats.out, "m0"), 0.250e-12, 0.01 * 0.250e-12);
+  EXPECT_NEAR(json_value(stats.out, "m2x"), 0.0110, 0.01 * 0.0110);
+  EXPECT_NEAR(json_value(stats.out, "m4y"), 0.0446e12, 0.01 * 0.0446e12);
+}
+
+TEST_F(Cli, RefineWritesTheSameRealisationOnAFinerGrid) {
+  const auto coarse = folder_ / "coarse.txt", fine = folder_ / "fine.txt";
+  ASSERT_EQ(run("generate " + kSurfaceA + " --out " + coarse.string()).status, 0);
+  ASSERT_EQ(run("generate " + kSurfaceA + " --refine 512 --out " + fine.string()).status, 0);
+  const CommandResult a = run("stats " + coarse.string()), b = run("stats " + fine.string());
+  EXPECT_EQ(json_value(b.out, "nx"), 512);
+  // Same coefficients, sampled finer: the moments agree to round-off (1e-10 relative, as the library test).
+  EXPECT_NEAR(json_value(b.out, "m2x"), json_value(a.out, "m2x"), 1e-10 * json_value(a.out, "m2x"));
+}
+
+TEST_F(Cli, StatsOfAMeasuredFileWithItsOwnSizes) {
+  const CommandResult stats = run(std::string("stats ") + CB_MEASURED_DIR + "/matrix-4.txt");
+  ASSERT_EQ(stats.status, 0) << stats.err;
+  EXPECT_EQ(json_value(stats.out, "nx"), 75);
+  EXPECT_EQ(json_value(stats.out, "ny"), 305);
+  EXPECT_NE(stats.out.find("\"periodic\": false"), std::string::npos);
+  EXPECT_NE(stats.out.find("\"window\": \"hann\""), std::string::npos);
+}
+
+TEST_F(Cli, EveryCommandHasHelp) {
+  for (const char* command : {"--help", "generate --help", "stats --help"}) {
+    const CommandResult help = run(command);
+    EXPECT_EQ(help.status, 0) << command;
+    EXPECT_NE(help.out.find("Usage"), std::string::npos) << command;
+  }
+}
+
+TEST_F(Cli, AMissingFileFailsWithOneLineNamingIt) {
+  const CommandResult stats = run("stats " + (folder_ / "nothing.txt").string());
+  EXPECT_NE(stats.status, 0);
+  EXPECT_NE(stats.err.find("nothing.txt"), std::string::npos) << stats.err;
+  EXPECT_EQ(std::count(stats.err.begin(), stats.err.end(), '\n'), 1) << stats.err;
+}
+
+TEST_F(Cli, BadParametersFailNamingTheParameter) {
+  const CommandResult negative =
+      run("generate --sigma -1e-6 --hurst 0.5 --qr 3e4 --size 2e-4 --grid 64 --out " +
+          (folder_ / "x.txt").string());
+  EXPECT_NE(negative.status, 0);
+  EXPECT_NE(negative.err.find("sigma"), std::string::npos) << negative.err;
+  EXPECT_FALSE(std::filesystem::exists(folder_ / "x.txt"));
+  const CommandResult missing = run("generate --hurst 0.5 --qr 3e4 --size 2e-4 --grid 64 --out x.txt");
+  EXPECT_NE(missing.status, 0);
+  EXPECT_NE(missing.err.find("--sigma"), std::string::npos) << missing.err;
+  const CommandResult unknown = run("frobnicate");
+  EXPECT_NE(unknown.status, 0);
+  const CommandResult plain = run("stats " + (folder_ / "plain.txt").string());
+  EXPECT_NE(plain.status, 0);
+}
+
+TEST_F(Cli, APlainMatrixNeedsItsSize) {
+  const auto file = folder_ / "plain.txt";
+  std::ofstream(file) << "1e-9 2e-9 3e-9\n4e-9 5e-9 6e-9\n";
+  const CommandResult without = run("stats " + file.string());
+  EXPECT_NE(without.status, 0);
+  EXPECT_NE(without.err.find("plain.txt"), std::string::npos) << without.err;
+  const CommandResult with = run("stats " + file.string() + " --size 3e-6 --periodic");
+  ASSERT_EQ(with.status, 0) << with.err;
+  EXPECT_EQ(json_value(with.out, "nx"), 3);
+  EXPECT_DOUBLE_EQ(json_value(with.out, "ly"), 2e-6);  // square pixels by default
+}
+
+}  // namespace
+}  // namespace contactbench

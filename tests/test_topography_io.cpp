@@ -1,0 +1,379 @@
+// Reading and writing topography files: the measured instrument exports, the project's lossless format,
+// plain matrices, and one test per kind of bad input.
+#include "core/topography_io.hpp"
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "core/error.hpp"
+#include "tests/tolerances.hpp"
+
+namespace contactbench {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The measured files and their Sq values come from SurfaceTopography's test data
+// (ContactEngineering/SurfaceTopography, test/file_format_examples, commit
+// 119cb66ade8917a0a62a878c82d459f959566760, MIT licence); see data/measured/README.md.
+const fs::path measured_folder{CB_MEASURED_DIR};
+
+// The one rounding of a unit conversion (10.00 times 1e-6, say) against a decimal literal: a few ulp.
+constexpr double unit_conversion_rounding = 1e-15;
+
+// Sq as SurfaceTopography asserts it, compared relatively.
+void expect_sq(const Surface& surface, double reference) {
+  // tolerance::measured_sq: both sides sum the same decimal data in double, only the order differs.
+  EXPECT_NEAR(surface.rms_height(), reference, tolerance::measured_sq * reference);
+}
+
+// The non-blank lines of a text file, for checking the reader against the file's own numbers.
+std::vector<std::string> lines_of(const fs::path& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) lines.push_back(line);
+  return lines;
+}
+
+// Reading must fail with an InputError naming the file, the line (0: the file as a whole) and the reason.
+void expect_input_error(const fs::path& file, long line, std::string_view reason,
+                        const TopographyReadOptions& options = {}) {
+  try {
+    read_topography(file, options);
+    ADD_FAILURE() << file << ": read without error, expected one at line " << line;
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    const std::string location =
+        file.string() + (line > 0 ? ":" + std::to_string(line) + ": " : std::string(": "));
+    EXPECT_TRUE(message.starts_with(location)) << "expected '" << location << "' in: " << message;
+    EXPECT_EQ(error.line(), line) << message;
+    EXPECT_NE(message.find(reason), std::string::npos) << "expected '" << reason << "' in: " << message;
+  }
+}
+
+// Each test writes its files into a fresh folder of its own and removes it afterwards.
+class TopographyIoFiles : public ::testing::Test {
+ protected:
+  TopographyIoFiles() {
+    const std::string test_name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    folder_ = fs::temp_directory_path() /
+              ("contactbench_test_topography_io_" + std::to_string(::getpid()) + "_" + test_name);
+    fs::remove_all(folder_);
+    fs::create_directories(folder_);
+  }
+  ~TopographyIoFiles() override {
+    std::error_code ignored;
+    fs::remove_all(folder_, ignored);
+  }
+
+  // Writes the bytes exactly as given (binary: CRLF stays CRLF).
+  fs::path write(const std::string& name, std::string_view content) const {
+    const fs::path path = folder_ / name;
+    std::ofstream out(path, std::ios::binary);
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    return path;
+  }
+
+  fs::path folder_;
+};
+
+// Bit patterns, so that -0.0 and 0.0 differ and the comparison is truly bit for bit.
+std::vector<std::uint64_t> bits_of(const HeightMap& heights) {
+  std::vector<std::uint64_t> bits;
+  for (Index row = 0; row < heights.rows(); ++row)
+    for (Index column = 0; column < heights.cols(); ++column)
+      bits.push_back(std::bit_cast<std::uint64_t>(heights(row, column)));
+  return bits;
+}
+
+TEST(TopographyIoMeasured, InterferometerSquareMatrix2) {
+  const Surface surface = read_topography(measured_folder / "matrix-2.txt");
+  EXPECT_EQ(surface.nx(), 650);
+  EXPECT_EQ(surface.ny(), 650);
+  // Exact: the reader forms the same product of the same two doubles (w or h times the pixel size).
+  EXPECT_EQ(surface.grid().lx, 650 * 3.69862e-7);
+  EXPECT_EQ(surface.grid().ly, 650 * 3.69862e-7);
+  EXPECT_FALSE(surface.grid().periodic);
+  expect_sq(surface, 2.7722350402740072e-07);
+}
+
+TEST(TopographyIoMeasured, GwyddionMatrix3) {
+  const Surface surface = read_topography(measured_folder / "matrix-3.txt");
+  EXPECT_EQ(surface.nx(), 256);
+  EXPECT_EQ(surface.ny(), 256);
+  EXPECT_NEAR(surface.grid().lx, 10e-6, unit_conversion_rounding * 10e-6);  // 10.00 um: one rounding
+  EXPECT_NEAR(surface.grid().ly, 10e-6, unit_conversion_rounding * 10e-6);
+  EXPECT_FALSE(surface.grid().periodic);
+  expect_sq(surface, 3.5222918750198742e-08);
+}
+
+TEST(TopographyIoMeasured, InterferometerNonSquareMatrix4) {
+  const fs::path file = measured_folder / "matrix-4.txt";
+  const Surface surface = read_topography(file);
+  EXPECT_EQ(surface.nx(), 75);   // w: columns along x
+  EXPECT_EQ(surface.ny(), 305);  // h: rows along y
+  // Exact: the same product of the same doubles as in the reader.
+  EXPECT_EQ(surface.grid().lx, 75 * 3.69862e-7);
+  EXPECT_EQ(surface.grid().ly, 305 * 3.69862e-7);
+  EXPECT_FALSE(surface.grid().periodic);
+  expect_sq(surface, 1.1745891510991089e-07);
+
+  // Orientation: heights(row = y, column = x) holds the file's row y, number x, times the factor.
+  const std::vector<std::string> lines = lines_of(file);
+  ASSERT_GE(lines.size(), 6u);
+  ASSERT_TRUE(lines[3].starts_with("height conversion factor (-> m)="));
+  const double factor = std::stod(lines[3].substr(lines[3].find('=') + 1));
+  std::istringstream first_row(lines[4]);
+  std::istringstream second_row(lines[5]);
+  double first_row_x0 = 0, first_row_x1 = 0, second_row_x0 = 0;
+  first_row >> first_row_x0 >> first_row_x1;
+  second_row >> second_row_x0;
+  // Exact: both parsers round the same decimal correctly, and the reader multiplies by the same factor.
+  EXPECT_EQ(surface.heights()(0, 0), first_row_x0 * factor);
+  EXPECT_EQ(surface.heights()(0, 1), first_row_x1 * factor);
+  EXPECT_EQ(surface.heights()(1, 0), second_row_x0 * factor);
+}
+
+TEST(TopographyIoMeasured, DetectsTheInstrumentFormats) {
+  EXPECT_EQ(detect_topography_format(measured_folder / "matrix-2.txt"), TopographyFormat::interferometer);
+  EXPECT_EQ(detect_topography_format(measured_folder / "matrix-3.txt"), TopographyFormat::gwyddion);
+  EXPECT_EQ(detect_topography_format(measured_folder / "matrix-4.txt"), TopographyFormat::interferometer);
+  EXPECT_EQ(to_string(TopographyFormat::gwyddion), "gwyddion");
+}
+
+TEST_F(TopographyIoFiles, RoundTripIsBitForBit) {
+  HeightMap heights(3, 4);  // ny = 3 rows, nx = 4 columns: a transposition would show
+  constexpr Real tiny = std::numeric_limits<Real>::denorm_min();
+  constexpr Real huge = std::numeric_limits<Real>::max();
+  heights << 0.1, 1e-300, -3.14159e-7, std::nextafter(1.0, 2.0),  // row y = 0
+      tiny, -0.0, 1.0 / 3.0, huge,                                // row y = 1
+      -huge, std::numeric_limits<Real>::min(), std::nextafter(0.1, 0.0), 6.02214076e23;
+  const Surface original(Grid{4, 3, 1e-3 / 3.0, std::nextafter(2.5e-4, 1.0), true}, heights);
+  const fs::path file = folder_ / "surface.txt";
+  write_surface(file, original);
+
+  EXPECT_EQ(detect_topography_format(file), TopographyFormat::project);
+  const Surface copy = read_topography(file);
+  EXPECT_EQ(copy.nx(), 4);
+  EXPECT_EQ(copy.ny(), 3);
+  // Exact (==, and bit patterns for the heights): the writer prints the shortest round-trip decimal.
+  EXPECT_EQ(copy.grid().lx, original.grid().lx);
+  EXPECT_EQ(copy.grid().ly, original.grid().ly);
+  EXPECT_TRUE(copy.grid().periodic);
+  EXPECT_EQ(bits_of(copy.heights()), bits_of(original.heights()));
+
+  // The temporary file was renamed, not left beside the result.
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder_), fs::directory_iterator()), 1);
+}
+
+TEST_F(TopographyIoFiles, ProjectFormatKeepsThePeriodicFlagUnlessOverridden) {
+  HeightMap heights(2, 3);
+  heights << 1e-9, -2e-9, 3e-9, 4e-9, 5e-9, -6e-9;
+  const fs::path file = folder_ / "surface.txt";
+  write_surface(file, Surface(Grid{3, 2, 3e-6, 2e-6, false}, heights));
+  EXPECT_FALSE(read_topography(file).grid().periodic);
+  TopographyReadOptions options;
+  options.periodic = true;
+  EXPECT_TRUE(read_topography(file, options).grid().periodic);
+  // Sizes the caller gives that agree with the file's are accepted.
+  options.lx = 3e-6;
+  options.ly = 2e-6 * (1 + 1e-8);
+  EXPECT_NO_THROW(read_topography(file, options));
+}
+
+TEST_F(TopographyIoFiles, PlainMatrixUsesTheGivenSizes) {
+  const fs::path file = write("plain.txt", "1e-9 2e-9 3e-9\n4e-9 5e-9 6e-9\n");
+  EXPECT_EQ(detect_topography_format(file), TopographyFormat::plain_matrix);
+  TopographyReadOptions options;
+  options.lx = 3e-6;
+  options.ly = 5e-6;
+  const Surface surface = read_topography(file, options);
+  EXPECT_EQ(surface.nx(), 3);
+  EXPECT_EQ(surface.ny(), 2);
+  // Exact: the caller's sizes and the file's heights are passed through untouched.
+  EXPECT_EQ(surface.grid().lx, 3e-6);
+  EXPECT_EQ(surface.grid().ly, 5e-6);
+  EXPECT_EQ(surface.heights()(0, 2), 3e-9);
+  EXPECT_EQ(surface.heights()(1, 0), 4e-9);
+  EXPECT_FALSE(surface.grid().periodic);
+  options.periodic = true;
+  EXPECT_TRUE(read_topography(file, options).grid().periodic);
+}
+
+TEST_F(TopographyIoFiles, PlainMatrixDefaultsToSquarePixels) {
+  const fs::path file = write("plain.txt", "1 2 3 4\n5 6 7 8\n");
+  TopographyReadOptions options;
+  options.lx = 4e-6;
+  const Surface surface = read_topography(file, options);
+  // ly = lx * ny / nx = 2e-6: one multiplication and one division, a few ulp.
+  EXPECT_NEAR(surface.grid().ly, 2e-6, unit_conversion_rounding * 2e-6);
+  EXPECT_NEAR(surface.grid().dx(), surface.grid().dy(), unit_conversion_rounding * surface.grid().dx());
+}
+
+TEST_F(TopographyIoFiles, AcceptsCrlfTabsBlankLinesAndScientificNotation) {
+  const fs::path file = write("plain.txt", "\r\n  3.69862e-007\t+2.5E+00 \r\n\r\n\t-1 0.5\r\n");
+  TopographyReadOptions options;
+  options.lx = 1e-6;
+  const Surface surface = read_topography(file, options);
+  EXPECT_EQ(surface.nx(), 2);
+  EXPECT_EQ(surface.ny(), 2);
+  // Exact: each token parses to the correctly rounded double of its decimal.
+  EXPECT_EQ(surface.heights()(0, 0), 3.69862e-7);
+  EXPECT_EQ(surface.heights()(0, 1), 2.5);
+  EXPECT_EQ(surface.heights()(1, 0), -1.0);
+}
+
+TEST_F(TopographyIoFiles, GwyddionAcceptsBothMicroSignsAndUm) {
+  for (const std::string unit : {"\u00b5m", "\u03bcm", "um"}) {
+    const fs::path file =
+        write("gwyddion.txt", "# Channel: Height\n# Width: 10.00 " + unit + "\n# Height: 5 " + unit +
+                                  "\n# Value units: nm\n1 2\n3 4\n");
+    const Surface surface = read_topography(file);
+    // One rounding of the unit conversion.
+    EXPECT_NEAR(surface.grid().lx, 10e-6, unit_conversion_rounding * 10e-6) << unit;
+    EXPECT_NEAR(surface.grid().ly, 5e-6, unit_conversion_rounding * 5e-6) << unit;
+    // Exact: the reader forms the same product (value times the unit's size in metres).
+    EXPECT_EQ(surface.heights()(1, 0), 3 * 1e-9) << unit;
+  }
+}
+
+TEST_F(TopographyIoFiles, InterferometerWithoutFactorUsesALengthDataUnit) {
+  const fs::path file = write("interferometer.txt", "h=2 w=3\npixel size=1 um\ndata unit=nm\n1 2 3\n4 5 6\n");
+  const Surface surface = read_topography(file);
+  EXPECT_EQ(surface.nx(), 3);
+  EXPECT_EQ(surface.ny(), 2);
+  // Exact: the reader forms the same products.
+  EXPECT_EQ(surface.grid().lx, 3 * 1e-6);
+  EXPECT_EQ(surface.heights()(1, 2), 6 * 1e-9);
+}
+
+TEST_F(TopographyIoFiles, GivenSizesMustAgreeWithTheFile) {
+  const fs::path file = write("interferometer.txt", "h=2 w=2\npixel size=2 um\ndata unit=m\n1 2\n3 4\n");
+  TopographyReadOptions options;
+  options.lx = 4e-6 * (1 + 1e-7);  // within the contract's 1e-6 relative
+  EXPECT_NO_THROW(read_topography(file, options));
+  options.lx = 4.1e-6;
+  expect_input_error(file, 2, "4.1e-06", options);
+  expect_input_error(file, 2, "must agree", options);
+}
+
+// --- Bad inputs: each names the file and the line. ---
+
+TEST_F(TopographyIoFiles, EmptyFileIsRejected) {
+  expect_input_error(write("empty.txt", ""), 0, "no data rows");
+  expect_input_error(write("blank.txt", "\r\n \t\n\n"), 0, "no data rows");
+  EXPECT_THROW(detect_topography_format(folder_ / "empty.txt"), InputError);
+}
+
+TEST_F(TopographyIoFiles, HeaderWithoutDataRowsIsRejected) {
+  expect_input_error(write("header_only.txt", "h=2 w=2\npixel size=1 um\ndata unit=m\n"), 0, "no data rows");
+}
+
+TEST_F(TopographyIoFiles, RaggedRowIsRejected) {
+  TopographyReadOptions options;
+  options.lx = 1e-6;
+  const fs::path file = write("ragged.txt", "1 2 3\n4 5 6\n7 8\n");
+  expect_input_error(file, 3, "2 values", options);
+  expect_input_error(file, 3, "(line 1) has 3", options);
+}
+
+TEST_F(TopographyIoFiles, NonNumericTokenIsRejectedAndQuoted) {
+  TopographyReadOptions options;
+  options.lx = 1e-6;
+  // Blank lines still count: the bad token is on line 3.
+  expect_input_error(write("word.txt", "1 2\n\n3 abc\n"), 3, "'abc'", options);
+  expect_input_error(write("two_points.txt", "1 2\n3 1.5.3\n"), 2, "'1.5.3' is not a number", options);
+  expect_input_error(write("comma.txt", "1,5 2\n"), 1, "'1,5' is not a number", options);
+}
+
+TEST_F(TopographyIoFiles, NanIsRejected) {
+  TopographyReadOptions options;
+  options.lx = 1e-6;
+  expect_input_error(write("nan.txt", "1 2\n3 4\n5 NaN\n"), 3, "not finite", options);
+}
+
+TEST_F(TopographyIoFiles, InfIsRejected) {
+  TopographyReadOptions options;
+  options.lx = 1e-6;
+  expect_input_error(write("inf.txt", "1 -inf\n2 3\n"), 1, "not finite", options);
+  expect_input_error(write("overflow.txt", "1 2\n1e999 3\n"), 2, "out of the range", options);
+  // A finite value that the height factor pushes beyond the largest double.
+  expect_input_error(write("scaled.txt",
+                           "h=1 w=1\npixel size=1 um\ndata unit=rad\n"
+                           "height conversion factor (-> m)=1e10\n1e300\n"),
+                     5, "not finite");
+}
+
+TEST_F(TopographyIoFiles, MissingSizeIsRejected) {
+  expect_input_error(write("plain.txt", "1 2\n3 4\n"), 0, "--size");
+  expect_input_error(write("no_pixel.txt", "h=2 w=2\ndata unit=m\n1 2\n3 4\n"), 1, "pixel size");
+  expect_input_error(write("no_width.txt", "# Height: 1 um\n# Value units: m\n1 2\n"), 1, "Width");
+}
+
+TEST_F(TopographyIoFiles, NonPositiveSizeIsRejected) {
+  expect_input_error(write("zero_pixel.txt", "h=1 w=2\npixel size=0 m\ndata unit=m\n1 2\n"), 2, "> 0");
+  expect_input_error(write("negative_width.txt",
+                           "# Channel: Z\n# Width: -10 \u00b5m\n# Height: 10 \u00b5m\n"
+                           "# Value units: m\n1 2\n"),
+                     2, "> 0");
+  expect_input_error(
+      write("infinite_height.txt", "# Width: 10 um\n# Height: inf um\n# Value units: m\n1 2\n"), 2, "> 0");
+  TopographyReadOptions options;
+  options.lx = -1e-6;
+  expect_input_error(write("plain.txt", "1 2\n"), 0, "finite size > 0", options);
+}
+
+TEST_F(TopographyIoFiles, UnknownUnitIsRejected) {
+  // The message lists the accepted units.
+  expect_input_error(write("furlong.txt", "h=1 w=2\npixel size=3 furlong\ndata unit=m\n1 2\n"), 2,
+                     "'furlong'");
+  expect_input_error(write("furlong.txt", "h=1 w=2\npixel size=3 furlong\ndata unit=m\n1 2\n"), 2,
+                     "m, mm, um, \u00b5m, \u03bcm, nm");
+  expect_input_error(write("no_unit.txt", "h=1 w=2\npixel size=3\ndata unit=m\n1 2\n"), 2, "no unit");
+  expect_input_error(write("volts.txt", "# Width: 1 um\n# Height: 1 um\n# Value units: V\n1 2\n"), 3, "'V'");
+  // Radians are heights only with a conversion factor.
+  expect_input_error(write("radians.txt", "h=1 w=2\npixel size=1 um\ndata unit=rad\n1 2\n"), 3, "'rad'");
+}
+
+TEST_F(TopographyIoFiles, HeaderCountsMustMatchTheData) {
+  const std::string header = "pixel size=1 um\ndata unit=m\n";
+  expect_input_error(write("few_rows.txt", "h=3 w=2\n" + header + "1 2\n3 4\n"), 1, "has 2 data rows");
+  expect_input_error(write("many_rows.txt", "h=1 w=2\n" + header + "1 2\n3 4\n"), 5, "h=1");
+  expect_input_error(write("few_columns.txt", "h=2 w=3\n" + header + "1 2\n3 4\n"), 4, "w=3");
+  expect_input_error(write("project.txt",
+                           "# contactbench surface v1\n"
+                           "# nx=3 ny=1 lx=1e-6 ly=1e-6 periodic=false unit=m\n1 2\n"),
+                     3, "nx=3");
+}
+
+TEST_F(TopographyIoFiles, ProjectHeaderDefectsAreRejected) {
+  expect_input_error(
+      write("version.txt", "# contactbench surface v2\n# nx=1 ny=1 lx=1 ly=1 periodic=false unit=m\n1\n"), 1,
+      "v1");
+  expect_input_error(
+      write("no_ly.txt", "# contactbench surface v1\n# nx=1 ny=1 lx=1 periodic=false unit=m\n1\n"), 2, "ly=");
+  expect_input_error(
+      write("periodic.txt", "# contactbench surface v1\n# nx=1 ny=1 lx=1 ly=1 periodic=yes unit=m\n1\n"), 2,
+      "'yes'");
+}
+
+TEST_F(TopographyIoFiles, MissingFileIsRejected) {
+  const fs::path file = folder_ / "does_not_exist.txt";
+  expect_input_error(file, 0, "no such file");
+  EXPECT_THROW(detect_topography_format(file), InputError);
+  expect_input_error(folder_, 0, "folder");
+}
+
+}  // namespace
+}  // namespace contactbench

@@ -1,0 +1,20 @@
+// Named tolerances for numerical tests, each with the reason for its size (ARCHITECTURE.md conventions).
+#pragma once
+
+namespace contactbench::tolerance {
+
+// Round-off of an O(N log N) FFT pair in double on grids up to 1024^2: a few 1e-16 times log2(N) per step.
+inline constexpr double fft_round_off = 1e-12;
+// Lattice moments against the paper's Table 2, which prints three significant digits (issue: 1 %).
+inline constexpr double table2 = 1e-2;
+// Moments of a Fourier-interpolated surface: the same coefficients, only summed again (issue: 1e-10).
+inline constexpr double refined_moments = 1e-10;
+// Heights of a Fourier-interpolated surface at the original nodes: two FFTs of round-off (issue: 1e-12).
+inline constexpr double refined_nodes = 1e-12;
+// Sq of the measured files against SurfaceTopography's asserted values (issue: 1e-9); both are
+// double-precision sums of the same decimal data, so agreement is limited only by summation order.
+inline constexpr double measured_sq = 1e-9;
+// Requested m2x/m2y of an anisotropic surface: the lattice cuts the spectrum's ellipse (issue: 2 %).
+inline constexpr double anisotropy_ratio = 2e-2;
+
+}  // namespace contactbench::tolerance
