@@ -22,6 +22,7 @@ int run_cli(int argc, char** argv) {
   app.require_subcommand(1);
   add_generate_command(app);
   add_stats_command(app);
+  add_sweep_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

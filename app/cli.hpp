@@ -12,6 +12,7 @@ int run_cli(int argc, char** argv);
 // Each subcommand registers its options on `parent` and runs when chosen (one file each).
 void add_generate_command(CLI::App& parent);
 void add_stats_command(CLI::App& parent);
+void add_sweep_command(CLI::App& parent);
 
 // Threads for a command: --threads if given, else what OpenMP would use (the machine's cores).
 void add_threads_option(CLI::App& command, int& threads);

@@ -20,4 +20,8 @@ using HeightMap = Eigen::Array<Real, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowM
 // ny rows (ky) by nx/2 + 1 columns (kx >= 0); the other half follows from Hermitian symmetry.
 using SpectrumMap = Eigen::Array<Complex, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
+// Below this many points a loop runs on the calling thread alone: opening an OpenMP region costs tens of
+// microseconds on these machines, more than the work, and oversubscribed spinning threads cost far more.
+inline constexpr Index kMinPointsForThreads = Index{1} << 16;
+
 }  // namespace contactbench

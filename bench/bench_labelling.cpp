@@ -1,0 +1,121 @@
+// Labelling one level: contactbench's labeller against OpenCV's (Spaghetti, BBDT, SAUF) on the same maps, and
+// a memory pass (read the heights, write int32) as the floor. Names:
+//   labelling/<impl>/n:<n>/coverage:<pct>/conn:<c>
+// impl: contactbench, opencv_spaghetti, opencv_bbdt, opencv_sauf, memory_pass. All on bench::kThreads
+// threads. OpenCV's connectedComponents returns labels only; contactbench also returns every spot's area.
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include <omp.h>
+
+#include "bench/bench_surfaces.hpp"
+#include "core/labelling.hpp"
+
+#ifdef CB_HAVE_OPENCV
+#include <opencv2/core.hpp>
+#include <opencv2/core/utility.hpp>
+#include <opencv2/imgproc.hpp>
+#endif
+
+namespace contactbench::bench {
+namespace {
+
+const Index kSizes[] = {256, 1024, 4096};
+const int kCoverages[] = {1, 10, 50};  // percent of points in contact
+const Connectivity kConnectivities[] = {Connectivity::four, Connectivity::eight};
+
+void label_with_contactbench(benchmark::State& state, Index n, int coverage, Connectivity connectivity) {
+  const BinaryMap& map = contact_map(n, coverage / 100.0);
+  Labeller labeller(Topology{connectivity, false, false}, kThreads);
+  Index spots = 0;
+  for (auto _ : state) {
+    const Labelling& result = labeller.label(map);
+    spots = result.count;
+    benchmark::DoNotOptimize(result.labels.data());
+  }
+  state.SetItemsProcessed(state.iterations() * n * n);
+  state.counters["spots"] = static_cast<double>(spots);
+}
+
+// The floor: read every height once and write one int32 per point (what any labeller must at least do).
+void memory_pass(benchmark::State& state, Index n, int coverage, Connectivity) {
+  const HeightMap& heights = rough_surface(n).heights();
+  const Real z = 0;  // the level does not matter for a pass that writes every point
+  (void)coverage;
+  LabelMap out(n, n);
+  for (auto _ : state) {
+    const Real* h = heights.data();
+    std::int32_t* o = out.data();
+#pragma omp parallel for num_threads(kThreads) schedule(static)
+    for (Index i = 0; i < n * n; ++i)
+      o[i] = h[i] > z;
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * n * n);
+}
+
+#ifdef CB_HAVE_OPENCV
+void label_with_opencv(benchmark::State& state, Index n, int coverage, Connectivity connectivity,
+                       int algorithm) {
+  const BinaryMap& map = contact_map(n, coverage / 100.0);
+  cv::setNumThreads(kThreads);
+  const cv::Mat image(static_cast<int>(n), static_cast<int>(n), CV_8U, const_cast<std::uint8_t*>(map.data()));
+  cv::Mat labels;
+  int spots = 0;
+  for (auto _ : state) {
+    spots = cv::connectedComponents(image, labels, static_cast<int>(connectivity), CV_32S, algorithm) - 1;
+    benchmark::DoNotOptimize(labels.data);
+  }
+  state.SetItemsProcessed(state.iterations() * n * n);
+  state.counters["spots"] = spots;
+}
+#endif
+
+std::string name(const std::string& impl, Index n, int coverage, Connectivity c) {
+  return "labelling/" + impl + "/n:" + std::to_string(n) + "/coverage:" + std::to_string(coverage) +
+         "/conn:" + std::to_string(static_cast<int>(c));
+}
+
+void register_all() {
+  for (const Index n : kSizes)
+    for (const int coverage : kCoverages)
+      for (const Connectivity c : kConnectivities) {
+        benchmark::RegisterBenchmark(name("contactbench", n, coverage, c).c_str(), label_with_contactbench, n,
+                                     coverage, c)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+#ifdef CB_HAVE_OPENCV
+        const std::pair<const char*, int> opencv[] = {{"opencv_spaghetti", cv::CCL_SPAGHETTI},
+                                                      {"opencv_bbdt", cv::CCL_BBDT},
+                                                      {"opencv_sauf", cv::CCL_SAUF}};
+        for (const auto& [impl, algorithm] : opencv)
+          benchmark::RegisterBenchmark(name(impl, n, coverage, c).c_str(), label_with_opencv, n, coverage, c,
+                                       algorithm)
+              ->Unit(benchmark::kMillisecond)
+              ->UseRealTime();
+#endif
+        benchmark::RegisterBenchmark(name("memory_pass", n, coverage, c).c_str(), memory_pass, n, coverage, c)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime();
+      }
+}
+
+}  // namespace
+}  // namespace contactbench::bench
+
+int main(int argc, char** argv) {
+  contactbench::bench::register_all();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::AddCustomContext("threads", std::to_string(contactbench::bench::kThreads));
+#ifdef CB_HAVE_OPENCV
+  benchmark::AddCustomContext("opencv", CV_VERSION);
+#else
+  benchmark::AddCustomContext("opencv", "not installed");
+#endif
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

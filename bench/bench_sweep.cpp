@@ -1,0 +1,102 @@
+// The geometric sweep on the project's rough surfaces. Names: sweep/<mode>/n:<n>/conn:<c>, with mode
+//   levels500  the paper's 500 levels (steps of 0.002 h_max down to the mean plane), one union-find pass
+//   exact      every distinct height, one union-find pass
+//   per_level  the same 500 levels by thresholding and labelling each with the project's labeller
+//   memory_pass  one pass that reads the heights and writes int32 (the floor, as in bench_labelling)
+// All on bench::kThreads threads; surfaces are not periodic here (as for measured data).
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "bench/bench_surfaces.hpp"
+#include "core/labelling.hpp"
+#include "core/sweep.hpp"
+
+namespace contactbench::bench {
+namespace {
+
+const Index kSizes[] = {256, 1024, 4096};
+const Connectivity kConnectivities[] = {Connectivity::four, Connectivity::eight};
+
+void run_sweep(benchmark::State& state, Index n, Connectivity c, SweepLevels levels) {
+  const Surface& surface = rough_surface(n);
+  const Topology topology{c, false, false};
+  Index level_count = 0;
+  for (auto _ : state) {
+    const SweepCurve curve = sweep(surface, levels, topology, kThreads);
+    level_count = static_cast<Index>(curve.z.size());
+    benchmark::DoNotOptimize(curve.spots.data());
+  }
+  state.SetItemsProcessed(state.iterations() * n * n);
+  state.counters["levels"] = static_cast<double>(level_count);
+}
+
+// What the sweep replaces: label each of the paper's 500 levels separately.
+void per_level(benchmark::State& state, Index n, Connectivity c) {
+  const Surface& surface = rough_surface(n);
+  const Real top = surface.heights().maxCoeff();
+  Labeller labeller(Topology{c, false, false}, kThreads);
+  BinaryMap map(n, n);
+  for (auto _ : state) {
+    Index spots = 0;
+    for (int k = 0; k <= 500; ++k) {
+      map = threshold_above(surface.heights(), top - k * (top / 500));
+      spots += labeller.label(map).count;
+    }
+    benchmark::DoNotOptimize(spots);
+  }
+  state.SetItemsProcessed(state.iterations() * n * n);
+  state.counters["levels"] = 501;
+}
+
+void memory_pass(benchmark::State& state, Index n) {
+  const HeightMap& heights = rough_surface(n).heights();
+  LabelMap out(n, n);
+  for (auto _ : state) {
+    const Real* h = heights.data();
+    std::int32_t* o = out.data();
+#pragma omp parallel for num_threads(kThreads) schedule(static)
+    for (Index i = 0; i < n * n; ++i)
+      o[i] = h[i] > 0;
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * n * n);
+}
+
+std::string name(const std::string& mode, Index n, Connectivity c) {
+  return "sweep/" + mode + "/n:" + std::to_string(n) + "/conn:" + std::to_string(static_cast<int>(c));
+}
+
+void register_all() {
+  for (const Index n : kSizes) {
+    for (const Connectivity c : kConnectivities) {
+      benchmark::RegisterBenchmark(name("levels500", n, c).c_str(), run_sweep, n, c, SweepLevels::paper(500))
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+      benchmark::RegisterBenchmark(name("exact", n, c).c_str(), run_sweep, n, c, SweepLevels::exact())
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+      auto* slow = benchmark::RegisterBenchmark(name("per_level", n, c).c_str(), per_level, n, c)
+                       ->Unit(benchmark::kMillisecond)
+                       ->UseRealTime();
+      if (n >= 4096) slow->Iterations(1);  // tens of seconds a run
+    }
+    benchmark::RegisterBenchmark(("sweep/memory_pass/n:" + std::to_string(n)).c_str(), memory_pass, n)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime();
+  }
+}
+
+}  // namespace
+}  // namespace contactbench::bench
+
+int main(int argc, char** argv) {
+  contactbench::bench::register_all();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::AddCustomContext("threads", std::to_string(contactbench::bench::kThreads));
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,46 @@
+// The geometric sweep: bearing area A_c(z) and spot count N(z) of {h > z} for many levels in one pass
+// (THEORY.md section 3): points are visited in descending height and merged in a union-find, so the
+// components after each level are known without labelling any level.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/surface.hpp"
+#include "core/topology.hpp"
+
+namespace contactbench {
+
+// Which levels z the sweep reports.
+struct SweepLevels {
+  enum class Kind {
+    exact,    // every distinct height, descending: A_c N is constant between two of them
+    uniform,  // count + 1 levels from the highest height down to the lowest, equally spaced
+    paper,    // the paper's: count + 1 levels from the highest height h_max down to the mean plane,
+              // in steps of h_max / count (count = 500 gives its steps of 0.002 h_max)
+  };
+  Kind kind = Kind::exact;
+  Index count = 500;
+
+  static SweepLevels exact() { return {Kind::exact, 0}; }
+  static SweepLevels uniform(Index count) { return {Kind::uniform, count}; }
+  static SweepLevels paper(Index count = 500) { return {Kind::paper, count}; }
+};
+
+// A_c(z) and N(z) at descending levels z[0] > z[1] > ...; row j describes {h > z[j]} (strictly above).
+// The first level is the highest height, where nothing is above: area 0, no spot.
+struct SweepCurve {
+  std::vector<Real> z;              // level [m], descending
+  std::vector<Real> area_fraction;  // A_c(z) / A0
+  std::vector<Index> points;        // points with h > z (area_fraction = points / (nx ny))
+  std::vector<Index> spots;         // N(z): connected components of {h > z}
+  Topology topology;
+  SweepLevels levels;
+  Real nominal_area = 0;  // A0 = lx ly [m^2]
+};
+
+// Topology::for_surface(connectivity, surface.grid().periodic) is what a surface's own periodicity implies.
+SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topology& topology,
+                 int threads = 1);
+
+}  // namespace contactbench
