@@ -10,171 +10,103 @@
 #include <utility>
 
 #include "core/error.hpp"
-#include "core/large_buffer.hpp"
+#include "core/stripe_components.hpp"
 
 namespace contactbench {
 
+using sweep_detail::JoinTime;
+using sweep_detail::kNever;
+using sweep_detail::LocalJoin;
+using sweep_detail::SharedForest;
+using sweep_detail::StripeComponents;
+using sweep_detail::StripeRecord;
+
 namespace {
 
-// The order in which points join {h > z} as z falls, and the levels at which the state is recorded:
-// the set {h > z[j]} is exactly the first `joined[j]` points of `order`.
-struct JoinSchedule {
-  std::vector<std::int32_t> order;
-  std::vector<Real> z;
-  std::vector<Index> joined;
-};
-
-// Stable counting sort of the points by bucket (0 first), in parallel: each thread counts and scatters its
-// own contiguous share of the points, and shares are laid out in thread order, so the result is the same for
-// any thread count. out[...] = item(i) for every point i whose bucket is below bucket_count (the others are
-// dropped). Returns the bucket starts in `out` (bucket_count + 1 entries).
-template <typename Item, typename MakeItem>
-std::vector<Index> bucket_points(const std::vector<std::int32_t>& bucket_of, Index bucket_count,
-                                 std::vector<Item>& out, int threads, MakeItem&& item) {
-  const Index n = static_cast<Index>(bucket_of.size());
-  const int shares = std::max(1, threads);
-  std::vector<std::vector<Index>> next(shares, std::vector<Index>(bucket_count + 1, 0));
-  auto share_begin = [&](int t) { return n * t / shares; };
-#pragma omp parallel for num_threads(shares) schedule(static, 1) if (n >= kMinPointsForThreads)
-  for (int t = 0; t < shares; ++t)
-    for (Index i = share_begin(t); i < share_begin(t + 1); ++i)
-      ++next[t][bucket_of[i]];
-  // Offsets: bucket-major, then thread order within a bucket.
-  std::vector<Index> starts(bucket_count + 1, 0);
-  Index offset = 0;
-  for (Index b = 0; b <= bucket_count; ++b) {
-    starts[b] = offset;
-    for (int t = 0; t < shares; ++t)
-      offset += std::exchange(next[t][b], offset);
-  }
-  out.resize(static_cast<std::size_t>(starts[bucket_count]));
-#pragma omp parallel for num_threads(shares) schedule(static, 1) if (n >= kMinPointsForThreads)
-  for (int t = 0; t < shares; ++t)
-    for (Index i = share_begin(t); i < share_begin(t + 1); ++i) {
-      const std::int32_t b = bucket_of[i];
-      if (b < bucket_count) out[next[t][b]++] = item(i);
-    }
-  return starts;
-}
+// ---- Ordering points by join time ------------------------------------------------------------------------
 
 // A double's bits as an unsigned key whose ascending order is the doubles' descending order
 // (-0.0 is first made +0.0, so that equal heights always have equal keys).
-std::uint64_t descending_key(Real height) {
+JoinTime descending_key(Real height) {
   const std::uint64_t bits = std::bit_cast<std::uint64_t>(height + 0.0);
   constexpr std::uint64_t kSign = std::uint64_t{1} << 63;
-  const std::uint64_t ascending = (bits & kSign) ? ~bits : bits | kSign;
-  return ~ascending;
+  return ~((bits & kSign) ? ~bits : bits | kSign);
 }
 
-Real height_of_key(std::uint64_t key) {
+Real height_of_key(JoinTime key) {
   constexpr std::uint64_t kSign = std::uint64_t{1} << 63;
   const std::uint64_t ascending = ~key;
   return std::bit_cast<Real>((ascending & kSign) ? ascending & ~kSign : ~ascending);
 }
 
-struct KeyedPoint {
-  std::uint64_t key;
+struct TimedPoint {
+  JoinTime time;
   std::int32_t index;
 };
 
-// Stable LSD radix sort of one bucket by key, 11 bits a pass, only over the bits in which its keys differ
-// (a bucket holds a narrow range of heights, so most of their high bits agree). `scratch` is as long.
-void radix_sort(KeyedPoint* points, KeyedPoint* scratch, Index count) {
+// Stable LSD radix sort by time, 11 bits a pass, only over the bits in which the times differ.
+void radix_sort(TimedPoint* points, TimedPoint* scratch, Index count) {
   if (count < 2) return;
-  std::uint64_t low = points[0].key, high = points[0].key;
+  JoinTime low = points[0].time, high = points[0].time;
   for (Index i = 1; i < count; ++i) {
-    low = std::min(low, points[i].key);
-    high = std::max(high, points[i].key);
+    low = std::min(low, points[i].time);
+    high = std::max(high, points[i].time);
   }
   constexpr int kBits = 11;
   constexpr std::size_t kRadix = std::size_t{1} << kBits;
   const int width = std::bit_width(high - low);
-  KeyedPoint* from = points;
-  KeyedPoint* to = scratch;
+  TimedPoint* from = points;
+  TimedPoint* to = scratch;
+  std::array<Index, kRadix + 1> starts;
   for (int shift = 0; shift < width; shift += kBits) {
-    std::array<Index, kRadix + 1> starts{};
+    starts.fill(0);
     for (Index i = 0; i < count; ++i)
-      ++starts[((from[i].key - low) >> shift) % kRadix + 1];
-    for (std::size_t d = 1; d <= kRadix; ++d)
-      starts[d] += starts[d - 1];
+      ++starts[((from[i].time - low) >> shift) % kRadix + 1];
+    std::partial_sum(starts.begin(), starts.end(), starts.begin());
     for (Index i = 0; i < count; ++i)
-      to[starts[((from[i].key - low) >> shift) % kRadix]++] = from[i];
+      to[starts[((from[i].time - low) >> shift) % kRadix]++] = from[i];
     std::swap(from, to);
   }
   if (from != points) std::copy(from, from + count, points);
 }
 
-// Exact levels: every distinct height, as the points sorted by descending height (ties in index order).
-// Two stages, both cache-friendly: a stable counting sort into 2048 buckets by a monotone map of the height
-// (few enough write streams to stay in cache), then a radix sort of each bucket's keys, buckets in parallel.
-std::vector<KeyedPoint> sort_descending(const HeightMap& heights, int threads) {
-  const Index n = heights.size();
-  const Real* h = heights.data();
-  const Real top = heights.maxCoeff(), bottom = heights.minCoeff();
-  const Index bucket_count = std::clamp<Index>(n / 256, 1, 2048);
-  // (top - h) * scale is monotone in h, so buckets never reorder heights.
-  const Real scale = top > bottom ? static_cast<Real>(bucket_count) / (top - bottom) : 0.0;
-  std::vector<std::int32_t> bucket_of(static_cast<std::size_t>(n));
-#pragma omp parallel for num_threads(std::max(1, threads)) schedule(static) if (n >= kMinPointsForThreads)
-  for (Index i = 0; i < n; ++i)
-    bucket_of[i] =
-        static_cast<std::int32_t>(std::min<Real>((top - h[i]) * scale, static_cast<Real>(bucket_count - 1)));
-  std::vector<KeyedPoint> points;
-  const std::vector<Index> starts = bucket_points(bucket_of, bucket_count, points, threads, [h](Index i) {
-    return KeyedPoint{descending_key(h[i]), static_cast<std::int32_t>(i)};
-  });
-#pragma omp parallel num_threads(std::max(1, threads)) if (n >= kMinPointsForThreads)
-  {
-    std::vector<KeyedPoint> scratch;
-#pragma omp for schedule(dynamic, 8)
-    for (Index b = 0; b < bucket_count; ++b) {
-      scratch.resize(static_cast<std::size_t>(starts[b + 1] - starts[b]));
-      radix_sort(points.data() + starts[b], scratch.data(), starts[b + 1] - starts[b]);
+// The points [first, last) that ever join, in ascending join time (ties in index order): a stable counting
+// sort into `buckets` by bucket_of (monotone in the time; at most a few thousand buckets, so that the write
+// streams stay in cache), then, unless every bucket holds one time only, a radix sort of each bucket.
+template <typename BucketOf>
+std::vector<TimedPoint> order_by_time(const std::vector<JoinTime>& time, Index first, Index last,
+                                      Index buckets, BucketOf&& bucket_of, bool sort_buckets) {
+  std::vector<Index> starts(static_cast<std::size_t>(buckets) + 1, 0);
+  for (Index i = first; i < last; ++i)
+    if (time[i] != kNever) ++starts[bucket_of(i) + 1];
+  std::partial_sum(starts.begin(), starts.end(), starts.begin());
+  std::vector<TimedPoint> points(static_cast<std::size_t>(starts.back()));
+  std::vector<Index> next(starts.begin(), starts.end() - 1);
+  for (Index i = first; i < last; ++i)
+    if (time[i] != kNever) points[next[bucket_of(i)]++] = {time[i], static_cast<std::int32_t>(i)};
+  if (!sort_buckets) return points;
+  std::vector<TimedPoint> scratch;
+  for (Index b = 0; b < buckets; ++b) {
+    const Index size = starts[b + 1] - starts[b];
+    if (size > 32) {
+      scratch.resize(static_cast<std::size_t>(size));
+      radix_sort(points.data() + starts[b], scratch.data(), size);
+    } else {  // small buckets: insertion sort, stable
+      for (Index i = starts[b] + 1; i < starts[b + 1]; ++i)
+        for (Index k = i; k > starts[b] && points[k - 1].time > points[k].time; --k)
+          std::swap(points[k - 1], points[k]);
     }
   }
   return points;
 }
 
-// Fixed levels z[0] > ... > z[count]: a point joins at the first level strictly below its height. The
-// stable counting sort by that level keeps the points of one level in memory order.
-JoinSchedule fixed_schedule(const HeightMap& heights, std::vector<Real> z, int threads) {
-  const Index n = heights.size(), levels = static_cast<Index>(z.size());
-  const Real* h = heights.data();
-  const Real top = z.front(), step = (z.front() - z.back()) / static_cast<Real>(levels - 1);
-  std::vector<std::int32_t> level_of(static_cast<std::size_t>(n));
-#pragma omp parallel for num_threads(std::max(1, threads)) schedule(static) if (n >= kMinPointsForThreads)
-  for (Index i = 0; i < n; ++i) {
-    const Real height = h[i];
-    Index k = levels;  // never joins: at or below the lowest level
-    if (height > z.back()) {
-      // A guess from the spacing, corrected against the stored levels so that h > z[k] holds exactly as
-      // it is reported.
-      k = step > 0 ? std::clamp<Index>(static_cast<Index>((top - height) / step) + 1, 0, levels - 1) : 0;
-      while (k > 0 && height > z[k - 1])
-        --k;
-      while (!(height > z[k]))
-        ++k;
-    }
-    level_of[i] = static_cast<std::int32_t>(k);
-  }
-  JoinSchedule schedule;
-  const std::vector<Index> starts = bucket_points(level_of, levels, schedule.order, threads,
-                                                  [](Index i) { return static_cast<std::int32_t>(i); });
-  schedule.z = std::move(z);
-  // {h > z[j]}: the points joining at levels 0..j.
-  schedule.joined.assign(starts.begin() + 1, starts.end());
-  return schedule;
-}
+// ---- Levels ---------------------------------------------------------------------------------------------
 
 std::vector<Real> fixed_levels(const HeightMap& heights, const SweepLevels& levels) {
   if (levels.count < 1)
     throw Error("sweep: the number of levels must be at least 1, got " + std::to_string(levels.count));
   const Real top = heights.maxCoeff();
-  const Real bottom = levels.kind == SweepLevels::Kind::paper ? 0.0 : heights.minCoeff();
-  if (levels.kind == SweepLevels::Kind::paper && !(top > 0))
-    throw Error(
-        "sweep: the paper's levels run from the highest height down to the mean plane z = 0, but the "
-        "highest height is not above 0 (centre the surface first)");
+  const Real bottom = levels.kind == SweepLevels::Kind::paper ? heights.mean() : heights.minCoeff();
   std::vector<Real> z(static_cast<std::size_t>(levels.count) + 1);
   const Real step = (top - bottom) / static_cast<Real>(levels.count);
   for (Index k = 0; k <= levels.count; ++k)
@@ -183,174 +115,273 @@ std::vector<Real> fixed_levels(const HeightMap& heights, const SweepLevels& leve
   return z;
 }
 
-// Union-find over grid points in one array (one cache miss per look-up): kAbsent for a point not yet
-// added, -size for a root, the parent's index otherwise. Union by size, path halving.
-class PointForest {
+// The level at which a point of this height joins: the first with z[k] < height (kNever: none). A guess
+// from the spacing, corrected against the stored levels so that h > z[k] holds exactly as reported.
+JoinTime joining_level(Real height, const std::vector<Real>& z) {
+  const Index levels = static_cast<Index>(z.size());
+  if (!(height > z.back())) return kNever;
+  const Real step = (z.front() - z.back()) / static_cast<Real>(levels - 1);
+  Index k =
+      step > 0 ? std::clamp<Index>(static_cast<Index>((z.front() - height) / step) + 1, 0, levels - 1) : 0;
+  while (k > 0 && height > z[k - 1])
+    --k;
+  while (!(height > z[k]))
+    ++k;
+  return static_cast<JoinTime>(k);
+}
+
+// ---- Joining the stripes --------------------------------------------------------------------------------
+
+struct StripeRows {
+  Index begin, end;
+};
+
+// A small union-find over the points of the seam rows.
+class SeamForest {
  public:
-  static constexpr std::int32_t kAbsent = std::numeric_limits<std::int32_t>::max();
-  explicit PointForest(Index n) : parent_(static_cast<std::size_t>(n)) {
-    std::fill(parent_.data(), parent_.data() + n, kAbsent);
+  explicit SeamForest(Index size) : parent_(static_cast<std::size_t>(size)) {
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
+  bool unite(Index a, Index b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return false;
+    parent_[std::max(a, b)] = std::min(a, b);
+    return true;
   }
 
-  bool present(std::int32_t i) const { return parent_[i] != kAbsent; }
-  const std::int32_t* data() const { return parent_.data(); }
-  void add(std::int32_t i) { parent_[i] = -1; }
-  std::int32_t find(std::int32_t i) {
-    while (parent_[i] >= 0) {
-      const std::int32_t up = parent_[i];
-      if (parent_[up] >= 0) parent_[i] = parent_[up];
-      i = up;
-    }
+ private:
+  Index find(Index i) {
+    while (parent_[i] != i)
+      i = parent_[i] = parent_[parent_[i]];
     return i;
   }
-  // Joins the component of `root` (a root) with that of j; returns the root of the union, and whether the
-  // two were different components.
-  std::int32_t unite(std::int32_t root, std::int32_t j, bool& merged) {
-    const std::int32_t other = find(j);
-    merged = other != root;
-    if (!merged) return root;
-    // Sizes are stored negated: the larger component has the more negative value.
-    const bool root_larger = parent_[root] <= parent_[other];
-    const std::int32_t winner = root_larger ? root : other, loser = root_larger ? other : root;
-    parent_[winner] += parent_[loser];
-    parent_[loser] = winner;
-    return winner;
-  }
-
- private:
-  LargeBuffer<std::int32_t> parent_;
+  std::vector<Index> parent_;
 };
 
-// Neighbour offsets and wrap rules of a topology. Interior points use fixed index offsets; points on the
-// border go through the general rule with wrap-around.
-class Neighbourhood {
- public:
-  Neighbourhood(Index nx, Index ny, const Topology& t) : nx_(nx), ny_(ny), topology_(t) {
-    const bool eight = t.connectivity == Connectivity::eight;
-    for (Index dy = -1; dy <= 1; ++dy)
-      for (Index dx = -1; dx <= 1; ++dx)
-        if ((dx != 0 || dy != 0) && (eight || dx == 0 || dy == 0)) steps_.push_back({dx, dy});
-  }
+// Components counted twice by the stripes, as a step function of time: after all events up to `time`,
+// the stripes' counts overstate the global count by `excess`.
+struct ExcessStep {
+  JoinTime time;
+  Index excess;
+};
 
-  template <typename Visit>
-  void for_each(std::int32_t i, Visit&& visit) const {
-    const Index x = i % nx_, y = i / nx_;
-    if (x > 0 && x + 1 < nx_ && y > 0 && y + 1 < ny_) {
-      for (const auto& [dx, dy] : steps_)
-        visit(static_cast<std::int32_t>(i + dy * nx_ + dx));
-      return;
-    }
-    // On tiny periodic grids a neighbour may coincide with another or with the point itself; uniting
-    // twice or with itself changes nothing.
-    for (const auto& [dx, dy] : steps_) {
-      Index xn = x + dx, yn = y + dy;
-      if (xn < 0 || xn >= nx_) {
-        if (!topology_.wrap_x) continue;
-        xn = (xn + nx_) % nx_;
+// Joins the stripes (THEORY.md section 3, for stripes swept in parallel): over the seam points, apply the
+// merges each stripe saw among its seam components and the edges across the seams, in time order. A seam
+// edge that unites two sets merges two components the stripes counted apart, unless a later or simultaneous
+// local merge would have united them anyway; counting all successful unions minus the local merges gives
+// the excess exactly, whatever the order within one time: rank(local + seam) - rank(local).
+std::vector<ExcessStep> seam_excess(const std::vector<std::vector<LocalJoin>>& local_joins,
+                                    const std::vector<StripeRows>& stripes, const Topology& topology,
+                                    Index nx, Index ny, const std::vector<JoinTime>& time) {
+  std::vector<ExcessStep> steps;
+  if (stripes.size() < 2) return steps;
+  // Seam rows and their compact numbering.
+  std::vector<Index> slot(static_cast<std::size_t>(ny), -1);
+  Index slots = 0;
+  auto add_row = [&](Index y) {
+    if (slot[y] < 0) slot[y] = slots++;
+  };
+  struct Seam {
+    Index upper, lower;  // the last row of one stripe and the first row of the next
+  };
+  std::vector<Seam> seams;
+  for (std::size_t s = 0; s < stripes.size(); ++s) {
+    if (s + 1 == stripes.size() && !topology.wrap_y) break;
+    const StripeRows& next = stripes[(s + 1) % stripes.size()];
+    seams.push_back({stripes[s].end - 1, next.begin});
+    add_row(stripes[s].end - 1);
+    add_row(next.begin);
+  }
+  auto id = [&](Index i) { return slot[i / nx] * nx + i % nx; };
+
+  struct Event {
+    JoinTime time;
+    Index a, b;
+    bool local;
+  };
+  std::vector<Event> events;
+  for (const auto& joins : local_joins)
+    for (const LocalJoin& join : joins)
+      events.push_back({join.time, id(join.a), id(join.b), true});
+  for (const Seam& seam : seams)
+    for (Index x = 0; x < nx; ++x) {
+      auto edge = [&](Index x_lower) {
+        const Index p = seam.upper * nx + x, q = seam.lower * nx + x_lower;
+        if (time[p] != kNever && time[q] != kNever)
+          events.push_back({std::max(time[p], time[q]), id(p), id(q), false});
+      };
+      edge(x);
+      if (topology.connectivity == Connectivity::eight) {
+        if (x > 0 || topology.wrap_x) edge((x + nx - 1) % nx);
+        if (x + 1 < nx || topology.wrap_x) edge((x + 1) % nx);
       }
-      if (yn < 0 || yn >= ny_) {
-        if (!topology_.wrap_y) continue;
-        yn = (yn + ny_) % ny_;
-      }
-      visit(static_cast<std::int32_t>(yn * nx_ + xn));
     }
+  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.time < b.time; });
+
+  SeamForest forest(slots * nx);
+  Index excess = 0;
+  for (std::size_t e = 0; e < events.size(); ++e) {
+    // A local merge always counts against the excess (the stripe already counted it); a union succeeds
+    // or not.
+    excess += (forest.unite(events[e].a, events[e].b) ? 1 : 0) - (events[e].local ? 1 : 0);
+    if (e + 1 == events.size() || events[e + 1].time != events[e].time)
+      steps.push_back({events[e].time, excess});
   }
-
- private:
-  Index nx_, ny_;
-  Topology topology_;
-  std::vector<std::pair<Index, Index>> steps_;
-};
-
-// Grows a union-find forest point by point and counts its components.
-class ComponentCounter {
- public:
-  ComponentCounter(Index nx, Index ny, const Topology& topology)
-      : n_(nx * ny), nx_(nx), forest_(nx * ny), neighbourhood_(nx, ny, topology) {}
-
-  // Points come in height order, scattered over the grid: fetching the neighbourhood of a point a few
-  // places ahead lets its cache misses overlap with the work on the current one.
-  void prefetch(std::int32_t i) const {
-    const std::int32_t* parent = forest_.data();
-    __builtin_prefetch(parent + i);
-    if (i >= nx_) __builtin_prefetch(parent + i - nx_);
-    if (i + nx_ < n_) __builtin_prefetch(parent + i + nx_);
-  }
-
-  void add(std::int32_t i) {
-    forest_.add(i);
-    ++components_;
-    std::int32_t root = i;
-    neighbourhood_.for_each(i, [&](std::int32_t j) {
-      if (!forest_.present(j)) return;
-      bool merged = false;
-      root = forest_.unite(root, j, merged);
-      if (merged) --components_;
-    });
-  }
-
-  Index components() const { return components_; }
-
- private:
-  Index n_, nx_;
-  PointForest forest_;
-  Neighbourhood neighbourhood_;
-  Index components_ = 0;
-};
-
-constexpr Index kPrefetchDistance = 12;
-
-// The exact sweep: a level at every distinct height, recorded just before the points at that height join.
-void exact_sweep(const HeightMap& heights, ComponentCounter& counter, SweepCurve& curve, int threads) {
-  const std::vector<KeyedPoint> points = sort_descending(heights, threads);
-  const Index n = static_cast<Index>(points.size());
-  for (Index k = 0; k < n; ++k) {
-    if (k + kPrefetchDistance < n) counter.prefetch(points[k + kPrefetchDistance].index);
-    if (k == 0 || points[k].key != points[k - 1].key) {
-      curve.z.push_back(height_of_key(points[k].key));
-      curve.points.push_back(k);
-      curve.spots.push_back(counter.components());
-    }
-    counter.add(points[k].index);
-  }
+  return steps;
 }
 
-// The sweep at fixed levels: the points of one level join in memory order, then the level is recorded.
-void fixed_sweep(const HeightMap& heights, const SweepLevels& levels, ComponentCounter& counter,
-                 SweepCurve& curve, int threads) {
-  const JoinSchedule schedule = fixed_schedule(heights, fixed_levels(heights, levels), threads);
-  const Index total = static_cast<Index>(schedule.order.size());
-  Index added = 0;
-  for (std::size_t level = 0; level < schedule.z.size(); ++level) {
-    for (; added < schedule.joined[level]; ++added) {
-      if (added + kPrefetchDistance < total) counter.prefetch(schedule.order[added + kPrefetchDistance]);
-      counter.add(schedule.order[added]);
-    }
-    curve.z.push_back(schedule.z[level]);
-    curve.points.push_back(added);
-    curve.spots.push_back(counter.components());
+// A stripe's state after every point with time <= t: the counts before its first record with time > t.
+class StripeReader {
+ public:
+  StripeReader(const std::vector<StripeRecord>& records, Index final_components, Index final_points)
+      : records_(records), final_components_(final_components), final_points_(final_points) {}
+  void advance(JoinTime t) {
+    while (next_ < records_.size() && records_[next_].time <= t)
+      ++next_;
   }
-}
+  Index components() const {
+    return next_ < records_.size() ? records_[next_].components_before : final_components_;
+  }
+  Index points() const { return next_ < records_.size() ? records_[next_].points_before : final_points_; }
+
+ private:
+  const std::vector<StripeRecord>& records_;
+  Index final_components_, final_points_;
+  std::size_t next_ = 0;
+};
 
 }  // namespace
 
 SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topology& topology, int threads) {
-  const Index n = surface.heights().size();
-  if (n >= std::numeric_limits<std::int32_t>::max())
-    throw Error("sweep: more points than 32-bit indices hold");
+  const HeightMap& heights = surface.heights();
+  const Index nx = surface.nx(), ny = surface.ny(), n = heights.size();
+  if (n >= SharedForest::kMaxPoints)
+    throw Error("sweep: " + std::to_string(n) + " points are more than the sweep's limit of 2^30");
+  const bool exact = levels.kind == SweepLevels::Kind::exact;
+  const std::vector<Real> fixed_z = exact ? std::vector<Real>{} : fixed_levels(heights, levels);
+  const int team = n >= kMinPointsForThreads ? std::max(threads, 1) : 1;
+
+  // When each point joins {h > z}: its height's descending key (exact) or its level index.
+  std::vector<JoinTime> time(static_cast<std::size_t>(n));
+  const Real* h = heights.data();
+#pragma omp parallel for num_threads(team) schedule(static)
+  for (Index i = 0; i < n; ++i)
+    time[i] = exact ? descending_key(h[i]) : joining_level(h[i], fixed_z);
+
+  // Horizontal stripes, one per thread (as many as asked, whatever the size, so that the joining logic is
+  // the same for all sizes); each is swept on its own with its own part of one union-find array.
+  const Index stripe_count = std::clamp<Index>(threads, 1, ny);
+  std::vector<StripeRows> rows(static_cast<std::size_t>(stripe_count));
+  for (Index s = 0; s < stripe_count; ++s)
+    rows[s] = {s * ny / stripe_count, (s + 1) * ny / stripe_count};
+  const bool seams = stripe_count > 1;
+  const Index height_buckets = 2048;
+  const Real top = heights.maxCoeff(), bottom = heights.minCoeff();
+  const Real bucket_scale = top > bottom ? static_cast<Real>(height_buckets) / (top - bottom) : 0.0;
+  SharedForest forest(n, seams);
+  std::vector<StripeComponents> stripes;
+  for (Index s = 0; s < stripe_count; ++s)
+    stripes.emplace_back(forest, nx, ny, rows[s].begin, rows[s].end, topology,
+                         seams && (s > 0 || topology.wrap_y),
+                         seams && (s + 1 < stripe_count || topology.wrap_y));
+
+#pragma omp parallel for num_threads(std::min <int>(team, static_cast <int>(stripe_count))) \
+    schedule(static, 1)
+  for (Index s = 0; s < stripe_count; ++s) {
+    const Index first = rows[s].begin * nx, last = rows[s].end * nx;
+    // Fixed levels: a counting sort by level is the whole sort. Exact: buckets by a linear map of the height
+    // (monotone, and even for any distribution of heights, unlike the keys' leading bits), then radix sorts.
+    const std::vector<TimedPoint> order =
+        exact ? order_by_time(
+                    time, first, last, height_buckets,
+                    [&](Index i) {
+                      return std::min<Index>(static_cast<Index>((top - h[i]) * bucket_scale),
+                                             height_buckets - 1);
+                    },
+                    true)
+              : order_by_time(
+                    time, first, last, static_cast<Index>(fixed_z.size()),
+                    [&](Index i) { return static_cast<Index>(time[i]); }, false);
+    StripeComponents& stripe = stripes[s];
+    const Index count = static_cast<Index>(order.size());
+    constexpr Index kPrefetchDistance = 16;
+    for (Index k = 0; k < count; ++k) {
+      if (k + kPrefetchDistance < count) stripe.prefetch(order[k + kPrefetchDistance].index);
+      if (k == 0 || order[k].time != order[k - 1].time) stripe.record(order[k].time);
+      stripe.add(order[k].index, order[k].time);
+    }
+  }
+
+  std::vector<std::vector<LocalJoin>> local_joins;
+  for (auto& stripe : stripes)
+    local_joins.push_back(std::move(stripe.local_joins()));
+  const std::vector<ExcessStep> excess_steps = seam_excess(local_joins, rows, topology, nx, ny, time);
+
+  // The global curve: at each level, the stripes' counts less the components they counted twice.
   SweepCurve curve;
   curve.topology = topology;
   curve.levels = levels;
   curve.nominal_area = surface.grid().nominal_area();
-  // The union-find pass is sequential: each point's effect depends on every point added before it.
-  ComponentCounter counter(surface.nx(), surface.ny(), topology);
-  if (levels.kind == SweepLevels::Kind::exact)
-    exact_sweep(surface.heights(), counter, curve, threads);
-  else
-    fixed_sweep(surface.heights(), levels, counter, curve, threads);
-  curve.area_fraction.resize(curve.points.size());
-  for (std::size_t j = 0; j < curve.points.size(); ++j)
-    curve.area_fraction[j] = static_cast<Real>(curve.points[j]) / static_cast<Real>(n);
+  const Real points_total = static_cast<Real>(n);
+  auto excess_at = [&excess_steps, next_step = std::size_t{0}, value = Index{0}](JoinTime t) mutable {
+    while (next_step < excess_steps.size() && excess_steps[next_step].time <= t)
+      value = excess_steps[next_step++].excess;
+    return value;
+  };
+  if (exact) {
+    // A level at every distinct height, in order: the merge of the stripes' records by time. At the level
+    // of time t, {h > z} holds the times < t: each stripe's state is the one before its first record with
+    // time >= t, i.e. its current record (or its final state once its records are used up).
+    std::size_t level_count = 0;
+    for (auto& stripe : stripes)
+      level_count += stripe.records().size();  // an upper bound
+    curve.z.reserve(level_count);
+    curve.points.reserve(level_count);
+    curve.spots.reserve(level_count);
+    curve.area_fraction.reserve(level_count);
+    std::vector<std::size_t> position(stripes.size(), 0);
+    for (;;) {
+      JoinTime next = kNever;
+      Index components = 0, points = 0;
+      for (std::size_t s = 0; s < stripes.size(); ++s) {
+        const auto& records = stripes[s].records();
+        if (position[s] < records.size()) {
+          const StripeRecord& record = records[position[s]];
+          next = std::min(next, record.time);
+          components += record.components_before;
+          points += record.points_before;
+        } else {
+          components += stripes[s].components();
+          points += stripes[s].points();
+        }
+      }
+      if (next == kNever) break;
+      curve.z.push_back(height_of_key(next));
+      curve.points.push_back(points);
+      curve.spots.push_back(components - excess_at(next - 1));
+      curve.area_fraction.push_back(static_cast<Real>(points) / points_total);
+      for (std::size_t s = 0; s < stripes.size(); ++s)
+        if (position[s] < stripes[s].records().size() && stripes[s].records()[position[s]].time == next)
+          ++position[s];
+    }
+  } else {
+    std::vector<StripeReader> readers;
+    for (auto& stripe : stripes)
+      readers.emplace_back(stripe.records(), stripe.components(), stripe.points());
+    for (std::size_t k = 0; k < fixed_z.size(); ++k) {
+      Index components = 0, points = 0;
+      for (StripeReader& reader : readers) {
+        reader.advance(k);
+        components += reader.components();
+        points += reader.points();
+      }
+      curve.z.push_back(fixed_z[k]);
+      curve.points.push_back(points);
+      curve.spots.push_back(components - excess_at(k));
+      curve.area_fraction.push_back(static_cast<Real>(points) / points_total);
+    }
+  }
   return curve;
 }
 
