@@ -22,13 +22,13 @@ StripeComponents::StripeComponents(SharedForest& forest, Index nx, Index ny, Ind
       topology_(topology),
       wrap_y_inside_(topology.wrap_y && row_begin == 0 && row_end == ny),
       seam_row_above_(seam_row_above),
-      seam_row_below_(seam_row_below) {
-  const bool eight = topology.connectivity == Connectivity::eight;
+      seam_row_below_(seam_row_below),
+      eight_(topology.connectivity == Connectivity::eight) {
   for (Index dy = -1; dy <= 1; ++dy)
     for (Index dx = -1; dx <= 1; ++dx)
-      if ((dx != 0 || dy != 0) && (eight || dx == 0 || dy == 0)) {
+      if ((dx != 0 || dy != 0) && (eight_ || dx == 0 || dy == 0)) {
+        offsets_[steps_.size()] = dy * nx + dx;
         steps_.push_back({dx, dy});
-        offsets_.push_back(dy * nx + dx);
       }
 }
 
@@ -63,6 +63,7 @@ std::int32_t StripeComponents::link(std::int32_t a, std::int32_t b, JoinTime tim
   return a;
 }
 
+template <int kNeighbours>
 void StripeComponents::add(std::int32_t i, JoinTime time) {
   // Row and column without an integer division (tens of cycles): a floating-point reciprocal, corrected.
   Index y = static_cast<Index>(static_cast<double>(i) * inverse_nx_);
@@ -123,5 +124,8 @@ void StripeComponents::add(std::int32_t i, JoinTime time) {
     representative_[root] = i;
   }
 }
+
+template void StripeComponents::add<4>(std::int32_t, JoinTime);
+template void StripeComponents::add<8>(std::int32_t, JoinTime);
 
 }  // namespace contactbench::sweep_detail

@@ -4,6 +4,7 @@
 // afterwards (THEORY.md section 3).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -57,7 +58,12 @@ class StripeComponents {
                    const Topology& topology, bool seam_row_above, bool seam_row_below);
 
   void prefetch(std::int32_t i) const;
-  void add(std::int32_t i, JoinTime time);
+  void add(std::int32_t i, JoinTime time) {
+    if (eight_)
+      add<8>(i, time);
+    else
+      add<4>(i, time);
+  }
 
   // Called before the first point of each new join time, to record the stripe's state.
   void record(JoinTime time) {
@@ -69,6 +75,8 @@ class StripeComponents {
   std::vector<LocalJoin>& local_joins() { return local_joins_; }
 
  private:
+  template <int kNeighbours>
+  void add(std::int32_t i, JoinTime time);
   std::int32_t find(std::int32_t i);
   std::int32_t link(std::int32_t a, std::int32_t b, JoinTime time);
   bool is_seam_row(Index y) const {
@@ -82,8 +90,9 @@ class StripeComponents {
   Topology topology_;
   bool wrap_y_inside_;
   bool seam_row_above_, seam_row_below_;
+  bool eight_;
   std::vector<std::pair<Index, Index>> steps_;  // (dx, dy) of the neighbours
-  std::vector<Index> offsets_;                  // the same as index offsets, for interior points
+  std::array<Index, 8> offsets_{};              // the same as index offsets, for interior points
   Index components_ = 0, points_ = 0;
   std::vector<StripeRecord> records_;
   std::vector<LocalJoin> local_joins_;

@@ -70,36 +70,6 @@ void radix_sort(TimedPoint* points, TimedPoint* scratch, Index count) {
   if (from != points) std::copy(from, from + count, points);
 }
 
-// The points [first, last) that ever join, in ascending join time (ties in index order): a stable counting
-// sort into `buckets` by bucket_of (monotone in the time; at most a few thousand buckets, so that the write
-// streams stay in cache), then, unless every bucket holds one time only, a radix sort of each bucket.
-template <typename BucketOf>
-std::vector<TimedPoint> order_by_time(const std::vector<JoinTime>& time, Index first, Index last,
-                                      Index buckets, BucketOf&& bucket_of, bool sort_buckets) {
-  std::vector<Index> starts(static_cast<std::size_t>(buckets) + 1, 0);
-  for (Index i = first; i < last; ++i)
-    if (time[i] != kNever) ++starts[bucket_of(i) + 1];
-  std::partial_sum(starts.begin(), starts.end(), starts.begin());
-  std::vector<TimedPoint> points(static_cast<std::size_t>(starts.back()));
-  std::vector<Index> next(starts.begin(), starts.end() - 1);
-  for (Index i = first; i < last; ++i)
-    if (time[i] != kNever) points[next[bucket_of(i)]++] = {time[i], static_cast<std::int32_t>(i)};
-  if (!sort_buckets) return points;
-  std::vector<TimedPoint> scratch;
-  for (Index b = 0; b < buckets; ++b) {
-    const Index size = starts[b + 1] - starts[b];
-    if (size > 32) {
-      scratch.resize(static_cast<std::size_t>(size));
-      radix_sort(points.data() + starts[b], scratch.data(), size);
-    } else {  // small buckets: insertion sort, stable
-      for (Index i = starts[b] + 1; i < starts[b + 1]; ++i)
-        for (Index k = i; k > starts[b] && points[k - 1].time > points[k].time; --k)
-          std::swap(points[k - 1], points[k]);
-    }
-  }
-  return points;
-}
-
 // ---- Levels ---------------------------------------------------------------------------------------------
 
 std::vector<Real> fixed_levels(const HeightMap& heights, const SweepLevels& levels) {
@@ -128,6 +98,81 @@ JoinTime joining_level(Real height, const std::vector<Real>& z) {
   while (!(height > z[k]))
     ++k;
   return static_cast<JoinTime>(k);
+}
+
+// ---- Sweeping one stripe ---------------------------------------------------------------------------------
+
+constexpr Index kPrefetchDistance = 16;
+
+// Exact levels: the stripe's points in descending height (ties in index order), then one union-find pass
+// with a record at every distinct height. The sort is a stable counting sort into 2048 buckets by a linear
+// map of the height (monotone, even for any distribution of heights, and few enough write streams to stay
+// in cache), then a radix sort of each bucket by the heights' keys.
+void sweep_stripe_exact(const HeightMap& heights, Index first, Index last, StripeComponents& stripe) {
+  const Real* h = heights.data();
+  const Eigen::Map<const Eigen::ArrayXd> range(h + first, last - first);
+  const Real top = range.maxCoeff(), bottom = range.minCoeff();
+  constexpr Index kBuckets = 2048;
+  const Real scale = top > bottom ? static_cast<Real>(kBuckets) / (top - bottom) : 0.0;
+  auto bucket_of = [&](Index i) {
+    return std::min<Index>(static_cast<Index>((top - h[i]) * scale), kBuckets - 1);
+  };
+  std::vector<Index> starts(kBuckets + 1, 0);
+  for (Index i = first; i < last; ++i)
+    ++starts[bucket_of(i) + 1];
+  std::partial_sum(starts.begin(), starts.end(), starts.begin());
+  std::vector<TimedPoint> order(static_cast<std::size_t>(last - first));
+  std::vector<Index> next(starts.begin(), starts.end() - 1);
+  for (Index i = first; i < last; ++i)
+    order[next[bucket_of(i)]++] = {descending_key(h[i]), static_cast<std::int32_t>(i)};
+  std::vector<TimedPoint> scratch;
+  for (Index b = 0; b < kBuckets; ++b) {
+    const Index size = starts[b + 1] - starts[b];
+    if (size > 32) {
+      scratch.resize(static_cast<std::size_t>(size));
+      radix_sort(order.data() + starts[b], scratch.data(), size);
+    } else {  // small buckets: insertion sort, stable
+      for (Index i = starts[b] + 1; i < starts[b + 1]; ++i)
+        for (Index k = i; k > starts[b] && order[k - 1].time > order[k].time; --k)
+          std::swap(order[k - 1], order[k]);
+    }
+  }
+  const Index count = static_cast<Index>(order.size());
+  stripe.records().reserve(static_cast<std::size_t>(count));
+  for (Index k = 0; k < count; ++k) {
+    if (k + kPrefetchDistance < count) stripe.prefetch(order[k + kPrefetchDistance].index);
+    if (k == 0 || order[k].time != order[k - 1].time) stripe.record(order[k].time);
+    stripe.add(order[k].index, order[k].time);
+  }
+}
+
+// Fixed levels: a stable counting sort of the stripe's points by the level at which they join (points of
+// one level stay in memory order, which the union-find pass then walks with good locality).
+void sweep_stripe_levels(const HeightMap& heights, const std::vector<Real>& z, Index first, Index last,
+                         StripeComponents& stripe) {
+  const Real* h = heights.data();
+  const Index levels = static_cast<Index>(z.size());
+  std::vector<std::int32_t> level(static_cast<std::size_t>(last - first));
+  std::vector<Index> starts(static_cast<std::size_t>(levels) + 2, 0);
+  for (Index i = first; i < last; ++i) {
+    const JoinTime t = joining_level(h[i], z);
+    level[i - first] = t == kNever ? static_cast<std::int32_t>(levels) : static_cast<std::int32_t>(t);
+    ++starts[level[i - first] + 1];
+  }
+  std::partial_sum(starts.begin(), starts.end(), starts.begin());
+  std::vector<std::int32_t> order(static_cast<std::size_t>(starts[levels]));
+  std::vector<Index> next(starts.begin(), starts.end() - 1);
+  for (Index i = first; i < last; ++i)
+    if (level[i - first] < levels) order[next[level[i - first]]++] = static_cast<std::int32_t>(i);
+  const Index count = static_cast<Index>(order.size());
+  for (Index k = 0, l = 0; l < levels; ++l) {
+    if (starts[l] == starts[l + 1]) continue;
+    stripe.record(static_cast<JoinTime>(l));
+    for (; k < starts[l + 1]; ++k) {
+      if (k + kPrefetchDistance < count) stripe.prefetch(order[k + kPrefetchDistance]);
+      stripe.add(order[k], static_cast<JoinTime>(l));
+    }
+  }
 }
 
 // ---- Joining the stripes --------------------------------------------------------------------------------
@@ -171,9 +216,10 @@ struct ExcessStep {
 // edge that unites two sets merges two components the stripes counted apart, unless a later or simultaneous
 // local merge would have united them anyway; counting all successful unions minus the local merges gives
 // the excess exactly, whatever the order within one time: rank(local + seam) - rank(local).
+template <typename TimeOf>
 std::vector<ExcessStep> seam_excess(const std::vector<std::vector<LocalJoin>>& local_joins,
                                     const std::vector<StripeRows>& stripes, const Topology& topology,
-                                    Index nx, Index ny, const std::vector<JoinTime>& time) {
+                                    Index nx, Index ny, TimeOf&& time_of) {
   std::vector<ExcessStep> steps;
   if (stripes.size() < 2) return steps;
   // Seam rows and their compact numbering.
@@ -208,8 +254,8 @@ std::vector<ExcessStep> seam_excess(const std::vector<std::vector<LocalJoin>>& l
     for (Index x = 0; x < nx; ++x) {
       auto edge = [&](Index x_lower) {
         const Index p = seam.upper * nx + x, q = seam.lower * nx + x_lower;
-        if (time[p] != kNever && time[q] != kNever)
-          events.push_back({std::max(time[p], time[q]), id(p), id(q), false});
+        const JoinTime tp = time_of(p), tq = time_of(q);
+        if (tp != kNever && tq != kNever) events.push_back({std::max(tp, tq), id(p), id(q), false});
       };
       edge(x);
       if (topology.connectivity == Connectivity::eight) {
@@ -262,12 +308,9 @@ SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topolo
   const std::vector<Real> fixed_z = exact ? std::vector<Real>{} : fixed_levels(heights, levels);
   const int team = n >= kMinPointsForThreads ? std::max(threads, 1) : 1;
 
-  // When each point joins {h > z}: its height's descending key (exact) or its level index.
-  std::vector<JoinTime> time(static_cast<std::size_t>(n));
+  // When a point joins {h > z}: its height's descending key (exact) or its level index (kNever: never).
   const Real* h = heights.data();
-#pragma omp parallel for num_threads(team) schedule(static)
-  for (Index i = 0; i < n; ++i)
-    time[i] = exact ? descending_key(h[i]) : joining_level(h[i], fixed_z);
+  auto time_of = [&](Index i) { return exact ? descending_key(h[i]) : joining_level(h[i], fixed_z); };
 
   // Horizontal stripes, one per thread (as many as asked, whatever the size, so that the joining logic is
   // the same for all sizes); each is swept on its own with its own part of one union-find array.
@@ -276,9 +319,6 @@ SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topolo
   for (Index s = 0; s < stripe_count; ++s)
     rows[s] = {s * ny / stripe_count, (s + 1) * ny / stripe_count};
   const bool seams = stripe_count > 1;
-  const Index height_buckets = 2048;
-  const Real top = heights.maxCoeff(), bottom = heights.minCoeff();
-  const Real bucket_scale = top > bottom ? static_cast<Real>(height_buckets) / (top - bottom) : 0.0;
   SharedForest forest(n, seams);
   std::vector<StripeComponents> stripes;
   for (Index s = 0; s < stripe_count; ++s)
@@ -290,33 +330,16 @@ SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topolo
     schedule(static, 1)
   for (Index s = 0; s < stripe_count; ++s) {
     const Index first = rows[s].begin * nx, last = rows[s].end * nx;
-    // Fixed levels: a counting sort by level is the whole sort. Exact: buckets by a linear map of the height
-    // (monotone, and even for any distribution of heights, unlike the keys' leading bits), then radix sorts.
-    const std::vector<TimedPoint> order =
-        exact ? order_by_time(
-                    time, first, last, height_buckets,
-                    [&](Index i) {
-                      return std::min<Index>(static_cast<Index>((top - h[i]) * bucket_scale),
-                                             height_buckets - 1);
-                    },
-                    true)
-              : order_by_time(
-                    time, first, last, static_cast<Index>(fixed_z.size()),
-                    [&](Index i) { return static_cast<Index>(time[i]); }, false);
-    StripeComponents& stripe = stripes[s];
-    const Index count = static_cast<Index>(order.size());
-    constexpr Index kPrefetchDistance = 16;
-    for (Index k = 0; k < count; ++k) {
-      if (k + kPrefetchDistance < count) stripe.prefetch(order[k + kPrefetchDistance].index);
-      if (k == 0 || order[k].time != order[k - 1].time) stripe.record(order[k].time);
-      stripe.add(order[k].index, order[k].time);
-    }
+    if (exact)
+      sweep_stripe_exact(heights, first, last, stripes[s]);
+    else
+      sweep_stripe_levels(heights, fixed_z, first, last, stripes[s]);
   }
 
   std::vector<std::vector<LocalJoin>> local_joins;
   for (auto& stripe : stripes)
     local_joins.push_back(std::move(stripe.local_joins()));
-  const std::vector<ExcessStep> excess_steps = seam_excess(local_joins, rows, topology, nx, ny, time);
+  const std::vector<ExcessStep> excess_steps = seam_excess(local_joins, rows, topology, nx, ny, time_of);
 
   // The global curve: at each level, the stripes' counts less the components they counted twice.
   SweepCurve curve;
