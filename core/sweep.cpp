@@ -297,6 +297,128 @@ class StripeReader {
   std::size_t next_ = 0;
 };
 
+// The excess at successive, non-decreasing times: its value after every step with time <= t.
+class ExcessReader {
+ public:
+  ExcessReader(const std::vector<ExcessStep>& steps, std::size_t first) : steps_(steps), next_(first) {
+    if (first > 0) value_ = steps[first - 1].excess;
+  }
+  Index at(JoinTime t) {
+    while (next_ < steps_.size() && steps_[next_].time <= t)
+      value_ = steps_[next_++].excess;
+    return value_;
+  }
+
+ private:
+  const std::vector<ExcessStep>& steps_;
+  std::size_t next_;
+  Index value_ = 0;
+};
+
+// Exact levels: a level at every distinct height, in order, merging the stripes' records by time. At the
+// level of time t, {h > z} holds the times < t: each stripe's state is the one before its first record with
+// time >= t, i.e. its current record (or its final state once its records are used up). The time range is
+// cut in two at a median time and the halves are merged by two threads into disjoint parts of the output
+// (a part may hold fewer levels than its bound when stripes share a height; the gap is closed afterwards).
+void merge_exact_levels(std::vector<StripeComponents>& stripes, const std::vector<ExcessStep>& excess_steps,
+                        Index n, int team, SweepCurve& curve) {
+  const std::size_t stripe_count = stripes.size();
+  std::size_t bound = 0;
+  for (auto& stripe : stripes)
+    bound += stripe.records().size();
+  // Split time: the median record time of the largest stripe (any time works; a median balances the halves).
+  JoinTime split = kNever;
+  for (auto& stripe : stripes)
+    if (!stripe.records().empty() && (split == kNever || stripe.records().size() * 2 > bound))
+      split = stripe.records()[stripe.records().size() / 2].time;
+  const int parts = team > 1 && bound > static_cast<std::size_t>(kMinPointsForThreads) ? 2 : 1;
+  // Each part: where it starts in every stripe's records and in the output.
+  std::vector<std::vector<std::size_t>> start(parts + 1, std::vector<std::size_t>(stripe_count, 0));
+  for (std::size_t s = 0; s < stripe_count; ++s) {
+    const auto& records = stripes[s].records();
+    start[parts][s] = records.size();
+    if (parts == 2)
+      start[1][s] = static_cast<std::size_t>(
+          std::lower_bound(records.begin(), records.end(), split,
+                           [](const StripeRecord& r, JoinTime t) { return r.time < t; }) -
+          records.begin());
+  }
+  std::vector<std::size_t> output_start(parts + 1, 0);
+  for (int p = 0; p <= parts; ++p)
+    for (std::size_t s = 0; s < stripe_count; ++s)
+      output_start[p] += start[p][s];
+
+      // Sized by several threads at once, so that the first touch of the pages is shared too.
+#pragma omp parallel sections num_threads(parts)
+  {
+#pragma omp section
+    {
+      curve.z.resize(bound);
+      curve.points.resize(bound);
+    }
+#pragma omp section
+    {
+      curve.spots.resize(bound);
+      curve.area_fraction.resize(bound);
+    }
+  }
+  std::vector<std::size_t> written(parts, 0);
+  const Real points_total = static_cast<Real>(n);
+#pragma omp parallel for num_threads(parts) schedule(static, 1)
+  for (int p = 0; p < parts; ++p) {
+    std::vector<std::size_t> position = start[p];
+    const std::size_t first_excess = static_cast<std::size_t>(
+        std::upper_bound(excess_steps.begin(), excess_steps.end(), p == 0 ? JoinTime{0} : split - 1,
+                         [](JoinTime t, const ExcessStep& e) { return t < e.time; }) -
+        excess_steps.begin());
+    ExcessReader excess(excess_steps, p == 0 ? 0 : first_excess);
+    std::size_t out = output_start[p];
+    for (;;) {
+      JoinTime next = kNever;
+      Index components = 0, points = 0;
+      for (std::size_t s = 0; s < stripe_count; ++s) {
+        const auto& records = stripes[s].records();
+        if (position[s] < records.size()) {
+          const StripeRecord& record = records[position[s]];
+          if (position[s] < start[p + 1][s]) next = std::min(next, record.time);
+          components += record.components_before;
+          points += record.points_before;
+        } else {
+          components += stripes[s].components();
+          points += stripes[s].points();
+        }
+      }
+      if (next == kNever) break;
+      curve.z[out] = height_of_key(next);
+      curve.points[out] = points;
+      curve.spots[out] = components - excess.at(next - 1);
+      curve.area_fraction[out] = static_cast<Real>(points) / points_total;
+      ++out;
+      for (std::size_t s = 0; s < stripe_count; ++s)
+        if (position[s] < start[p + 1][s] && stripes[s].records()[position[s]].time == next) ++position[s];
+    }
+    written[p] = out - output_start[p];
+  }
+  // Close the gaps left where stripes shared a height.
+  std::size_t end = written[0];
+  for (int p = 1; p < parts; ++p) {
+    if (output_start[p] != end) {
+      const auto from = static_cast<std::ptrdiff_t>(output_start[p]), to = static_cast<std::ptrdiff_t>(end);
+      const auto count = static_cast<std::ptrdiff_t>(written[p]);
+      std::copy(curve.z.begin() + from, curve.z.begin() + from + count, curve.z.begin() + to);
+      std::copy(curve.points.begin() + from, curve.points.begin() + from + count, curve.points.begin() + to);
+      std::copy(curve.spots.begin() + from, curve.spots.begin() + from + count, curve.spots.begin() + to);
+      std::copy(curve.area_fraction.begin() + from, curve.area_fraction.begin() + from + count,
+                curve.area_fraction.begin() + to);
+    }
+    end += written[p];
+  }
+  curve.z.resize(end);
+  curve.points.resize(end);
+  curve.spots.resize(end);
+  curve.area_fraction.resize(end);
+}
+
 }  // namespace
 
 SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topology& topology, int threads) {
@@ -347,48 +469,10 @@ SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topolo
   curve.levels = levels;
   curve.nominal_area = surface.grid().nominal_area();
   const Real points_total = static_cast<Real>(n);
-  auto excess_at = [&excess_steps, next_step = std::size_t{0}, value = Index{0}](JoinTime t) mutable {
-    while (next_step < excess_steps.size() && excess_steps[next_step].time <= t)
-      value = excess_steps[next_step++].excess;
-    return value;
-  };
   if (exact) {
-    // A level at every distinct height, in order: the merge of the stripes' records by time. At the level
-    // of time t, {h > z} holds the times < t: each stripe's state is the one before its first record with
-    // time >= t, i.e. its current record (or its final state once its records are used up).
-    std::size_t level_count = 0;
-    for (auto& stripe : stripes)
-      level_count += stripe.records().size();  // an upper bound
-    curve.z.reserve(level_count);
-    curve.points.reserve(level_count);
-    curve.spots.reserve(level_count);
-    curve.area_fraction.reserve(level_count);
-    std::vector<std::size_t> position(stripes.size(), 0);
-    for (;;) {
-      JoinTime next = kNever;
-      Index components = 0, points = 0;
-      for (std::size_t s = 0; s < stripes.size(); ++s) {
-        const auto& records = stripes[s].records();
-        if (position[s] < records.size()) {
-          const StripeRecord& record = records[position[s]];
-          next = std::min(next, record.time);
-          components += record.components_before;
-          points += record.points_before;
-        } else {
-          components += stripes[s].components();
-          points += stripes[s].points();
-        }
-      }
-      if (next == kNever) break;
-      curve.z.push_back(height_of_key(next));
-      curve.points.push_back(points);
-      curve.spots.push_back(components - excess_at(next - 1));
-      curve.area_fraction.push_back(static_cast<Real>(points) / points_total);
-      for (std::size_t s = 0; s < stripes.size(); ++s)
-        if (position[s] < stripes[s].records().size() && stripes[s].records()[position[s]].time == next)
-          ++position[s];
-    }
+    merge_exact_levels(stripes, excess_steps, n, team, curve);
   } else {
+    ExcessReader excess(excess_steps, 0);
     std::vector<StripeReader> readers;
     for (auto& stripe : stripes)
       readers.emplace_back(stripe.records(), stripe.components(), stripe.points());
@@ -401,7 +485,7 @@ SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topolo
       }
       curve.z.push_back(fixed_z[k]);
       curve.points.push_back(points);
-      curve.spots.push_back(components - excess_at(k));
+      curve.spots.push_back(components - excess.at(k));
       curve.area_fraction.push_back(static_cast<Real>(points) / points_total);
     }
   }
