@@ -1,6 +1,8 @@
 // The geometric sweep: bearing area A_c(z) and spot count N(z) of {h > z} for many levels in one pass
 // (THEORY.md section 3): points are visited in descending height and merged in a union-find, so the
-// components after each level are known without labelling any level.
+// components after each level are known without labelling any level. With several threads the grid is cut
+// into horizontal stripes swept independently, and the spots counted twice along the seams are removed
+// exactly afterwards; the result does not depend on the thread count.
 #pragma once
 
 #include <string>
@@ -40,6 +42,7 @@ struct SweepCurve {
 };
 
 // Topology::for_surface(connectivity, surface.grid().periodic) is what a surface's own periodicity implies.
+// For fixed levels on a surface of constant height the levels coincide (all at that height).
 SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topology& topology,
                  int threads = 1);
 

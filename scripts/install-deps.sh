@@ -13,6 +13,7 @@ packages=(
   libtomlplusplus-dev             # scene files
   clang-format                    # the formatting check in the test command
   gnuplot-nox                     # load-area and accuracy-vs-time plots
+  python3                         # renders benchmark JSON as Markdown tables (scripts/render_bench.py)
 )
 
 missing=()

@@ -1,12 +1,14 @@
 // End to end through the contactbench binary: generate, stats, help, and errors a user would hit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <sys/wait.h>
 
@@ -94,7 +96,7 @@ TEST_F(Cli, StatsOfAMeasuredFileWithItsOwnSizes) {
 }
 
 TEST_F(Cli, EveryCommandHasHelp) {
-  for (const char* command : {"--help", "generate --help", "stats --help"}) {
+  for (const char* command : {"--help", "generate --help", "stats --help", "sweep --help"}) {
     const CommandResult help = run(command);
     EXPECT_EQ(help.status, 0) << command;
     EXPECT_NE(help.out.find("Usage"), std::string::npos) << command;
@@ -134,6 +136,56 @@ TEST_F(Cli, APlainMatrixNeedsItsSize) {
   ASSERT_EQ(with.status, 0) << with.err;
   EXPECT_EQ(json_value(with.out, "nx"), 3);
   EXPECT_DOUBLE_EQ(json_value(with.out, "ly"), 2e-6);  // square pixels by default
+}
+
+TEST_F(Cli, SweepWritesTheCurveAsCsv) {
+  const auto surface = folder_ / "s.txt", csv = folder_ / "sweep.csv";
+  ASSERT_EQ(run("generate --sigma 1e-6 --hurst 0.8 --qr 1e5 --size 100e-6 --grid 32 --seed 2 --out " +
+                surface.string())
+                .status,
+            0);
+  const CommandResult levels = run("sweep " + surface.string() + " --levels 10 --out " + csv.string());
+  ASSERT_EQ(levels.status, 0) << levels.err;
+  std::istringstream lines(slurp(csv));
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line.rfind("# contactbench sweep of ", 0), 0u) << line;
+  EXPECT_NE(line.find("4-connectivity, periodic in x and y"), std::string::npos) << line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "z,area_fraction,spots");
+  std::vector<double> area;
+  while (std::getline(lines, line)) {
+    std::istringstream fields(line);
+    std::string z, a, spots;
+    std::getline(fields, z, ',');
+    std::getline(fields, a, ',');
+    std::getline(fields, spots, ',');
+    area.push_back(std::stod(a));
+    if (area.size() == 1) {
+      EXPECT_EQ(spots, "0");  // nothing lies above the highest point
+    }
+  }
+  ASSERT_EQ(area.size(), 11u);  // 10 equal steps from the highest to the lowest height
+  for (std::size_t j = 1; j < area.size(); ++j)
+    EXPECT_GE(area[j], area[j - 1]) << j;
+  EXPECT_LT(area.back(), 1.0);  // strictly above the lowest level: its own points are not counted
+
+  const CommandResult exact = run("sweep " + surface.string() + " --connectivity 8");
+  ASSERT_EQ(exact.status, 0) << exact.err;
+  // One row per distinct height of the 32 x 32 random surface, plus the two header lines.
+  EXPECT_EQ(std::count(exact.out.begin(), exact.out.end(), '\n'), 32 * 32 + 2);
+}
+
+TEST_F(Cli, SweepRefusesBadOptionsNamingThem) {
+  const auto surface = folder_ / "s.txt";
+  ASSERT_EQ(run("generate " + kSurfaceA + " --out " + surface.string()).status, 0);
+  const CommandResult levels = run("sweep " + surface.string() + " --levels many");
+  EXPECT_NE(levels.status, 0);
+  EXPECT_NE(levels.err.find("--levels"), std::string::npos) << levels.err;
+  EXPECT_NE(levels.err.find("exact"), std::string::npos) << levels.err;  // the accepted values are listed
+  const CommandResult connectivity = run("sweep " + surface.string() + " --connectivity 6");
+  EXPECT_NE(connectivity.status, 0);
+  EXPECT_NE(connectivity.err.find("--connectivity"), std::string::npos) << connectivity.err;
 }
 
 }  // namespace
