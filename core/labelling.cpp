@@ -69,18 +69,22 @@ void first_pass_points(const BinaryMap& map, LabelMap& labels, MinRootUnionFind&
 // neighbouring blocks are joined when a foreground point of one touches one of the other:
 //   up (q): (a|b) and (its c|d);  up-left (p): a and its d;  up-right (r): b and its c;  left (s): (a|c) and
 //   (its b|d). Stripes start on even rows, so blocks never straddle two stripes.
-void first_pass_blocks(const BinaryMap& map, LabelMap& labels, MinRootUnionFind& sets, std::int32_t* area,
-                       Stripe& stripe) {
+void first_pass_blocks(const BinaryMap& map, std::int32_t* block_labels, MinRootUnionFind& sets,
+                       std::int32_t* area, Stripe& stripe) {
   const Index nx = map.cols(), blocks = (nx + 1) / 2;
-  // Masks (bit 0 a, 1 b, 2 c, 3 d) and labels of the blocks of the block row above and of this one.
+  // Masks (bit 0 a, 1 b, 2 c, 3 d) of the blocks of the block row above and of this one.
   std::vector<std::uint8_t> mask_above(blocks, 0), mask(blocks, 0);
-  std::vector<std::int32_t> label_above(blocks, 0), label(blocks, 0);
   std::int32_t next = stripe.base;
   for (Index y = stripe.first; y < stripe.last; y += 2) {
     const std::uint8_t* top = map.data() + y * nx;
     const std::uint8_t* bottom = y + 1 < stripe.last ? top + nx : nullptr;
-    std::int32_t* label_top = labels.data() + y * nx;
-    std::int32_t* label_bottom = bottom ? label_top + nx : nullptr;
+    // One label per block (BBDT's economy: a quarter of the stores of a label per point); the second pass
+    // gives it to the block's foreground points.
+    std::int32_t* label = block_labels + (y / 2) * blocks;
+    const std::int32_t* label_above = y > stripe.first ? label - blocks : nullptr;
+    // Areas are summed in a register while consecutive blocks share a label (bumping one counter block
+    // after block would chain every addition through memory).
+    std::int32_t run_label = 0, run_area = 0;
     for (Index bx = 0; bx < blocks; ++bx) {
       const Index x = 2 * bx;
       const bool right = x + 1 < nx;
@@ -101,30 +105,43 @@ void first_pass_blocks(const BinaryMap& map, LabelMap& labels, MinRootUnionFind&
           l = sets.make_set(next++);
           area[l] = 0;
         }
-        area[l] += std::popcount(m);
+        if (l != run_label) {
+          if (run_area > 0) area[run_label] += run_area;
+          run_label = l;
+          run_area = 0;
+        }
+        run_area += std::popcount(m);
       }
       label[bx] = l;
-      // Provisional labels go to the points too: the seams and the second pass work on points.
-      label_top[x] = a ? l : 0;
-      if (right) label_top[x + 1] = b ? l : 0;
-      if (label_bottom) {
-        label_bottom[x] = c ? l : 0;
-        if (right) label_bottom[x + 1] = d ? l : 0;
-      }
     }
+    if (run_area > 0) area[run_label] += run_area;
     std::swap(mask_above, mask);
-    std::swap(label_above, label);
   }
   stripe.next = next;
 }
 
+// The provisional label of a foreground point: its own (point scan) or its block's (block scan).
+class ProvisionalLabel {
+ public:
+  ProvisionalLabel(const LabelMap& points, const std::int32_t* blocks, Index blocks_per_row)
+      : points_(points), blocks_(blocks), blocks_per_row_(blocks_per_row) {}
+  std::int32_t operator()(Index y, Index x) const {
+    return blocks_ ? blocks_[(y / 2) * blocks_per_row_ + x / 2] : points_(y, x);
+  }
+
+ private:
+  const LabelMap& points_;
+  const std::int32_t* blocks_;
+  Index blocks_per_row_;
+};
+
 // Joins the points of row y to their neighbours in row y_above, which the first pass did not look at:
 // the first row of every stripe, and row 0 to row ny-1 across a periodic seam.
-void join_rows(const BinaryMap& map, const LabelMap& labels, MinRootUnionFind& sets, const Topology& topology,
-               Index y, Index y_above) {
+void join_rows(const BinaryMap& map, const ProvisionalLabel& label, MinRootUnionFind& sets,
+               const Topology& topology, Index y, Index y_above) {
   const Index nx = map.cols();
   auto join = [&](Index x, Index x_above) {
-    if (map(y_above, x_above)) sets.merge(labels(y, x), labels(y_above, x_above));
+    if (map(y_above, x_above)) sets.merge(label(y, x), label(y_above, x_above));
   };
   for (Index x = 0; x < nx; ++x) {
     if (!map(y, x)) continue;
@@ -137,11 +154,11 @@ void join_rows(const BinaryMap& map, const LabelMap& labels, MinRootUnionFind& s
 }
 
 // Joins column 0 to column nx-1 across the periodic seam in x (and its diagonals for 8-connectivity).
-void join_columns_across_seam(const BinaryMap& map, const LabelMap& labels, MinRootUnionFind& sets,
+void join_columns_across_seam(const BinaryMap& map, const ProvisionalLabel& label, MinRootUnionFind& sets,
                               const Topology& topology) {
   const Index nx = map.cols(), ny = map.rows(), last = nx - 1;
   auto join = [&](Index y1, Index x1, Index y2, Index x2) {
-    if (map(y1, x1) && map(y2, x2)) sets.merge(labels(y1, x1), labels(y2, x2));
+    if (map(y1, x1) && map(y2, x2)) sets.merge(label(y1, x1), label(y2, x2));
   };
   for (Index y = 0; y < ny; ++y) {
     join(y, 0, y, last);
@@ -153,12 +170,34 @@ void join_columns_across_seam(const BinaryMap& map, const LabelMap& labels, MinR
   }
 }
 
+// Second pass of the block scan: each foreground point takes its block's final label (looked up once per
+// block, and given without a branch through a mask; any non-zero value of the map is foreground).
+void expand_blocks(const BinaryMap& map, const std::int32_t* block_labels, const MinRootUnionFind& sets,
+                   LabelMap& labels, Index first_row, Index last_row) {
+  const Index nx = map.cols(), blocks = (nx + 1) / 2, pairs = nx / 2;
+  for (Index y = first_row; y < last_row; y += 2) {
+    const std::int32_t* block = block_labels + (y / 2) * blocks;
+    const Index rows = std::min<Index>(2, last_row - y);
+    for (Index r = 0; r < rows; ++r) {
+      const std::uint8_t* in = map.data() + (y + r) * nx;
+      std::int32_t* out = labels.data() + (y + r) * nx;
+      for (Index bx = 0; bx < pairs; ++bx) {
+        const std::int32_t label = sets.final_label(block[bx]);
+        out[2 * bx] = label & -static_cast<std::int32_t>(in[2 * bx] != 0);
+        out[2 * bx + 1] = label & -static_cast<std::int32_t>(in[2 * bx + 1] != 0);
+      }
+      if (nx % 2) out[nx - 1] = sets.final_label(block[pairs]) & -static_cast<std::int32_t>(in[nx - 1] != 0);
+    }
+  }
+}
+
 }  // namespace
 
 struct Labeller::Buffers {
   Labelling result;
   MinRootUnionFind sets;
   LargeBuffer<std::int32_t> provisional_area;
+  LargeBuffer<std::int32_t> block_labels;  // block scan (8-connectivity) only
 };
 
 Labeller::Labeller(Topology topology, int threads)
@@ -199,6 +238,11 @@ const Labelling& Labeller::label(const BinaryMap& map) {
   // Points per provisional label, counted in the first pass.
   buffers_->provisional_area.resize(static_cast<std::size_t>(1 + ny * labels_per_row));
   std::int32_t* area = buffers_->provisional_area.data();
+  const bool by_block = topology_.connectivity == Connectivity::eight;
+  const Index blocks_per_row = (nx + 1) / 2;
+  if (by_block) buffers_->block_labels.resize(static_cast<std::size_t>((ny + 1) / 2 * blocks_per_row));
+  std::int32_t* block_labels = by_block ? buffers_->block_labels.data() : nullptr;
+  const ProvisionalLabel provisional(result.labels, block_labels, blocks_per_row);
 
   // Stripes follow the thread count (so the result and the seams are the same for any size); only maps
   // large enough to pay for a parallel region get one.
@@ -208,14 +252,14 @@ const Labelling& Labeller::label(const BinaryMap& map) {
     if (topology_.connectivity == Connectivity::four)
       first_pass_points(map, result.labels, sets, area, stripes[s]);
     else
-      first_pass_blocks(map, result.labels, sets, area, stripes[s]);
+      first_pass_blocks(map, block_labels, sets, area, stripes[s]);
   }
 
   // Seams between stripes and periodic seams: a few rows and two columns, done by one thread.
   for (Index s = 1; s < stripe_count; ++s)
-    join_rows(map, result.labels, sets, topology_, stripes[s].first, stripes[s].first - 1);
-  if (topology_.wrap_y) join_rows(map, result.labels, sets, topology_, 0, ny - 1);
-  if (topology_.wrap_x) join_columns_across_seam(map, result.labels, sets, topology_);
+    join_rows(map, provisional, sets, topology_, stripes[s].first, stripes[s].first - 1);
+  if (topology_.wrap_y) join_rows(map, provisional, sets, topology_, 0, ny - 1);
+  if (topology_.wrap_x) join_columns_across_seam(map, provisional, sets, topology_);
 
   std::int32_t count = 0;
   for (const Stripe& stripe : stripes)
@@ -227,9 +271,13 @@ const Labelling& Labeller::label(const BinaryMap& map) {
     for (std::int32_t l = stripe.base; l < stripe.next; ++l)
       result.areas[sets.final_label(l) - 1] += area[l];
 
-      // Second pass: final labels, a gather with no branch (the background's label 0 stays 0).
+      // Second pass: final labels; for the point scan a gather with no branch (the background's 0 stays 0).
 #pragma omp parallel for num_threads(team) schedule(static, 1)
   for (Index s = 0; s < stripe_count; ++s) {
+    if (by_block) {
+      expand_blocks(map, block_labels, sets, result.labels, stripes[s].first, stripes[s].last);
+      continue;
+    }
     std::int32_t* label = result.labels.data() + stripes[s].first * nx;
     const Index points = (stripes[s].last - stripes[s].first) * nx;
     for (Index i = 0; i < points; ++i)

@@ -10,7 +10,7 @@
 
 namespace contactbench {
 
-// 1 = foreground (in contact), 0 = background; row-major like HeightMap (rows are y).
+// Non-zero (1 by convention) = foreground, in contact; 0 = background. Row-major like HeightMap (rows are y).
 using BinaryMap = Eigen::Array<std::uint8_t, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 // 0 = background, 1..count = component; row-major like HeightMap.
 using LabelMap = Eigen::Array<std::int32_t, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;

@@ -446,5 +446,22 @@ TEST(Threshold, IsStrictlyAbove) {
     EXPECT_TRUE((threshold_above(q, z) == reference::reference_threshold(q, z)).all()) << "z = " << z;
 }
 
+TEST(Labelling, AnyNonZeroValueIsForeground) {
+  // Maps from image tools hold 255 for foreground: the labeller must treat every non-zero value alike.
+  for (const Connectivity c : {Connectivity::four, Connectivity::eight}) {
+    BinaryMap ones(6, 7), bytes(6, 7);
+    std::mt19937_64 random(11);
+    for (Index i = 0; i < ones.size(); ++i) {
+      ones.data()[i] = random() % 2;
+      bytes.data()[i] = ones.data()[i] ? 255 : 0;
+    }
+    const Topology t{c, false, false};
+    const Labelling a = label_components(ones, t, 2), b = label_components(bytes, t, 2);
+    EXPECT_EQ(a.count, b.count);
+    EXPECT_TRUE((a.labels == b.labels).all());
+    EXPECT_EQ(a.areas, b.areas);
+  }
+}
+
 }  // namespace
 }  // namespace contactbench
