@@ -7,8 +7,6 @@
 
 #include <string>
 
-#include <omp.h>
-
 #include "bench/bench_surfaces.hpp"
 #include "core/labelling.hpp"
 
@@ -36,24 +34,6 @@ void label_with_contactbench(benchmark::State& state, Index n, int coverage, Con
   }
   state.SetItemsProcessed(state.iterations() * n * n);
   state.counters["spots"] = static_cast<double>(spots);
-}
-
-// The floor: read every height once and write one int32 per point (what any labeller must at least do).
-void memory_pass(benchmark::State& state, Index n, int coverage, Connectivity) {
-  const HeightMap& heights = rough_surface(n).heights();
-  const Real z = 0;  // the level does not matter for a pass that writes every point
-  (void)coverage;
-  LabelMap out(n, n);
-  for (auto _ : state) {
-    const Real* h = heights.data();
-    std::int32_t* o = out.data();
-#pragma omp parallel for num_threads(kThreads) schedule(static)
-    for (Index i = 0; i < n * n; ++i)
-      o[i] = h[i] > z;
-    benchmark::DoNotOptimize(out.data());
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations() * n * n);
 }
 
 #ifdef CB_HAVE_OPENCV
@@ -96,7 +76,7 @@ void register_all() {
               ->Unit(benchmark::kMillisecond)
               ->UseRealTime();
 #endif
-        benchmark::RegisterBenchmark(name("memory_pass", n, coverage, c).c_str(), memory_pass, n, coverage, c)
+        benchmark::RegisterBenchmark(name("memory_pass", n, coverage, c).c_str(), memory_pass, n)
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime();
       }
@@ -107,15 +87,9 @@ void register_all() {
 
 int main(int argc, char** argv) {
   contactbench::bench::register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::AddCustomContext("threads", std::to_string(contactbench::bench::kThreads));
 #ifdef CB_HAVE_OPENCV
-  benchmark::AddCustomContext("opencv", CV_VERSION);
+  return contactbench::bench::run_benchmarks(argc, argv, {{"opencv", CV_VERSION}});
 #else
-  benchmark::AddCustomContext("opencv", "not installed");
+  return contactbench::bench::run_benchmarks(argc, argv, {{"opencv", "not installed"}});
 #endif
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
 }

@@ -33,4 +33,30 @@ const BinaryMap& contact_map(Index n, double coverage) {
   return *slot;
 }
 
+void memory_pass(benchmark::State& state, Index n) {
+  const HeightMap& heights = rough_surface(n).heights();
+  LabelMap out(n, n);
+  for (auto _ : state) {
+    const Real* h = heights.data();
+    std::int32_t* o = out.data();
+#pragma omp parallel for num_threads(kThreads) schedule(static)
+    for (Index i = 0; i < n * n; ++i)
+      o[i] = h[i] > 0;
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * n * n);
+}
+
+int run_benchmarks(int argc, char** argv, const std::vector<std::pair<std::string, std::string>>& context) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::AddCustomContext("threads", std::to_string(kThreads));
+  for (const auto& [key, value] : context)
+    benchmark::AddCustomContext(key, value);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
+
 }  // namespace contactbench::bench

@@ -1,6 +1,12 @@
 // Surfaces and binary maps the benchmarks share: made by the project's own generator, seeded, cached.
 #pragma once
 
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
 #include "core/labelling.hpp"
 #include "core/surface.hpp"
 
@@ -15,5 +21,14 @@ const Surface& rough_surface(Index n);
 
 // {h > z} of rough_surface(n) with z chosen so that `coverage` (a fraction) of the points lie above.
 const BinaryMap& contact_map(Index n, double coverage);
+
+// The physical floor every harness reports against: one pass that reads the n x n heights and writes one
+// int32 per point, on kThreads threads.
+void memory_pass(benchmark::State& state, Index n);
+
+// Initialises Google Benchmark, records the thread count and `context` in its output, runs what is
+// registered. Returns the process status.
+int run_benchmarks(int argc, char** argv,
+                   const std::vector<std::pair<std::string, std::string>>& context = {});
 
 }  // namespace contactbench::bench

@@ -49,21 +49,6 @@ void per_level(benchmark::State& state, Index n, Connectivity c) {
   state.counters["levels"] = 501;
 }
 
-void memory_pass(benchmark::State& state, Index n) {
-  const HeightMap& heights = rough_surface(n).heights();
-  LabelMap out(n, n);
-  for (auto _ : state) {
-    const Real* h = heights.data();
-    std::int32_t* o = out.data();
-#pragma omp parallel for num_threads(kThreads) schedule(static)
-    for (Index i = 0; i < n * n; ++i)
-      o[i] = h[i] > 0;
-    benchmark::DoNotOptimize(out.data());
-    benchmark::ClobberMemory();
-  }
-  state.SetItemsProcessed(state.iterations() * n * n);
-}
-
 std::string name(const std::string& mode, Index n, Connectivity c) {
   return "sweep/" + mode + "/n:" + std::to_string(n) + "/conn:" + std::to_string(static_cast<int>(c));
 }
@@ -93,10 +78,5 @@ void register_all() {
 
 int main(int argc, char** argv) {
   contactbench::bench::register_all();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::AddCustomContext("threads", std::to_string(contactbench::bench::kThreads));
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return contactbench::bench::run_benchmarks(argc, argv);
 }
