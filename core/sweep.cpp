@@ -11,15 +11,19 @@
 
 #include "core/error.hpp"
 #include "core/stripe_components.hpp"
+#include "core/stripe_seams.hpp"
 
 namespace contactbench {
 
+using sweep_detail::ExcessReader;
+using sweep_detail::ExcessStep;
 using sweep_detail::JoinTime;
 using sweep_detail::kNever;
 using sweep_detail::LocalJoin;
 using sweep_detail::SharedForest;
 using sweep_detail::StripeComponents;
 using sweep_detail::StripeRecord;
+using sweep_detail::StripeRows;
 
 namespace {
 
@@ -175,108 +179,6 @@ void sweep_stripe_levels(const HeightMap& heights, const std::vector<Real>& z, I
   }
 }
 
-// ---- Joining the stripes --------------------------------------------------------------------------------
-
-struct StripeRows {
-  Index begin, end;
-};
-
-// A small union-find over the points of the seam rows.
-class SeamForest {
- public:
-  explicit SeamForest(Index size) : parent_(static_cast<std::size_t>(size)) {
-    std::iota(parent_.begin(), parent_.end(), 0);
-  }
-  bool unite(Index a, Index b) {
-    a = find(a);
-    b = find(b);
-    if (a == b) return false;
-    parent_[std::max(a, b)] = std::min(a, b);
-    return true;
-  }
-
- private:
-  Index find(Index i) {
-    while (parent_[i] != i)
-      i = parent_[i] = parent_[parent_[i]];
-    return i;
-  }
-  std::vector<Index> parent_;
-};
-
-// Components counted twice by the stripes, as a step function of time: after all events up to `time`,
-// the stripes' counts overstate the global count by `excess`.
-struct ExcessStep {
-  JoinTime time;
-  Index excess;
-};
-
-// Joins the stripes (THEORY.md section 3, for stripes swept in parallel): over the seam points, apply the
-// merges each stripe saw among its seam components and the edges across the seams, in time order. A seam
-// edge that unites two sets merges two components the stripes counted apart, unless a later or simultaneous
-// local merge would have united them anyway; counting all successful unions minus the local merges gives
-// the excess exactly, whatever the order within one time: rank(local + seam) - rank(local).
-template <typename TimeOf>
-std::vector<ExcessStep> seam_excess(const std::vector<std::vector<LocalJoin>>& local_joins,
-                                    const std::vector<StripeRows>& stripes, const Topology& topology,
-                                    Index nx, Index ny, TimeOf&& time_of) {
-  std::vector<ExcessStep> steps;
-  if (stripes.size() < 2) return steps;
-  // Seam rows and their compact numbering.
-  std::vector<Index> slot(static_cast<std::size_t>(ny), -1);
-  Index slots = 0;
-  auto add_row = [&](Index y) {
-    if (slot[y] < 0) slot[y] = slots++;
-  };
-  struct Seam {
-    Index upper, lower;  // the last row of one stripe and the first row of the next
-  };
-  std::vector<Seam> seams;
-  for (std::size_t s = 0; s < stripes.size(); ++s) {
-    if (s + 1 == stripes.size() && !topology.wrap_y) break;
-    const StripeRows& next = stripes[(s + 1) % stripes.size()];
-    seams.push_back({stripes[s].end - 1, next.begin});
-    add_row(stripes[s].end - 1);
-    add_row(next.begin);
-  }
-  auto id = [&](Index i) { return slot[i / nx] * nx + i % nx; };
-
-  struct Event {
-    JoinTime time;
-    Index a, b;
-    bool local;
-  };
-  std::vector<Event> events;
-  for (const auto& joins : local_joins)
-    for (const LocalJoin& join : joins)
-      events.push_back({join.time, id(join.a), id(join.b), true});
-  for (const Seam& seam : seams)
-    for (Index x = 0; x < nx; ++x) {
-      auto edge = [&](Index x_lower) {
-        const Index p = seam.upper * nx + x, q = seam.lower * nx + x_lower;
-        const JoinTime tp = time_of(p), tq = time_of(q);
-        if (tp != kNever && tq != kNever) events.push_back({std::max(tp, tq), id(p), id(q), false});
-      };
-      edge(x);
-      if (topology.connectivity == Connectivity::eight) {
-        if (x > 0 || topology.wrap_x) edge((x + nx - 1) % nx);
-        if (x + 1 < nx || topology.wrap_x) edge((x + 1) % nx);
-      }
-    }
-  std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.time < b.time; });
-
-  SeamForest forest(slots * nx);
-  Index excess = 0;
-  for (std::size_t e = 0; e < events.size(); ++e) {
-    // A local merge always counts against the excess (the stripe already counted it); a union succeeds
-    // or not.
-    excess += (forest.unite(events[e].a, events[e].b) ? 1 : 0) - (events[e].local ? 1 : 0);
-    if (e + 1 == events.size() || events[e + 1].time != events[e].time)
-      steps.push_back({events[e].time, excess});
-  }
-  return steps;
-}
-
 // A stripe's state after every point with time <= t: the counts before its first record with time > t.
 class StripeReader {
  public:
@@ -295,24 +197,6 @@ class StripeReader {
   const std::vector<StripeRecord>& records_;
   Index final_components_, final_points_;
   std::size_t next_ = 0;
-};
-
-// The excess at successive, non-decreasing times: its value after every step with time <= t.
-class ExcessReader {
- public:
-  ExcessReader(const std::vector<ExcessStep>& steps, std::size_t first) : steps_(steps), next_(first) {
-    if (first > 0) value_ = steps[first - 1].excess;
-  }
-  Index at(JoinTime t) {
-    while (next_ < steps_.size() && steps_[next_].time <= t)
-      value_ = steps_[next_++].excess;
-    return value_;
-  }
-
- private:
-  const std::vector<ExcessStep>& steps_;
-  std::size_t next_;
-  Index value_ = 0;
 };
 
 // Exact levels: a level at every distinct height, in order, merging the stripes' records by time. At the
