@@ -1,10 +1,10 @@
 // contactbench stats: a topography's sizes and spectral statistics as one JSON object (THEORY.md section 1).
 #include <iostream>
-#include <optional>
 #include <string>
 
 #include "app/cli.hpp"
 #include "app/json_writer.hpp"
+#include "app/topography_options.hpp"
 #include "core/spectrum.hpp"
 #include "core/topography_io.hpp"
 
@@ -13,10 +13,7 @@ namespace contactbench {
 namespace {
 
 struct StatsOptions {
-  std::string file;
-  std::optional<Real> size;
-  std::optional<Real> size_y;
-  bool periodic = false;
+  TopographyOptions topography;
   int threads = 1;
 };
 
@@ -36,18 +33,14 @@ JsonObject conventions(Window window) {
 }
 
 void run_stats(const StatsOptions& o) {
-  TopographyReadOptions read;
-  read.lx = o.size;
-  read.ly = o.size_y;
-  if (o.periodic) read.periodic = true;
-  const Surface surface = read_topography(o.file, read);
+  const Surface surface = o.topography.read();
   const FourierCoefficients coefficients = fourier_coefficients(surface, o.threads);
   const SpectralMoments m = spectral_moments(coefficients);
   const Grid& g = surface.grid();
 
   JsonObject json;
-  json.add("file", o.file)
-      .add("format", to_string(detect_topography_format(o.file)))
+  json.add("file", o.topography.file)
+      .add("format", to_string(detect_topography_format(o.topography.file)))
       .add("nx", g.nx)
       .add("ny", g.ny)
       .add("lx", g.lx)
@@ -74,15 +67,7 @@ void add_stats_command(CLI::App& parent) {
   auto options = std::make_shared<StatsOptions>();
   CLI::App* command = parent.add_subcommand(
       "stats", "Print a topography's sizes, Sq and spectral moments as one JSON object (SI units).");
-  command
-      ->add_option("FILE", options->file,
-                   "topography: the project's format, an interferometer or Gwyddion text export, or a "
-                   "plain matrix of heights in metres (then --size is needed)")
-      ->required();
-  command->add_option("--size", options->size, "lateral size along x [m] (for files that carry none)");
-  command->add_option("--size-y", options->size_y, "lateral size along y [m] (default: square pixels)");
-  command->add_flag("--periodic", options->periodic,
-                    "treat the surface as periodic (moments without a window)");
+  options->topography.add_to(*command, "moments without a window");
   add_threads_option(*command, options->threads);
   command->callback([options] { run_stats(*options); });
 }

@@ -1,27 +1,23 @@
 // contactbench sweep: bearing area and contact-spot count of {h > z} at many levels (THEORY.md section 3).
 #include <charconv>
 #include <iostream>
-#include <optional>
 #include <string>
 
 #include "app/cli.hpp"
 #include "app/json_writer.hpp"
+#include "app/topography_options.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/sweep.hpp"
-#include "core/topography_io.hpp"
 
 namespace contactbench {
 
 namespace {
 
 struct SweepOptions {
-  std::string file;
-  std::optional<Real> size;
-  std::optional<Real> size_y;
+  TopographyOptions topography;
   std::string levels = "exact";
   int connectivity = 4;
-  bool periodic = false;
   std::string out;
   int threads = 1;
 };
@@ -47,18 +43,14 @@ void write_csv(std::ostream& out, const SweepCurve& curve, const std::string& fi
 
 void run_sweep(const SweepOptions& o) {
   const SweepLevels levels = parse_levels(o.levels);
-  TopographyReadOptions read;
-  read.lx = o.size;
-  read.ly = o.size_y;
-  if (o.periodic) read.periodic = true;
-  const Surface surface = read_topography(o.file, read).centred();
+  const Surface surface = o.topography.read().centred();
   const Topology topology = Topology::for_surface(
       o.connectivity == 8 ? Connectivity::eight : Connectivity::four, surface.grid().periodic);
   const SweepCurve curve = sweep(surface, levels, topology, o.threads);
   if (o.out.empty()) {
-    write_csv(std::cout, curve, o.file);
+    write_csv(std::cout, curve, o.topography.file);
   } else {
-    write_file_atomically(o.out, [&](std::ostream& out) { write_csv(out, curve, o.file); });
+    write_file_atomically(o.out, [&](std::ostream& out) { write_csv(out, curve, o.topography.file); });
   }
 }
 
@@ -70,15 +62,12 @@ void add_sweep_command(CLI::App& parent) {
       "sweep",
       "Cut a surface with planes: bearing area fraction A_c(z)/A0 and number of contact spots N(z) of "
       "{h > z}, heights measured from the mean plane, written as CSV (z, area_fraction, spots).");
-  command->add_option("FILE", options->file, "topography (any format `stats` reads)")->required();
-  command->add_option("--size", options->size, "lateral size along x [m] (for files that carry none)");
-  command->add_option("--size-y", options->size_y, "lateral size along y [m] (default: square pixels)");
+  options->topography.add_to(*command, "spots wrap around in x and y");
   command->add_option("--levels", options->levels,
                       "'exact' (every distinct height, the default), K (K+1 equally spaced levels from the "
                       "highest to the lowest height) or 'paper' (500 steps of 0.002 h_max down to the mean "
                       "plane)");
   command->add_option("--connectivity", options->connectivity, "4 or 8")->check(CLI::IsMember({4, 8}));
-  command->add_flag("--periodic", options->periodic, "treat the surface as periodic (spots wrap around)");
   command->add_option("--out", options->out, "CSV file (default: standard output)");
   add_threads_option(*command, options->threads);
   command->callback([options] { run_sweep(*options); });
