@@ -1,0 +1,42 @@
+// The elastic half-space as a boundary-element operator: the normal surface displacement u = G p of a
+// pressure field p sampled on a grid (THEORY.md section 6). One application costs one FFT pair.
+#pragma once
+
+#include <memory>
+
+#include "core/grid.hpp"
+#include "core/types.hpp"
+
+namespace contactbench {
+
+class HalfSpace {
+ public:
+  virtual ~HalfSpace() = default;
+
+  // displacement [m] of the pressure [Pa] on the operator's grid (ny x nx); displacement is resized.
+  virtual void apply(const HeightMap& pressure, HeightMap& displacement) = 0;
+
+  const Grid& grid() const { return grid_; }
+  Real modulus() const { return modulus_; }  // E* [Pa] (THEORY.md section 0)
+
+ protected:
+  HalfSpace(const Grid& grid, Real modulus);
+
+ private:
+  Grid grid_;
+  Real modulus_;
+};
+
+// Periodic half-space (Westergaard/Fourier): u(q) = 2 p(q)/(E* |q|) for q != 0. The q = 0 mode (the mean
+// displacement) is set to 0: the mean pressure and the rigid-body approach are the solver's business.
+std::unique_ptr<HalfSpace> make_periodic_half_space(const Grid& grid, Real modulus, int threads = 1);
+
+// Non-periodic half-space: the pressure zero-padded to 2 nx x 2 ny and convolved with the exact displacement
+// of a uniformly loaded pixel (Love's kernel), whose transform is computed once per operator. Exact for a
+// pressure that is piecewise constant on the pixels.
+std::unique_ptr<HalfSpace> make_nonperiodic_half_space(const Grid& grid, Real modulus, int threads = 1);
+
+// The operator a grid calls for: periodic or not, as grid.periodic says.
+std::unique_ptr<HalfSpace> make_half_space(const Grid& grid, Real modulus, int threads = 1);
+
+}  // namespace contactbench
