@@ -1,0 +1,62 @@
+// The boundary-element ground truth: frictionless normal contact of a rough rigid surface and an elastic
+// half-space (equivalently a rigid flat on a rough elastic body), solved for a prescribed mean pressure by
+// the constrained conjugate gradient of Polonsky & Keer (Wear 231, 206-219, 1999; THEORY.md section 6).
+//
+// Unknowns: the pressure p >= 0 on the grid and the flat's height d above the mean plane. The gap is
+// g = d - h + u(p) >= 0 with u = G p the elastic displacement (bem/half_space.hpp); where p > 0 the gap is 0,
+// and mean(p) = the prescribed mean pressure. Each iteration costs two applications of G (two FFT pairs).
+//
+// Convergence criterion (Polonsky & Keer's): the relative change of the pressure in one iteration,
+//   sum |p_new - p_old| / sum p_new < tolerance,
+// checked together with the complementarity residual reported as `residual`: the largest |g| on the contact
+// set relative to the surface's height range. A solve that reaches the iteration cap is marked
+// converged = false and says so on stderr; it is never passed off as converged.
+#pragma once
+
+#include <memory>
+
+#include "bem/half_space.hpp"
+#include "core/surface.hpp"
+
+namespace contactbench {
+
+struct PolonskyKeerOptions {
+  Real tolerance = 1e-10;  // on the relative change of the pressure (see above)
+  Index max_iterations = 20000;
+};
+
+struct ContactSolution {
+  HeightMap pressure;        // [Pa]
+  HeightMap gap;             // [m], 0 on the contact set
+  Real mean_pressure = 0;    // prescribed P/A0 [Pa]
+  Real separation = 0;       // d: the flat's height above the mean plane of the heights [m]
+  Index contact_points = 0;  // points with p > 0
+  Index iterations = 0;
+  Real change = 0;    // the last relative change of the pressure
+  Real residual = 0;  // max |gap| on the contact set / (max h - min h)
+  bool converged = false;
+  double seconds = 0;
+};
+
+class PolonskyKeer {
+ public:
+  // The surface's own periodicity chooses the operator (make_half_space); modulus is E* [Pa].
+  PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOptions options = {}, int threads = 1);
+  ~PolonskyKeer();
+
+  // Solves for the mean pressure P/A0 [Pa] (> 0), starting from the previous solution when there is one
+  // (load stepping: solve increasing loads in order).
+  const ContactSolution& solve(Real mean_pressure);
+
+  const ContactSolution& solution() const { return solution_; }
+  const Surface& surface() const { return surface_; }
+
+ private:
+  Surface surface_;
+  PolonskyKeerOptions options_;
+  std::unique_ptr<HalfSpace> half_space_;
+  ContactSolution solution_;
+  bool warm_ = false;
+};
+
+}  // namespace contactbench
