@@ -40,6 +40,8 @@ class Labeller {
   // The same, handing over the result (the next call allocates anew).
   Labelling take(const BinaryMap& map);
 
+  const Topology& topology() const { return topology_; }
+
  private:
   struct Buffers;
   Topology topology_;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "bem/contact_statistics.hpp"
 #include "bem/polonsky_keer.hpp"
 #include "core/error.hpp"
 
@@ -88,6 +89,64 @@ TEST(PolonskyKeer, RefusesANonPositiveLoad) {
   EXPECT_THROW(solver.solve(0), Error);
   EXPECT_THROW(solver.solve(-1), Error);
   EXPECT_THROW(solver.solve(std::nan("")), Error);
+}
+
+TEST(ContactStatistics, PerimeterCorrectionOfYastrebovEtAl) {
+  // (pi - 1 + ln 2)/24 = 0.1181142 (Yastrebov, Anciaux, Molinari 2017).
+  EXPECT_NEAR(kPerimeterCorrection, 0.1181142, 1e-7);
+}
+
+TEST(ContactStatistics, CountsBoundaryEdgesAndSpots) {
+  // A 3 x 3 block of contact in an 8 x 8 grid: 12 boundary edges, one spot.
+  ContactSolution solution;
+  solution.pressure = HeightMap::Zero(8, 8);
+  solution.gap = HeightMap::Constant(8, 8, 1e-9);
+  solution.pressure.block(2, 3, 3, 3).setConstant(1e8);
+  solution.gap.block(2, 3, 3, 3).setZero();
+  solution.contact_points = 9;
+  Labeller four(Topology{Connectivity::four, false, false});
+  const ContactStatistics inside = contact_statistics(solution, four);
+  EXPECT_EQ(inside.spots, 1);
+  EXPECT_DOUBLE_EQ(inside.area_fraction, 9.0 / 64);
+  EXPECT_NEAR(inside.area_fraction_corrected, (9 - 12 * kPerimeterCorrection) / 64, 1e-15);
+  EXPECT_DOUBLE_EQ(inside.max_pressure, 1e8);
+  EXPECT_NEAR(inside.mean_gap, 55e-9 / 64, 1e-24);
+
+  // The same block split by the seam in x: columns 7 and 0, 1 (3 + 6 points).
+  solution.pressure.setZero();
+  solution.pressure.block(2, 0, 3, 2).setConstant(1e8);
+  solution.pressure.block(2, 7, 3, 1).setConstant(1e8);
+  Labeller flat(Topology{Connectivity::four, false, false}), torus(Topology{Connectivity::four, true, true});
+  const ContactStatistics apart = contact_statistics(solution, flat),
+                          joined = contact_statistics(solution, torus);
+  EXPECT_EQ(apart.spots, 2);
+  EXPECT_EQ(joined.spots, 1);
+  // Not wrapping: a 3 x 2 piece (perimeter 10, of which 3 edges lie on the grid's border) and a 3 x 1 piece
+  // (perimeter 8, 3 on the border): 7 + 5 = 12 boundary edges. Wrapping: one 3 x 3 block, 12 again.
+  EXPECT_NEAR(apart.area_fraction_corrected, (9 - 12 * kPerimeterCorrection) / 64, 1e-15);
+  EXPECT_NEAR(joined.area_fraction_corrected, (9 - 12 * kPerimeterCorrection) / 64, 1e-15);
+}
+
+TEST(ContactStatistics, CorrectedAreaOfHertzIsCloserThanTheNodeCount) {
+  // Hertz as above but with a contact radius of 16 pixels, where the node count overestimates more.
+  const Index n = 96;
+  const Real dx = 1e-6, radius = 1e-3, a = 16 * dx;
+  const Real load = 4 * kModulus * a * a * a / (3 * radius);
+  const Grid grid{.nx = n, .ny = n, .lx = n * dx, .ly = n * dx, .periodic = false};
+  HeightMap h(n, n);
+  for (Index iy = 0; iy < n; ++iy)
+    for (Index ix = 0; ix < n; ++ix) {
+      const Real x = (ix - n / 2) * dx, y = (iy - n / 2) * dx;
+      h(iy, ix) = -(x * x + y * y) / (2 * radius);
+    }
+  PolonskyKeer solver(Surface(grid, h), kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
+  Labeller labeller(Topology{Connectivity::four, false, false});
+  const ContactStatistics s = contact_statistics(solver.solve(load / grid.nominal_area()), labeller);
+  const Real exact = pi * a * a / grid.nominal_area();
+  EXPECT_EQ(s.spots, 1);
+  EXPECT_LT(std::abs(s.area_fraction_corrected - exact), std::abs(s.area_fraction - exact));
+  // The correction removes the first-order boundary term: what remains is of order (dx/a)^2 ~ 0.4 %.
+  EXPECT_NEAR(s.area_fraction_corrected, exact, 0.01 * exact);
 }
 
 }  // namespace

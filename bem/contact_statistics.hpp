@@ -1,0 +1,30 @@
+// What a boundary-element solution says about the contact (THEORY.md section 6): real contact area by node
+// count and perimeter-corrected, the number of contact spots, the mean gap and the largest pressure.
+#pragma once
+
+#include <numbers>
+
+#include "bem/polonsky_keer.hpp"
+#include "core/labelling.hpp"
+
+namespace contactbench {
+
+struct ContactStatistics {
+  Real area_fraction = 0;            // contact nodes / all nodes
+  Real area_fraction_corrected = 0;  // less the perimeter term of Yastrebov, Anciaux and Molinari (2017)
+  Index spots = 0;                   // connected contact regions (labeller's topology)
+  Real mean_gap = 0;                 // [m], over all nodes (0 on the contact set)
+  Real max_pressure = 0;             // [Pa]
+};
+
+// The perimeter correction (Yastrebov, Anciaux, Molinari, Tribol. Int. 2017): counting contact nodes
+// overestimates the area by a band along the contact's edge; with S the length of the boundary between
+// contact and non-contact nodes (4-neighbour edges, across the periodic seams when the topology wraps),
+//   A_corr = A_nodes - ((pi - 1 + ln 2)/24) S dx,
+// which on rectangular pixels is ((pi - 1 + ln 2)/24) dx dy per boundary edge.
+inline constexpr Real kPerimeterCorrection = (std::numbers::pi - 1 + std::numbers::ln2) / 24;
+
+// `labeller` decides connectivity and periodicity of the spot count (and keeps its buffers between loads).
+ContactStatistics contact_statistics(const ContactSolution& solution, Labeller& labeller);
+
+}  // namespace contactbench
