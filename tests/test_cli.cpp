@@ -96,7 +96,7 @@ TEST_F(Cli, StatsOfAMeasuredFileWithItsOwnSizes) {
 }
 
 TEST_F(Cli, EveryCommandHasHelp) {
-  for (const char* command : {"--help", "generate --help", "stats --help", "sweep --help"}) {
+  for (const char* command : {"--help", "generate --help", "stats --help", "sweep --help", "bem --help"}) {
     const CommandResult help = run(command);
     EXPECT_EQ(help.status, 0) << command;
     EXPECT_NE(help.out.find("Usage"), std::string::npos) << command;
@@ -186,6 +186,54 @@ TEST_F(Cli, SweepRefusesBadOptionsNamingThem) {
   const CommandResult connectivity = run("sweep " + surface.string() + " --connectivity 6");
   EXPECT_NE(connectivity.status, 0);
   EXPECT_NE(connectivity.err.find("--connectivity"), std::string::npos) << connectivity.err;
+}
+
+TEST_F(Cli, BemWritesALoadAreaCurve) {
+  const auto surface = folder_ / "s.txt", csv = folder_ / "bem.csv";
+  ASSERT_EQ(run("generate --sigma 0.5e-6 --hurst 0.5 --qr 3.14e4 --size 200e-6 --grid 64 --seed 4 --out " +
+                surface.string())
+                .status,
+            0);
+  // Unordered on purpose: the loads are solved in increasing order.
+  const CommandResult bem = run("bem " + surface.string() + " --loads 0.01,0.001 --out " + csv.string());
+  ASSERT_EQ(bem.status, 0) << bem.err;
+  std::istringstream lines(slurp(csv));
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_NE(line.find("periodic half-space"), std::string::npos) << line;
+  std::getline(lines, line);
+  EXPECT_EQ(line.rfind("load,area_fraction,area_fraction_corrected,spots,mean_gap", 0), 0u) << line;
+  std::vector<double> load, area, corrected;
+  while (std::getline(lines, line)) {
+    std::istringstream fields(line);
+    std::string value;
+    std::vector<std::string> row;
+    while (std::getline(fields, value, ','))
+      row.push_back(value);
+    ASSERT_EQ(row.size(), 11u) << line;
+    load.push_back(std::stod(row[0]));
+    area.push_back(std::stod(row[1]));
+    corrected.push_back(std::stod(row[2]));
+    EXPECT_EQ(row[9], "1") << "not converged: " << line;
+  }
+  ASSERT_EQ(load.size(), 2u);
+  EXPECT_LT(load[0], load[1]);
+  EXPECT_LT(area[0], area[1]);       // more load, more contact
+  EXPECT_LT(corrected[0], area[0]);  // the perimeter correction only removes area
+}
+
+TEST_F(Cli, BemRefusesBadLoadsAndContradictoryFlags) {
+  const auto surface = folder_ / "s.txt";
+  ASSERT_EQ(run("generate " + kSurfaceA + " --out " + surface.string()).status, 0);
+  const CommandResult negative = run("bem " + surface.string() + " --loads 0.01,-1");
+  EXPECT_NE(negative.status, 0);
+  EXPECT_NE(negative.err.find("--loads"), std::string::npos) << negative.err;
+  const CommandResult both = run("bem " + surface.string() + " --loads 0.01 --periodic --non-periodic");
+  EXPECT_NE(both.status, 0);
+  EXPECT_NE(both.err.find("--non-periodic"), std::string::npos) << both.err;
+  const CommandResult modulus = run("bem " + surface.string() + " --loads 0.01 --modulus -5");
+  EXPECT_NE(modulus.status, 0);
+  EXPECT_NE(modulus.err.find("--modulus"), std::string::npos) << modulus.err;
 }
 
 }  // namespace
