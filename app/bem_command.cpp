@@ -58,8 +58,8 @@ void run_bem(BemOptions o) {
   if (o.topography.periodic && o.non_periodic) throw Error("--periodic and --non-periodic: give one of them");
   if (o.loads.empty()) throw Error("--loads: give at least one load P/(E* A0)");
   for (const Real load : o.loads)
-    if (!(std::isfinite(load) && load > 0))
-      throw Error("--loads: every load P/(E* A0) must be finite and > 0, got " + json_number(load));
+    if (!(std::isfinite(load) && load >= 0))
+      throw Error("--loads: every load P/(E* A0) must be finite and >= 0, got " + json_number(load));
   if (!(std::isfinite(o.modulus) && o.modulus > 0))
     throw Error("--modulus: E* must be finite and > 0 Pa, got " + json_number(o.modulus));
   std::sort(o.loads.begin(), o.loads.end());  // solved in increasing order, each warm-started

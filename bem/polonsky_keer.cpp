@@ -25,11 +25,22 @@ PolonskyKeer::PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOpt
 PolonskyKeer::~PolonskyKeer() = default;
 
 const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
-  if (!(std::isfinite(mean_pressure) && mean_pressure > 0))
-    throw Error("Polonsky-Keer: the mean pressure must be finite and > 0 Pa, got " +
+  if (!(std::isfinite(mean_pressure) && mean_pressure >= 0))
+    throw Error("Polonsky-Keer: the mean pressure must be finite and >= 0 Pa, got " +
                 std::to_string(mean_pressure));
   const auto start = std::chrono::steady_clock::now();
   const HeightMap& h = surface_.heights();
+  if (mean_pressure == 0) {
+    // No load, no contact: the flat rests at the highest point, touching nothing (the set {h > d} is empty).
+    solution_ = ContactSolution{};
+    solution_.pressure = HeightMap::Zero(h.rows(), h.cols());
+    solution_.separation = h.maxCoeff();
+    solution_.gap = solution_.separation - h;
+    solution_.converged = true;
+    warm_ = false;  // nothing to start the next load from
+    solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return solution_;
+  }
   const Index n = h.size();
   const Real total = mean_pressure * static_cast<Real>(n);  // sum of p over the nodes (pixel areas equal)
   const Real height_range = h.maxCoeff() - h.minCoeff();
@@ -94,7 +105,8 @@ const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
   solution_.contact_points = contact;
   solution_.iterations = iteration;
   solution_.change = change;
-  solution_.residual = in_contact.select(g.abs(), 0).maxCoeff() / height_range;
+  // Relative to the height range (to 1 m for a flat surface, whose range is 0).
+  solution_.residual = in_contact.select(g.abs(), 0).maxCoeff() / (height_range > 0 ? height_range : 1.0);
   solution_.converged = converged;
   solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!converged)

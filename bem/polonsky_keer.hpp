@@ -44,8 +44,8 @@ class PolonskyKeer {
   PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOptions options = {}, int threads = 1);
   ~PolonskyKeer();
 
-  // Solves for the mean pressure P/A0 [Pa] (> 0), starting from the previous solution when there is one
-  // (load stepping: solve increasing loads in order).
+  // Solves for the mean pressure P/A0 [Pa] (>= 0; 0 gives no contact), starting from the previous solution
+  // when there is one (load stepping: solve increasing loads in order).
   const ContactSolution& solve(Real mean_pressure);
 
   const ContactSolution& solution() const { return solution_; }

@@ -83,12 +83,57 @@ TEST(PolonskyKeer, WestergaardWavySurface) {
   }
 }
 
-TEST(PolonskyKeer, RefusesANonPositiveLoad) {
+TEST(PolonskyKeer, RefusesANegativeOrNanLoadAndAnswersZeroLoad) {
   const Grid grid{.nx = 8, .ny = 8, .lx = 8e-6, .ly = 8e-6, .periodic = true};
-  PolonskyKeer solver(Surface(grid, HeightMap::Random(8, 8) * 1e-7), kModulus);
-  EXPECT_THROW(solver.solve(0), Error);
+  HeightMap h = HeightMap::Zero(8, 8);
+  h(3, 4) = 1e-7;
+  PolonskyKeer solver(Surface(grid, h), kModulus);
   EXPECT_THROW(solver.solve(-1), Error);
   EXPECT_THROW(solver.solve(std::nan("")), Error);
+  // Zero load: no contact, the flat at the highest point (exactly: no arithmetic involved).
+  const ContactSolution& s = solver.solve(0);
+  EXPECT_TRUE(s.converged);
+  EXPECT_EQ(s.contact_points, 0);
+  EXPECT_EQ(s.pressure.abs().maxCoeff(), 0);
+  EXPECT_EQ(s.separation, solver.surface().heights().maxCoeff());
+  EXPECT_GE(s.gap.minCoeff(), 0);
+}
+
+TEST(PolonskyKeer, BeyondFullContactThePressureFollowsTheSurface) {
+  // h = D cos(q x) loaded above p* = pi E* D/lambda is in full contact, and then p = pbar + p* cos(q x)
+  // exactly (the fluctuating displacement must equal the surface: u(q) = 2 p(q)/(E* q)). Solver consistency:
+  // the relative pressure change converges to 1e-12, so 1e-9 of pbar is a safe bound.
+  const Index nx = 64, ny = 2;
+  const Real lambda = 64e-6, amplitude = 0.5e-6;
+  const Grid grid{.nx = nx, .ny = ny, .lx = lambda, .ly = lambda * ny / nx, .periodic = true};
+  HeightMap h(ny, nx);
+  for (Index iy = 0; iy < ny; ++iy)
+    for (Index ix = 0; ix < nx; ++ix)
+      h(iy, ix) = amplitude * std::cos(2 * pi * ix / static_cast<Real>(nx));
+  const Real p_star = pi * kModulus * amplitude / lambda, pbar = 1.5 * p_star;
+  PolonskyKeer solver(Surface(grid, h), kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
+  const ContactSolution& s = solver.solve(pbar);
+  ASSERT_TRUE(s.converged);
+  EXPECT_EQ(s.contact_points, nx * ny);
+  for (Index ix = 0; ix < nx; ++ix)
+    EXPECT_NEAR(s.pressure(0, ix), pbar + p_star * std::cos(2 * pi * ix / static_cast<Real>(nx)),
+                1e-9 * pbar);
+}
+
+TEST(PolonskyKeer, AFlatSurfaceIsInFullContact) {
+  // A flat surface touches everywhere at any load. Periodic, the pressure is uniform; non-periodic, a flat
+  // punch of the grid's size, its pressure rises towards the edges, but the mean is the load.
+  for (const bool periodic : {true, false}) {
+    const Grid grid{.nx = 16, .ny = 12, .lx = 16e-6, .ly = 12e-6, .periodic = periodic};
+    PolonskyKeer solver(Surface(grid, HeightMap::Constant(12, 16, 3e-7)), kModulus);
+    const ContactSolution& s = solver.solve(1e8);
+    ASSERT_TRUE(s.converged) << periodic;
+    EXPECT_EQ(s.contact_points, 16 * 12) << periodic;
+    if (periodic) {
+      EXPECT_LT((s.pressure - 1e8).abs().maxCoeff(), 1e-9 * 1e8);
+    }
+    EXPECT_NEAR(s.pressure.mean(), 1e8, 1e-12 * 1e8);  // imposed at every iteration
+  }
 }
 
 TEST(ContactStatistics, PerimeterCorrectionOfYastrebovEtAl) {
