@@ -1,0 +1,120 @@
+// The boundary-element solver on the paper's surface A (Table 1, 256 x 256 realisation) refined to n points
+// a side by Fourier interpolation. Names: bem/<periodic|nonperiodic>/n:<n>/<solve|curve>, and the physical
+// reference bem/fft_pair/n:<N> (one r2c + c2r pair of the padded size N the operator transforms: n periodic,
+// 2n non-periodic). Counters: iterations, ms_per_iteration, fft_pairs_per_iteration (one iteration's time
+// over the time of one FFT pair of the same size, measured in this binary just before). All on kThreads
+// threads.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "bem/polonsky_keer.hpp"
+#include "bench/bench_surfaces.hpp"
+#include "core/fft.hpp"
+#include "core/generation.hpp"
+
+namespace contactbench::bench {
+namespace {
+
+const Index kSizes[] = {256, 1024, 2048};
+constexpr Real kModulus = 100e9 / (1 - 0.3 * 0.3);
+constexpr Real kLoad = 0.01;  // P/(E* A0), for a single solve
+
+const Surface& refined_surface_a(Index n) {
+  static std::map<Index, std::unique_ptr<Surface>> cache;
+  auto& slot = cache[n];
+  if (!slot) {
+    const Grid grid = paper::grid();
+    slot = std::make_unique<Surface>(
+        synthesize(grid, generate_coefficients(grid, paper::surface_a(), 1), n, n, kThreads));
+  }
+  return *slot;
+}
+
+// Median-free but stable: the best of a few FFT pairs of the padded size, in ms.
+double fft_pair_ms(Index size) {
+  static std::map<Index, double> cache;
+  auto& slot = cache[size];
+  if (slot == 0) {
+    RealFft2d fft(size, size, kThreads);
+    fft.real().setRandom();
+    double best = 1e300;
+    for (int repeat = 0; repeat < 5; ++repeat) {
+      const auto start = std::chrono::steady_clock::now();
+      fft.forward();
+      fft.backward();
+      best = std::min(
+          best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    slot = best;
+  }
+  return slot;
+}
+
+void fft_pair(benchmark::State& state, Index size) {
+  RealFft2d fft(size, size, kThreads);
+  fft.real().setRandom();
+  for (auto _ : state) {
+    fft.forward();
+    fft.backward();
+    benchmark::DoNotOptimize(fft.real().data());
+  }
+}
+
+void solve(benchmark::State& state, Index n, bool periodic, bool curve) {
+  const Surface surface = refined_surface_a(n).with_periodic(periodic);
+  const Index padded = periodic ? n : 2 * n;
+  const double pair_ms = fft_pair_ms(padded);
+  Index iterations = 0;
+  double seconds = 0;
+  for (auto _ : state) {
+    PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-8, .max_iterations = 20000}, kThreads);
+    iterations = 0;
+    seconds = 0;
+    if (curve) {
+      for (int k = 1; k <= 10; ++k) {  // 10 loads from 0.001 to 0.01, each warm-started from the last
+        const ContactSolution& s = solver.solve(kModulus * 0.001 * k);
+        iterations += s.iterations;
+        seconds += s.seconds;
+      }
+    } else {
+      const ContactSolution& s = solver.solve(kModulus * kLoad);
+      iterations = s.iterations;
+      seconds = s.seconds;
+    }
+  }
+  const double ms_per_iteration = 1e3 * seconds / static_cast<double>(std::max<Index>(iterations, 1));
+  state.counters["iterations"] = static_cast<double>(iterations);
+  state.counters["ms_per_iteration"] = ms_per_iteration;
+  state.counters["fft_pairs_per_iteration"] = ms_per_iteration / pair_ms;
+}
+
+void register_all() {
+  for (const Index n : kSizes) {
+    for (const bool periodic : {true, false}) {
+      const Index padded = periodic ? n : 2 * n;
+      benchmark::RegisterBenchmark(("bem/fft_pair/n:" + std::to_string(padded)).c_str(), fft_pair, padded)
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
+      for (const bool curve : {false, true}) {
+        const std::string name = std::string("bem/") + (periodic ? "periodic" : "nonperiodic") +
+                                 "/n:" + std::to_string(n) + (curve ? "/curve" : "/solve");
+        benchmark::RegisterBenchmark(name.c_str(), solve, n, periodic, curve)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime()
+            ->Iterations(1);  // seconds to minutes a run at the larger sizes
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace contactbench::bench
+
+int main(int argc, char** argv) {
+  contactbench::bench::register_all();
+  return contactbench::bench::run_benchmarks(argc, argv);
+}
