@@ -7,10 +7,10 @@
 
 #include "app/cli.hpp"
 #include "app/json_writer.hpp"
+#include "app/output.hpp"
 #include "app/topography_options.hpp"
 #include "bem/contact_statistics.hpp"
 #include "bem/polonsky_keer.hpp"
-#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 
 namespace contactbench {
@@ -81,11 +81,7 @@ void run_bem(BemOptions o) {
       std::cerr << "contactbench bem: load " << k + 1 << " of " << o.loads.size() << " (" << o.loads[k]
                 << "): " << solution.iterations << " iterations, " << solution.seconds << " s\n";
   }
-  if (o.out.empty()) {
-    write_csv(std::cout, rows, o, surface);
-  } else {
-    write_file_atomically(o.out, [&](std::ostream& out) { write_csv(out, rows, o, surface); });
-  }
+  write_output(o.out, [&](std::ostream& out) { write_csv(out, rows, o, surface); });
 }
 
 }  // namespace

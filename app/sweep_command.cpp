@@ -5,8 +5,8 @@
 
 #include "app/cli.hpp"
 #include "app/json_writer.hpp"
+#include "app/output.hpp"
 #include "app/topography_options.hpp"
-#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/sweep.hpp"
 
@@ -47,11 +47,7 @@ void run_sweep(const SweepOptions& o) {
   const Topology topology = Topology::for_surface(
       o.connectivity == 8 ? Connectivity::eight : Connectivity::four, surface.grid().periodic);
   const SweepCurve curve = sweep(surface, levels, topology, o.threads);
-  if (o.out.empty()) {
-    write_csv(std::cout, curve, o.topography.file);
-  } else {
-    write_file_atomically(o.out, [&](std::ostream& out) { write_csv(out, curve, o.topography.file); });
-  }
+  write_output(o.out, [&](std::ostream& out) { write_csv(out, curve, o.topography.file); });
 }
 
 }  // namespace

@@ -15,12 +15,9 @@ namespace {
 constexpr Real pi = std::numbers::pi;
 constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* [Pa]
 
-TEST(PolonskyKeer, HertzContactOfASphere) {
-  // A sphere of radius R on a 128 x 128 non-periodic grid of 1 um pixels, loaded so that the Hertz contact
-  // radius a = (3 P R/(4 E*))^(1/3) is 32 pixels.
-  const Index n = 128;
-  const Real dx = 1e-6, radius = 1e-3, a = 32 * dx;
-  const Real load = 4 * kModulus * a * a * a / (3 * radius);
+// A sphere of radius R (its paraboloidal cap, h = -r^2/(2R)) centred on an n x n non-periodic grid of pixels
+// dx.
+Surface sphere(Index n, Real dx, Real radius) {
   const Grid grid{.nx = n, .ny = n, .lx = n * dx, .ly = n * dx, .periodic = false};
   HeightMap h(n, n);
   for (Index iy = 0; iy < n; ++iy)
@@ -28,7 +25,18 @@ TEST(PolonskyKeer, HertzContactOfASphere) {
       const Real x = (ix - n / 2) * dx, y = (iy - n / 2) * dx;
       h(iy, ix) = -(x * x + y * y) / (2 * radius);
     }
-  PolonskyKeer solver(Surface(grid, h), kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
+  return Surface(grid, h);
+}
+
+TEST(PolonskyKeer, HertzContactOfASphere) {
+  // A sphere of radius R on a 128 x 128 non-periodic grid of 1 um pixels, loaded so that the Hertz contact
+  // radius a = (3 P R/(4 E*))^(1/3) is 32 pixels.
+  const Index n = 128;
+  const Real dx = 1e-6, radius = 1e-3, a = 32 * dx;
+  const Real load = 4 * kModulus * a * a * a / (3 * radius);
+  const Surface surface = sphere(n, dx, radius);
+  const Grid& grid = surface.grid();
+  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
   const ContactSolution& s = solver.solve(load / grid.nominal_area());
   ASSERT_TRUE(s.converged) << s.iterations << " iterations, change " << s.change;
   // Complementarity: the gap on the contact set is zero to far below the pixel scale.
@@ -177,14 +185,9 @@ TEST(ContactStatistics, CorrectedAreaOfHertzIsCloserThanTheNodeCount) {
   const Index n = 96;
   const Real dx = 1e-6, radius = 1e-3, a = 16 * dx;
   const Real load = 4 * kModulus * a * a * a / (3 * radius);
-  const Grid grid{.nx = n, .ny = n, .lx = n * dx, .ly = n * dx, .periodic = false};
-  HeightMap h(n, n);
-  for (Index iy = 0; iy < n; ++iy)
-    for (Index ix = 0; ix < n; ++ix) {
-      const Real x = (ix - n / 2) * dx, y = (iy - n / 2) * dx;
-      h(iy, ix) = -(x * x + y * y) / (2 * radius);
-    }
-  PolonskyKeer solver(Surface(grid, h), kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
+  const Surface surface = sphere(n, dx, radius);
+  const Grid& grid = surface.grid();
+  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
   Labeller labeller(Topology{Connectivity::four, false, false});
   const ContactStatistics s = contact_statistics(solver.solve(load / grid.nominal_area()), labeller);
   const Real exact = pi * a * a / grid.nominal_area();
