@@ -28,6 +28,16 @@ Surface sphere(Index n, Real dx, Real radius) {
   return Surface(grid, h);
 }
 
+// h = D cos(2 pi x/lambda) on nx x ny periodic points over one wavelength (rows identical).
+Surface cosine_strip(Index nx, Index ny, Real lambda, Real amplitude) {
+  const Grid grid{.nx = nx, .ny = ny, .lx = lambda, .ly = lambda * ny / nx, .periodic = true};
+  HeightMap h(ny, nx);
+  for (Index iy = 0; iy < ny; ++iy)
+    for (Index ix = 0; ix < nx; ++ix)
+      h(iy, ix) = amplitude * std::cos(2 * pi * ix / static_cast<Real>(nx));
+  return Surface(grid, h);
+}
+
 TEST(PolonskyKeer, HertzContactOfASphere) {
   // A sphere of radius R on a 128 x 128 non-periodic grid of 1 um pixels, loaded so that the Hertz contact
   // radius a = (3 P R/(4 E*))^(1/3) is 32 pixels.
@@ -62,13 +72,9 @@ TEST(PolonskyKeer, WestergaardWavySurface) {
   // p(x) = [2 pbar cos(pi x/lambda)/sin^2(pi a/lambda)] sqrt(sin^2(pi a/lambda) - sin^2(pi x/lambda)).
   const Index nx = 256, ny = 4;
   const Real lambda = 100e-6, amplitude = 1e-6;
-  const Grid grid{.nx = nx, .ny = ny, .lx = lambda, .ly = lambda * ny / nx, .periodic = true};
-  HeightMap h(ny, nx);
-  for (Index iy = 0; iy < ny; ++iy)
-    for (Index ix = 0; ix < nx; ++ix)
-      h(iy, ix) = amplitude * std::cos(2 * pi * ix / static_cast<Real>(nx));
+  const Surface surface = cosine_strip(nx, ny, lambda, amplitude);
   const Real p_star = pi * kModulus * amplitude / lambda;
-  PolonskyKeer solver(Surface(grid, h), kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
+  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
   for (const Real fraction : {0.1, 0.3, 0.6}) {  // increasing loads, warm-started
     const ContactSolution& s = solver.solve(fraction * p_star);
     ASSERT_TRUE(s.converged) << fraction;
@@ -113,13 +119,9 @@ TEST(PolonskyKeer, BeyondFullContactThePressureFollowsTheSurface) {
   // the relative pressure change converges to 1e-12, so 1e-9 of pbar is a safe bound.
   const Index nx = 64, ny = 2;
   const Real lambda = 64e-6, amplitude = 0.5e-6;
-  const Grid grid{.nx = nx, .ny = ny, .lx = lambda, .ly = lambda * ny / nx, .periodic = true};
-  HeightMap h(ny, nx);
-  for (Index iy = 0; iy < ny; ++iy)
-    for (Index ix = 0; ix < nx; ++ix)
-      h(iy, ix) = amplitude * std::cos(2 * pi * ix / static_cast<Real>(nx));
+  const Surface surface = cosine_strip(nx, ny, lambda, amplitude);
   const Real p_star = pi * kModulus * amplitude / lambda, pbar = 1.5 * p_star;
-  PolonskyKeer solver(Surface(grid, h), kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
+  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
   const ContactSolution& s = solver.solve(pbar);
   ASSERT_TRUE(s.converged);
   EXPECT_EQ(s.contact_points, nx * ny);
