@@ -45,28 +45,68 @@ std::string json_number(double value) {
   return std::string(buffer, result.ptr);
 }
 
+void JsonObject::add_scalar(std::string_view key, std::string text) {
+  Member member;
+  member.key = key;
+  member.scalar = std::move(text);
+  members_.push_back(std::move(member));
+}
+
 JsonObject& JsonObject::add(std::string_view key, double value) {
-  members_.push_back({std::string(key), json_number(value), nullptr});
+  add_scalar(key, json_number(value));
   return *this;
 }
 
 JsonObject& JsonObject::add(std::string_view key, long long value) {
-  members_.push_back({std::string(key), std::to_string(value), nullptr});
+  add_scalar(key, std::to_string(value));
   return *this;
 }
 
 JsonObject& JsonObject::add(std::string_view key, bool value) {
-  members_.push_back({std::string(key), value ? "true" : "false", nullptr});
+  add_scalar(key, value ? "true" : "false");
   return *this;
 }
 
 JsonObject& JsonObject::add(std::string_view key, std::string_view value) {
-  members_.push_back({std::string(key), json_quote(value), nullptr});
+  add_scalar(key, json_quote(value));
   return *this;
 }
 
 JsonObject& JsonObject::add(std::string_view key, JsonObject nested) {
-  members_.push_back({std::string(key), "", std::make_shared<JsonObject>(std::move(nested))});
+  Member member;
+  member.key = key;
+  member.object = std::make_shared<JsonObject>(std::move(nested));
+  members_.push_back(std::move(member));
+  return *this;
+}
+
+JsonObject& JsonObject::add(std::string_view key, std::span<const double> values) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < values.size(); ++i)
+    text += (i == 0 ? "" : ", ") + json_number(values[i]);
+  add_scalar(key, text + "]");
+  return *this;
+}
+
+JsonObject& JsonObject::add(std::string_view key, std::vector<JsonObject> objects) {
+  Member member;
+  member.key = key;
+  member.objects = std::move(objects);
+  member.is_array = true;
+  members_.push_back(std::move(member));
+  return *this;
+}
+
+JsonObject& JsonObject::add_strings(std::string_view key, const std::vector<std::string>& values) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < values.size(); ++i)
+    text += (i == 0 ? "" : ", ") + json_quote(values[i]);
+  add_scalar(key, text + "]");
+  return *this;
+}
+
+JsonObject& JsonObject::add_raw(std::string_view key, std::string json) {
+  add_scalar(key, std::move(json));
   return *this;
 }
 
@@ -76,7 +116,15 @@ std::string JsonObject::render(int level) const {
   for (std::size_t i = 0; i < members_.size(); ++i) {
     const Member& m = members_[i];
     out += (i == 0 ? "\n" : ",\n") + pad + json_quote(m.key) + ": ";
-    out += m.object ? m.object->render(level + 1) : m.scalar;
+    if (m.is_array) {
+      const std::string item_pad(2 * (level + 2), ' ');
+      out += "[";
+      for (std::size_t k = 0; k < m.objects.size(); ++k)
+        out += (k == 0 ? "\n" : ",\n") + item_pad + m.objects[k].render(level + 2);
+      out += m.objects.empty() ? "]" : "\n" + pad + "]";
+    } else {
+      out += m.object ? m.object->render(level + 1) : m.scalar;
+    }
   }
   out += members_.empty() ? "}" : "\n" + std::string(2 * level, ' ') + "}";
   return out;

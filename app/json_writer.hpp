@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -20,6 +21,11 @@ class JsonObject {
   JsonObject& add(std::string_view key, std::string_view value);
   JsonObject& add(std::string_view key, const char* value) { return add(key, std::string_view(value)); }
   JsonObject& add(std::string_view key, JsonObject nested);
+  JsonObject& add(std::string_view key, std::span<const double> values);   // an array of numbers, one line
+  JsonObject& add(std::string_view key, std::vector<JsonObject> objects);  // an array of objects
+  JsonObject& add_strings(std::string_view key, const std::vector<std::string>& values);
+  // A value that is already JSON (e.g. a document another writer made), inserted as it is.
+  JsonObject& add_raw(std::string_view key, std::string json);
 
   // The object, one member per line, nested objects indented two spaces per level.
   std::string str() const { return render(0); }
@@ -27,9 +33,12 @@ class JsonObject {
  private:
   struct Member {
     std::string key;
-    std::string scalar;                  // rendered value, or empty when `object` is set
+    std::string scalar;                  // rendered value, or empty when `object` or `objects` is set
     std::shared_ptr<JsonObject> object;  // a nested object
+    std::vector<JsonObject> objects;     // an array of objects (when is_array)
+    bool is_array = false;
   };
+  void add_scalar(std::string_view key, std::string text);
   std::string render(int level) const;
   std::vector<Member> members_;
 };

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/generation.hpp"
 #include "core/sweep.hpp"
 #include "theories/plateau_model.hpp"
@@ -272,6 +273,29 @@ TEST(PlateauModel, PaperLevelsApproachTheExactSum) {
                      std::to_string(error[0] / scale) + " " + std::to_string(error[1] / scale));
     }
   }
+}
+
+// Sampling at requested loads is exact: at a level's own load the answer is that level's row, and a load
+// between two levels has the lower level's area and the separation where the linear P(z) reaches it, which
+// load_at inverts to round-off (1e-12 relative: one division and one product).
+TEST(PlateauModel, CurveAtLoadsIsExactBetweenLevels) {
+  const SweepCurve sweep_curve =
+      sweep(random_surface(32, 5), SweepLevels::exact(), Topology::for_surface(Connectivity::four, true));
+  const LoadAreaCurve model = plateau_model(sweep_curve);
+  const std::size_t j = model.load.size() / 2;
+  const Real between = 0.5 * (model.load[j - 1] + model.load[j]);
+  const std::vector<Real> loads{between, model.load[j], 2 * model.load.back()};
+  const LoadAreaCurve at = plateau_curve_at_loads(model, loads);
+  ASSERT_EQ(at.load.size(), 3u);
+  EXPECT_EQ(at.area_fraction[0], model.area_fraction[j]);
+  EXPECT_EQ(at.spots[0], model.spots[j]);
+  EXPECT_NEAR(load_at(model, at.separation[0]), between, 1e-12 * between);
+  EXPECT_EQ(at.area_fraction[1], model.area_fraction[j]);
+  EXPECT_NEAR(at.separation[1], model.separation[j], 1e-12 * std::abs(model.separation[j]));
+  // Beyond the lowest level there is no answer, and the parameters say so.
+  EXPECT_TRUE(std::isnan(at.area_fraction[2]));
+  EXPECT_NE(at.parameters.find("no answer"), std::string::npos) << at.parameters;
+  EXPECT_THROW(plateau_curve_at_loads(model, std::vector<Real>{-1.0}), Error);
 }
 
 }  // namespace

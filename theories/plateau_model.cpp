@@ -1,7 +1,11 @@
 #include "theories/plateau_model.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+
+#include "theories/load_solver.hpp"
 
 namespace contactbench {
 
@@ -28,6 +32,38 @@ LoadAreaCurve plateau_model(const SweepCurve& sweep) {
     curve.area_fraction.push_back(sweep.area_fraction[j]);
     curve.spots.push_back(static_cast<Real>(sweep.spots[j]));
   }
+  return curve;
+}
+
+LoadAreaCurve plateau_curve_at_loads(const LoadAreaCurve& model, std::span<const Real> loads) {
+  validate_loads(loads, model.method);
+  LoadAreaCurve curve;
+  curve.method = model.method;
+  curve.parameters = model.parameters;
+  curve.seconds = model.seconds;
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  const Real highest = model.load.empty() ? 0 : model.load.back();
+  for (const Real load : loads) {
+    curve.load.push_back(load);
+    if (!(load <= highest)) {
+      curve.area_fraction.push_back(nan);
+      curve.separation.push_back(nan);
+      curve.spots.push_back(nan);
+      continue;
+    }
+    // The first level whose load reaches the request; j >= 1 because the first level carries no load.
+    const auto j = static_cast<std::size_t>(std::lower_bound(model.load.begin(), model.load.end(), load) -
+                                            model.load.begin());
+    const Real step = model.load[j] - model.load[j - 1];
+    const Real fraction = step > 0 ? (load - model.load[j - 1]) / step : 1;
+    curve.separation.push_back(model.separation[j - 1] +
+                               fraction * (model.separation[j] - model.separation[j - 1]));
+    curve.area_fraction.push_back(model.area_fraction[j]);
+    curve.spots.push_back(model.spots[j]);
+  }
+  if (!loads.empty() && loads.back() > highest)
+    curve.parameters += "; no answer (NaN) for loads above " + format_number(highest) +
+                        ", the load at the lowest level swept";
   return curve;
 }
 

@@ -6,6 +6,8 @@
 // The model ignores interaction between spots and takes the bearing area as the real area.
 #pragma once
 
+#include <span>
+
 #include "core/load_area_curve.hpp"
 #include "core/sweep.hpp"
 
@@ -16,5 +18,12 @@ namespace contactbench {
 // distinct height) A_c N is constant there and the sum is the integral exactly; for the paper's or uniform
 // levels it is the right-endpoint Riemann sum with the level step. Loads are P/(E* A0), so E* drops out.
 LoadAreaCurve plateau_model(const SweepCurve& sweep);
+
+// The model's curve (as plateau_model returns it) at requested loads P/(E* A0) (finite, > 0, ascending),
+// exactly, without interpolation error: P(z) is linear in z between two levels and the contact set there is
+// the one of the lower level (see above), so a load in (P[j-1], P[j]] has the area and spots of level j and a
+// separation linear between z[j-1] and z[j]. Loads beyond the last level's (the paper's levels stop at the
+// mean plane) get NaN, and the parameters say from which load.
+LoadAreaCurve plateau_curve_at_loads(const LoadAreaCurve& model, std::span<const Real> loads);
 
 }  // namespace contactbench
