@@ -118,5 +118,6 @@ Scene read_scene(const std::filesystem::path& path);
 // The scene as understood, defaults filled in, as TOML that parse_scene accepts again (for summary.json's
 // record and for users to copy).
 std::string to_toml(const Scene& scene);
+std::string to_json(const Scene& scene);
 
 }  // namespace contactbench

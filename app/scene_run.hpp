@@ -34,9 +34,9 @@ struct MethodResult {
 
 struct SceneReport {
   Scene scene;
-  Grid grid;                  // of the scene's surface (before any refinement a method asks for)
-  SpectralMoments moments;    // of the scene's surface (profile moments, THEORY.md section 1)
-  std::vector<StageRecord> stages;  // every stage that ran, in order
+  Grid grid;                          // of the scene's surface (before any refinement a method asks for)
+  SpectralMoments moments;            // of the scene's surface (profile moments, THEORY.md section 1)
+  std::vector<StageRecord> stages;    // every stage that ran, in order
   std::vector<MethodResult> methods;  // in the scene's order
   int threads = 1;
   double seconds = 0;  // the whole run

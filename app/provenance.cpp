@@ -1,0 +1,45 @@
+#include "app/provenance.hpp"
+
+#include <unistd.h>
+
+#include <array>
+#include <ctime>
+#include <fstream>
+
+#include "contactbench/build_info.hpp"
+
+namespace contactbench {
+
+namespace {
+
+std::string cpu_model() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpuinfo, line))
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
+    }
+  return "unknown CPU";
+}
+
+}  // namespace
+
+Provenance current_provenance(int threads, const std::string& command) {
+  Provenance p;
+  p.commit = CB_GIT_COMMIT;
+  const std::time_t now = std::time(nullptr);
+  std::array<char, 32> date{};
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  std::strftime(date.data(), date.size(), "%Y-%m-%dT%H:%M:%SZ", &utc);
+  p.date = date.data();
+  p.threads = threads;
+  std::array<char, 256> host{};
+  if (gethostname(host.data(), host.size() - 1) != 0) host[0] = '\0';
+  p.machine = std::string(host.data()) + " (" + cpu_model() + ")";
+  p.command = command;
+  return p;
+}
+
+}  // namespace contactbench

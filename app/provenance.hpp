@@ -1,0 +1,18 @@
+// How a result was made: commit, date, threads, machine and command, stamped on every file in results/.
+#pragma once
+
+#include <string>
+
+namespace contactbench {
+
+struct Provenance {
+  std::string commit;  // git commit of the build ("-dirty" when the tree had changes), or "unknown"
+  std::string date;    // UTC, ISO 8601
+  int threads = 1;
+  std::string machine;  // host name and CPU model
+  std::string command;  // the command line that made the result
+};
+
+Provenance current_provenance(int threads, const std::string& command);
+
+}  // namespace contactbench

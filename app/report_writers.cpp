@@ -1,0 +1,185 @@
+#include "app/report_writers.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "app/json_writer.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+
+namespace contactbench {
+
+namespace {
+
+// Every method's own column names, in order of first appearance.
+std::vector<std::string> extra_columns(const SceneReport& report) {
+  std::vector<std::string> names;
+  for (const MethodResult& m : report.methods)
+    for (const auto& column : m.columns)
+      if (std::find(names.begin(), names.end(), column.first) == names.end()) names.push_back(column.first);
+  return names;
+}
+
+std::string csv_number(Real value) {
+  return std::isfinite(value) ? json_number(value) : "";
+}
+
+// A number for a Markdown table: 4 significant digits, "n/a" where a method has no answer.
+std::string table_number(Real value, const char* format = "%.4g") {
+  if (!std::isfinite(value)) return "n/a";
+  char text[32];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+
+std::string percent(Real value) {
+  if (!std::isfinite(value)) return "n/a";
+  char text[32];
+  std::snprintf(text, sizeof text, "%+.1f %%", 100 * value);
+  return text;
+}
+
+std::string stamp(const Provenance& p) {
+  return "commit " + p.commit + ", " + p.date + ", " + std::to_string(p.threads) + " threads, " + p.machine;
+}
+
+JsonObject provenance_json(const Provenance& p) {
+  JsonObject o;
+  o.add("commit", p.commit).add("date", p.date).add("threads", p.threads).add("machine", p.machine);
+  o.add("command", p.command);
+  return o;
+}
+
+}  // namespace
+
+void write_curves_csv(std::ostream& out, const SceneReport& report, const Provenance& provenance) {
+  const std::vector<std::string> extras = extra_columns(report);
+  out << "# contactbench run of scene " << report.scene.name << " (" << stamp(provenance)
+      << "): " << provenance.command
+      << "\n# load = P/(E* A0); separation [m]; empty cells: the method has no such value\n";
+  out << "method,separation,load,area_fraction,spots";
+  for (const std::string& name : extras)
+    out << ',' << name;
+  out << '\n';
+  for (const MethodResult& m : report.methods)
+    for (std::size_t k = 0; k < m.curve.load.size(); ++k) {
+      out << m.label << ',' << csv_number(m.curve.separation.empty() ? NAN : m.curve.separation[k]) << ','
+          << csv_number(m.curve.load[k]) << ',' << csv_number(m.curve.area_fraction[k]) << ','
+          << csv_number(m.curve.spots.empty() ? NAN : m.curve.spots[k]);
+      for (const std::string& name : extras) {
+        out << ',';
+        for (const auto& [column, values] : m.columns)
+          if (column == name) out << csv_number(values[k]);
+      }
+      out << '\n';
+    }
+}
+
+void write_summary_json(std::ostream& out, const SceneReport& report, const Comparison& comparison,
+                        const Provenance& provenance) {
+  JsonObject root;
+  root.add("scene", report.scene.name);
+  root.add_raw("scene_as_understood", to_json(report.scene));
+  root.add("provenance", provenance_json(provenance));
+  JsonObject surface;
+  surface.add("nx", static_cast<long long>(report.grid.nx)).add("ny", static_cast<long long>(report.grid.ny));
+  surface.add("lx", report.grid.lx).add("ly", report.grid.ly).add("periodic", report.grid.periodic);
+  surface.add("m0", report.moments.m0).add("m2x", report.moments.m2x).add("m2y", report.moments.m2y);
+  surface.add("m4x", report.moments.m4x).add("m4y", report.moments.m4y);
+  surface.add("rms_gradient", comparison.rms_gradient);
+  root.add("surface", std::move(surface));
+  std::vector<JsonObject> stages;
+  for (const StageRecord& s : report.stages) {
+    JsonObject o;
+    o.add("name", s.name).add("seconds", s.seconds);
+    stages.push_back(std::move(o));
+  }
+  root.add("stages", std::move(stages));
+  root.add("reference", comparison.reference);
+  root.add("kappa_load", comparison.kappa_load);
+  root.add("loads", std::span<const double>(report.scene.loads));
+  std::vector<JsonObject> methods;
+  for (std::size_t m = 0; m < report.methods.size(); ++m) {
+    const MethodResult& r = report.methods[m];
+    const MethodComparison& c = comparison.methods[m];
+    JsonObject o;
+    o.add("label", r.label).add("method", to_string(r.kind)).add("parameters", r.curve.parameters);
+    o.add("seconds", r.seconds).add("kappa", c.kappa);
+    if (c.kappa_nodes) o.add("kappa_nodes", *c.kappa_nodes);
+    o.add("area_fraction", std::span<const double>(r.curve.area_fraction));
+    o.add("relative_error", std::span<const double>(c.relative_error));
+    o.add("max_abs_relative_error", c.max_abs_relative_error).add("rms_relative_error", c.rms_relative_error);
+    methods.push_back(std::move(o));
+  }
+  root.add("methods", std::move(methods));
+  root.add("seconds", report.seconds);
+  out << root.str() << '\n';
+}
+
+void write_table_md(std::ostream& out, const SceneReport& report, const Comparison& comparison,
+                    const Provenance& provenance) {
+  out << "# " << report.scene.name << ": real contact area against load\n\n";
+  if (!report.scene.description.empty()) out << report.scene.description << "\n\n";
+  out << "Surface " << report.grid.nx << " x " << report.grid.ny << " points, "
+      << table_number(report.grid.lx * 1e6) << " x " << table_number(report.grid.ly * 1e6) << " um, "
+      << (report.grid.periodic ? "periodic" : "non-periodic")
+      << "; E* = " << table_number(report.scene.material.estar)
+      << " Pa; areal rms gradient gbar = " << table_number(comparison.rms_gradient)
+      << ". Loads are P/(E* A0); kappa is the areal kappa (A/A0)/(p/(E* gbar)) at the smallest load, "
+      << table_number(comparison.kappa_load) << " (THEORY.md section 0)."
+      << (comparison.reference.empty()
+              ? std::string(" No reference: no errors.")
+              : " Errors are relative to " + comparison.reference + ", load by load.")
+      << "\n\n";
+  out << "| method | parameters | time [s] | kappa | max abs error | rms error "
+         "|\n|---|---|---:|---:|---:|---:|\n";
+  for (std::size_t m = 0; m < report.methods.size(); ++m) {
+    const MethodResult& r = report.methods[m];
+    const MethodComparison& c = comparison.methods[m];
+    out << "| " << r.label << " | " << r.curve.parameters << " | " << table_number(r.seconds, "%.3g") << " | "
+        << table_number(c.kappa, "%.3f");
+    if (c.kappa_nodes) out << " (nodes " << table_number(*c.kappa_nodes, "%.3f") << ")";
+    out << " | " << (r.label == comparison.reference ? "reference" : percent(c.max_abs_relative_error))
+        << " | " << (r.label == comparison.reference ? "" : percent(c.rms_relative_error)) << " |\n";
+  }
+  out << "\nA/A0 at each load" << (comparison.reference.empty() ? "" : " (relative error to the reference)")
+      << ":\n\n| P/(E* A0) |";
+  for (const MethodResult& r : report.methods)
+    out << ' ' << r.label << " |";
+  out << "\n|---:|";
+  for (std::size_t m = 0; m < report.methods.size(); ++m)
+    out << "---:|";
+  out << '\n';
+  for (std::size_t k = 0; k < report.scene.loads.size(); ++k) {
+    out << "| " << table_number(report.scene.loads[k], "%.3g") << " |";
+    for (std::size_t m = 0; m < report.methods.size(); ++m) {
+      const MethodResult& r = report.methods[m];
+      out << ' ' << table_number(r.curve.area_fraction[k]);
+      if (!comparison.methods[m].relative_error.empty() && r.label != comparison.reference)
+        out << " (" << percent(comparison.methods[m].relative_error[k]) << ")";
+      out << " |";
+    }
+    out << '\n';
+  }
+  out << "\nStages that ran:";
+  for (const StageRecord& s : report.stages)
+    out << ' ' << s.name << " " << table_number(s.seconds, "%.3g") << " s;";
+  out << "\n\nMade by `" << provenance.command << "` (" << stamp(provenance) << ").\n";
+}
+
+void write_report(const std::filesystem::path& folder, const SceneReport& report,
+                  const Comparison& comparison, const Provenance& provenance) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) throw Error("cannot create the output folder " + folder.string() + ": " + error.message());
+  write_file_atomically(folder / "curves.csv",
+                        [&](std::ostream& out) { write_curves_csv(out, report, provenance); });
+  write_file_atomically(folder / "summary.json",
+                        [&](std::ostream& out) { write_summary_json(out, report, comparison, provenance); });
+  write_file_atomically(folder / "table.md",
+                        [&](std::ostream& out) { write_table_md(out, report, comparison, provenance); });
+}
+
+}  // namespace contactbench

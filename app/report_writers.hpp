@@ -1,0 +1,32 @@
+// The files a scene's run leaves (issue: curves.csv, summary.json, table.md), each made from the report and
+// its comparison alone, and each written to a temporary name and renamed when complete.
+#pragma once
+
+#include <filesystem>
+#include <ostream>
+
+#include "app/comparison.hpp"
+#include "app/provenance.hpp"
+#include "app/scene_run.hpp"
+
+namespace contactbench {
+
+// One row per method and load: method, separation, load, area_fraction, spots, then every method's own
+// columns (empty where a method has none). Comment lines (#) first: what made it.
+void write_curves_csv(std::ostream& out, const SceneReport& report, const Provenance& provenance);
+
+// The scene as understood (defaults filled in), provenance, the stages that ran and their cost, and per
+// method its wall time, its errors against the reference and its areal kappa.
+void write_summary_json(std::ostream& out, const SceneReport& report, const Comparison& comparison,
+                        const Provenance& provenance);
+
+// The comparison a person would paste into a paper: per method its time, kappa and errors; then A/A0 of
+// every method at every load.
+void write_table_md(std::ostream& out, const SceneReport& report, const Comparison& comparison,
+                    const Provenance& provenance);
+
+// All of the above into `folder` (created if needed): curves.csv, summary.json, table.md.
+void write_report(const std::filesystem::path& folder, const SceneReport& report,
+                  const Comparison& comparison, const Provenance& provenance);
+
+}  // namespace contactbench

@@ -1,0 +1,66 @@
+// contactbench run SCENE: the paper's comparison for any surface (issue: scenes, the comparison run).
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "app/cli.hpp"
+#include "app/comparison.hpp"
+#include "app/load_area_plots.hpp"
+#include "app/provenance.hpp"
+#include "app/report_writers.hpp"
+#include "app/scene.hpp"
+#include "app/scene_run.hpp"
+
+namespace contactbench {
+
+namespace {
+
+struct RunCommandOptions {
+  std::string scene;
+  std::string out;  // default results/<name>/
+  int threads = 1;
+  bool plots = true;
+  bool quiet = false;
+};
+
+void run_command(const RunCommandOptions& o) {
+  const Scene scene = read_scene(o.scene);  // everything validated before any work
+  const std::filesystem::path folder =
+      o.out.empty() ? std::filesystem::path("results") / scene.name : std::filesystem::path(o.out);
+  std::string command = "contactbench run " + o.scene + " --threads " + std::to_string(o.threads);
+  if (!o.out.empty()) command += " --out " + o.out;
+  if (!o.plots) command += " --no-plots";
+
+  const SceneReport report =
+      run_scene(scene, {.threads = o.threads, .progress = o.quiet ? nullptr : &std::cerr});
+  const Comparison comparison = compare(report);
+  const Provenance provenance = current_provenance(o.threads, command);
+  write_report(folder, report, comparison, provenance);
+  if (o.plots) draw_load_area_plots(folder, report, std::cerr);
+  if (!o.quiet) {
+    write_table_md(std::cout, report, comparison, provenance);
+    std::cout << "\nWritten to " << folder.string() << "/ (curves.csv, summary.json, table.md"
+              << (o.plots ? ", load_area.png, load_area.svg" : "") << ").\n";
+  }
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& parent) {
+  auto options = std::make_shared<RunCommandOptions>();
+  CLI::App* command = parent.add_subcommand(
+      "run",
+      "Run a scene (a TOML file: surface, material, loads, methods, reference; see scenes/README.md): every "
+      "method's load-area curve, its error against the reference and its cost in time, written as "
+      "curves.csv, "
+      "summary.json, table.md and load-area plots.");
+  command->add_option("SCENE", options->scene, "scene file (TOML)")->required();
+  command->add_option("--out", options->out, "output folder (default: results/<scene name>/)");
+  command->add_flag("!--no-plots", options->plots, "do not draw the plots (no gnuplot run)");
+  command->add_flag("--quiet", options->quiet, "no progress and no table on the terminal");
+  add_threads_option(*command, options->threads);
+  command->callback([options] { run_command(*options); });
+}
+
+}  // namespace contactbench
