@@ -1,0 +1,203 @@
+// Scenes end to end (app/scene_plan.hpp, app/scene_run.hpp, app/report_writers.hpp): the planner runs exactly
+// the stages the methods need, each once; the shipped scenes run on a small grid; the files are complete.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/comparison.hpp"
+#include "app/provenance.hpp"
+#include "app/report_writers.hpp"
+#include "app/scene.hpp"
+#include "app/scene_plan.hpp"
+#include "app/scene_run.hpp"
+#include "core/error.hpp"
+#include "core/topography_io.hpp"
+
+namespace contactbench {
+namespace {
+
+const std::filesystem::path kSource = CB_SOURCE_DIR;
+
+std::string slurp(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+// Replaces every `from` in `text` by `to`; fails the test if there is none (the scene changed shape).
+std::string replace_all(std::string text, const std::string& from, const std::string& to) {
+  std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "no '" << from << "' to replace";
+  for (; at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+// A 32 x 32 version of a paper scene: grid 256 -> 32 and the BEM's refinement 512 -> 64 (same ratio).
+std::string small_paper_scene(const std::string& file) {
+  std::string text = slurp(kSource / "scenes" / "paper" / file);
+  text = replace_all(text, "grid = 256", "grid = 32");
+  return replace_all(text, "refine = 512", "refine = 64");
+}
+
+bool ran(const SceneReport& report, const std::string& prefix) {
+  return std::any_of(report.stages.begin(), report.stages.end(),
+                     [&](const StageRecord& s) { return s.name.rfind(prefix, 0) == 0; });
+}
+
+const std::string kSmallSurface = R"(
+[surface]
+generate = { sigma = 0.5e-6, hurst = 0.5, qr = 3.14e4, size = 200e-6, grid = 32, seed = 2 }
+[material]
+E = 100e9
+nu = 0.3
+[loads]
+values = [1e-3, 1e-2]
+)";
+
+SceneReport run_text(const std::string& text) {
+  return run_scene(parse_scene(text, "test.toml"), {.threads = 1, .progress = nullptr});
+}
+
+TEST(ScenePlan, TheoriesAloneNeverSweepNorSolve) {
+  const SceneReport report =
+      run_text("name = \"theories\"\n" + kSmallSurface +
+               "[methods.gw_mccool]\n[methods.bgt]\n[methods.bgt_linear]\n[methods.persson]\n");
+  EXPECT_FALSE(ran(report, "sweep"));
+  EXPECT_FALSE(ran(report, "bem"));
+  EXPECT_FALSE(ran(report, "refine"));
+  EXPECT_TRUE(ran(report, "moments"));
+  ASSERT_EQ(report.methods.size(), 4u);
+  for (const MethodResult& m : report.methods) {
+    ASSERT_EQ(m.curve.area_fraction.size(), 2u) << m.label;
+    EXPECT_GT(m.curve.area_fraction[0], 0) << m.label;
+    EXPECT_LT(m.curve.area_fraction[0], m.curve.area_fraction[1]) << m.label;
+  }
+}
+
+TEST(ScenePlan, PlateauAloneNeverSolvesAndSharesEqualSweeps) {
+  const SceneReport report = run_text("name = \"plateaus\"\n" + kSmallSurface + R"(
+[methods.plateau_4]
+method = "plateau"
+[methods.plateau_4_again]
+method = "plateau"
+connectivity = 4
+levels = "exact"
+[methods.plateau_8]
+method = "plateau"
+connectivity = 8
+)");
+  EXPECT_FALSE(ran(report, "bem"));
+  EXPECT_EQ(std::count_if(report.stages.begin(), report.stages.end(),
+                          [](const StageRecord& s) { return s.name.rfind("sweep", 0) == 0; }),
+            2);  // one sweep per topology: the two 4-connectivity methods share theirs
+  EXPECT_EQ(report.methods[0].curve.area_fraction, report.methods[1].curve.area_fraction);
+}
+
+TEST(ScenePlan, BemsThatDifferOnlyInSpotCountingShareOneSolve) {
+  const Scene scene = parse_scene("name = \"bems\"\n" + kSmallSurface + R"(
+[methods.bem_4]
+method = "bem"
+connectivity = 4
+[methods.bem_8]
+method = "bem"
+connectivity = 8
+[methods.bem_loose]
+method = "bem"
+tolerance = 1e-4
+)",
+                                  "test.toml");
+  const ScenePlan plan = plan_scene(scene);
+  ASSERT_EQ(plan.bems.size(), 2u);
+  EXPECT_EQ(plan.stage_of_method, (std::vector<int>{0, 0, 1}));
+  EXPECT_TRUE(plan.sweeps.empty());
+  EXPECT_FALSE(plan.needs_theories());
+}
+
+TEST(ScenePlan, RefusesToRefineANonPeriodicSurface) {
+  const Scene scene = parse_scene(R"(name = "measured"
+[surface]
+file = ")" + (std::filesystem::path(CB_MEASURED_DIR) / "matrix-3.txt").string() +
+                                      R"("
+[material]
+estar = 1e11
+[loads]
+values = [1e-3]
+[methods.bem]
+refine = 512
+)",
+                                  "test.toml");
+  EXPECT_THROW(plan_scene(scene), Error);
+}
+
+// The shipped paper scenes at 32 x 32 (BEM at 64 x 64): every method answers at every load, the reference's
+// error is zero, and the three files hold what they promise. Tolerances: none needed, these are structural.
+void expect_complete_run(const std::string& text, const std::filesystem::path& folder) {
+  const Scene scene = parse_scene(text, kSource / "scenes" / "paper" / "scene.toml");
+  const SceneReport report = run_scene(scene, {.threads = 2, .progress = nullptr});
+  EXPECT_TRUE(ran(report, "bem"));
+  EXPECT_TRUE(ran(report, "sweep"));
+  const Comparison comparison = compare(report);
+  ASSERT_EQ(comparison.methods.size(), scene.methods.size());
+  for (std::size_t m = 0; m < report.methods.size(); ++m) {
+    const MethodResult& r = report.methods[m];
+    ASSERT_EQ(r.curve.area_fraction.size(), scene.loads.size()) << r.label;
+    for (std::size_t k = 0; k < scene.loads.size(); ++k) {
+      EXPECT_TRUE(std::isfinite(r.curve.area_fraction[k])) << r.label << " at load " << k;
+      EXPECT_TRUE(std::isfinite(comparison.methods[m].relative_error[k])) << r.label << " at load " << k;
+    }
+    if (r.label == scene.reference) EXPECT_EQ(comparison.methods[m].max_abs_relative_error, 0);
+    EXPECT_GT(comparison.methods[m].kappa, 0) << r.label;
+  }
+  const Provenance provenance = current_provenance(2, "test");
+  write_report(folder, report, comparison, provenance);
+  const std::string csv = slurp(folder / "curves.csv");
+  EXPECT_NE(csv.find("method,separation,load,area_fraction,spots"), std::string::npos);
+  EXPECT_EQ(static_cast<std::size_t>(std::count(csv.begin(), csv.end(), '\n')),
+            3 + scene.methods.size() * scene.loads.size());  // two comment lines and the header
+  const std::string json = slurp(folder / "summary.json");
+  for (const char* key : {"\"stages\"", "\"provenance\"", "\"commit\"", "\"kappa\"", "\"relative_error\"",
+                          "\"scene_as_understood\"", "\"machine\""})
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+  const std::string table = slurp(folder / "table.md");
+  for (const MethodSpec& method : scene.methods)
+    EXPECT_NE(table.find("| " + method.label + " |"), std::string::npos);
+  std::filesystem::remove_all(folder);
+}
+
+TEST(ShippedScenes, SurfaceARunsEndToEndOnASmallGrid) {
+  expect_complete_run(small_paper_scene("surface_A.toml"),
+                      std::filesystem::temp_directory_path() / "contactbench_scene_surface_A");
+}
+
+TEST(ShippedScenes, SurfaceBRunsEndToEndOnASmallGrid) {
+  expect_complete_run(small_paper_scene("surface_B.toml"),
+                      std::filesystem::temp_directory_path() / "contactbench_scene_surface_B");
+}
+
+// The measured scene on a 48 x 48 corner of its file (written in the project's format), so that its
+// non-periodic BEM stays fast; everything else as shipped.
+TEST(ShippedScenes, MeasuredRunsEndToEndOnACorner) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "contactbench_scene_measured";
+  std::filesystem::create_directories(folder);
+  const Surface full = read_topography(std::filesystem::path(CB_MEASURED_DIR) / "matrix-2.txt");
+  const Index n = 48;
+  const Grid corner{
+      .nx = n, .ny = n, .lx = full.grid().dx() * n, .ly = full.grid().dy() * n, .periodic = false};
+  write_surface(folder / "corner.txt", Surface(corner, full.heights().topLeftCorner(n, n)));
+  const std::string text =
+      replace_all(slurp(kSource / "scenes" / "paper" / "measured.toml"),
+                  "../../../shared/data/measured/matrix-2.txt", (folder / "corner.txt").string());
+  expect_complete_run(text, folder / "out");
+  std::filesystem::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace contactbench
