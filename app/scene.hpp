@@ -116,8 +116,12 @@ Scene parse_scene(std::string_view toml_text, const std::filesystem::path& origi
 Scene read_scene(const std::filesystem::path& path);
 
 // The scene as understood, defaults filled in, as TOML that parse_scene accepts again (for summary.json's
-// record and for users to copy).
+// record and for users to copy). Methods keep their order. Throws Error for what a file cannot say (a seed
+// above 2^63 - 1, paper levels with a count other than 500).
 std::string to_toml(const Scene& scene);
+
+// The same scene as one JSON object with the keys of the TOML file (material.estar always present), for
+// summary.json. JSON objects have no order: the methods' order is Scene::methods'.
 std::string to_json(const Scene& scene);
 
 }  // namespace contactbench

@@ -3,6 +3,7 @@
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)   # libeigen3-dev
 find_package(OpenMP REQUIRED COMPONENTS CXX)  # libgomp (g++)
 find_package(CLI11 REQUIRED)                  # libcli11-dev
+find_package(tomlplusplus 3 REQUIRED)        # libtomlplusplus-dev: scene files (its CMake package, compiled library)
 
 # FFTW (libfftw3-dev) ships a pkg-config file but no CMake package on Debian 12;
 # its OpenMP library has neither, so it is found next to the main library.
