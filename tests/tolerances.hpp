@@ -17,4 +17,9 @@ inline constexpr double measured_sq = 1e-9;
 // Requested m2x/m2y of an anisotropic surface: the lattice cuts the spectrum's ellipse (issue: 2 %).
 inline constexpr double anisotropy_ratio = 2e-2;
 
+// Two Polonsky-Keer solves of one problem (or of an exactly equivalent one: transposed, scaled, warm- or
+// cold-started), each stopped at a relative pressure change of 1e-12: their pressures differ by a modest
+// multiple of that tolerance, measured 1e-14..1e-11 of the peak pressure; 1e-9 leaves a factor 100.
+inline constexpr double solver_consistency = 1e-9;
+
 }  // namespace contactbench::tolerance
