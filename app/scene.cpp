@@ -28,6 +28,9 @@ namespace fs = std::filesystem;
 
 // Points a side of any grid a scene may ask for: 65536^2 doubles are already 32 GiB.
 constexpr Index kMaxPointsASide = 65536;
+constexpr std::string_view kAnisotropyAccepted =
+    "\"refuse\" (the default: an anisotropic surface is an error) or \"average\" (its equivalent isotropic "
+    "surface)";
 constexpr std::string_view kLevelsAccepted = "\"exact\", \"paper\" or an integer count >= 1";
 constexpr std::string_view kSizeAccepted = "size = L or size = [lx, ly], finite numbers > 0 [m]";
 
@@ -565,6 +568,16 @@ PlateauMethodSpec parse_plateau(const Section& s) {
   return spec;
 }
 
+TheoryMethodSpec parse_theory(const Section& s) {
+  s.reject_unknown({"method", "anisotropy"});
+  TheoryMethodSpec spec;
+  const auto anisotropy = s.string("anisotropy", false, kAnisotropyAccepted);
+  if (anisotropy && *anisotropy != "refuse" && *anisotropy != "average")
+    s.problem("anisotropy", "unknown choice \"" + *anisotropy + "\"", kAnisotropyAccepted);
+  spec.average_anisotropy = anisotropy && *anisotropy == "average";
+  return spec;
+}
+
 // The methods in the order the file lists them (toml++ keeps a table's keys sorted, not in file order).
 std::vector<MethodSpec> parse_methods(const Section& root, const std::optional<SurfaceSpec>& surface,
                                       std::vector<std::string>& labels, Problems& problems) {
@@ -606,13 +619,13 @@ std::vector<MethodSpec> parse_methods(const Section& root, const std::optional<S
       s.missing("method", method_names() + " (required when the label is not a method name)");
     }
     if (!kind) continue;
-    MethodSpec spec{label, *kind, std::monostate{}};
+    MethodSpec spec{label, *kind, TheoryMethodSpec{}};
     if (*kind == MethodKind::bem)
       spec.options = parse_bem(s, surface_points(surface));
     else if (*kind == MethodKind::plateau)
       spec.options = parse_plateau(s);
     else
-      s.reject_unknown({"method"});  // analytic theories take no options
+      spec.options = parse_theory(s);
     result.push_back(std::move(spec));
   }
   return result;
@@ -840,6 +853,8 @@ Table method_table(const MethodSpec& method) {
         break;
     }
     if (plateau->periodic) put(table, "periodic", {*plateau->periodic});
+  } else if (const auto* theory = std::get_if<TheoryMethodSpec>(&method.options)) {
+    put(table, "anisotropy", {std::string(theory->average_anisotropy ? "average" : "refuse")});
   }
   return table;
 }

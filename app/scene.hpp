@@ -78,11 +78,20 @@ struct PlateauMethodSpec {
   std::optional<bool> periodic;               // default: the surface's own periodicity
 };
 
+// [methods.<label>] of an analytic theory (gw_mccool, bgt, bgt_linear, persson). The theories are for
+// isotropic surfaces and refuse one whose x and y profile moments differ by more than 5 %
+// (theories/load_solver.hpp), unless anisotropy = "average": then they see the surface's equivalent isotropic
+// surface, the means of its x and y profile moments, which keeps the areal gbar^2 = m2x + m2y (exact for
+// Persson's theory and the BGT linear law, which depend on gbar alone; an approximation for GW-McCool and the
+// full BGT).
+struct TheoryMethodSpec {
+  bool average_anisotropy = false;  // anisotropy = "refuse" (default) | "average"
+};
+
 struct MethodSpec {
   std::string label;  // the table's name: the key of [methods.<label>]
   MethodKind kind = MethodKind::bem;
-  // The method's options; std::monostate for the analytic theories, which take none.
-  std::variant<std::monostate, BemMethodSpec, PlateauMethodSpec> options;
+  std::variant<TheoryMethodSpec, BemMethodSpec, PlateauMethodSpec> options;
 };
 
 struct Scene {

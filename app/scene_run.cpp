@@ -142,7 +142,16 @@ MethodResult bem_result(const MethodSpec& method, const BemProducts& products, c
   return result;
 }
 
-LoadAreaCurve theory_curve(MethodKind kind, const SpectralMoments& moments, const Scene& scene, Real area) {
+// The moments a theory sees: the surface's own, or with anisotropy = "average" its equivalent isotropic
+// surface (app/scene.hpp TheoryMethodSpec).
+SpectralMoments theory_moments(const SpectralMoments& m, const TheoryMethodSpec& spec) {
+  if (!spec.average_anisotropy) return m;
+  const Real m2 = 0.5 * (m.m2x + m.m2y), m4 = 0.5 * (m.m4x + m.m4y);
+  return {.m0 = m.m0, .m2x = m2, .m4x = m4, .m2y = m2, .m4y = m4};
+}
+
+LoadAreaCurve theory_curve_of(MethodKind kind, const SpectralMoments& moments, const Scene& scene,
+                              Real area) {
   switch (kind) {
     case MethodKind::gw_mccool:
       return gw_mccool_curve(moments, scene.loads, area);
@@ -157,6 +166,18 @@ LoadAreaCurve theory_curve(MethodKind kind, const SpectralMoments& moments, cons
       break;
   }
   throw Error("internal: " + std::string(to_string(kind)) + " is not an analytic theory");
+}
+
+LoadAreaCurve theory_curve(const MethodSpec& method, const SpectralMoments& surface_moments,
+                           const Scene& scene, Real area) {
+  const auto& spec = std::get<TheoryMethodSpec>(method.options);
+  const SpectralMoments moments = theory_moments(surface_moments, spec);
+  LoadAreaCurve curve = theory_curve_of(method.kind, moments, scene, area);
+  if (spec.average_anisotropy)
+    curve.parameters += "; anisotropy averaged: the equivalent isotropic surface of m2x/m2y = " +
+                        std::to_string(surface_moments.m2x / surface_moments.m2y) +
+                        ", m4x/m4y = " + std::to_string(surface_moments.m4x / surface_moments.m4y);
+  return curve;
 }
 
 }  // namespace
@@ -177,19 +198,20 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
     report.moments = spectral_moments(surface, options.threads);
   });
 
+  std::vector<SweepCurve> sweeps(plan.sweeps.size());
   std::vector<LoadAreaCurve> plateau_models(plan.sweeps.size());
   std::vector<double> sweep_seconds(plan.sweeps.size());
   for (std::size_t s = 0; s < plan.sweeps.size(); ++s)
     sweep_seconds[s] = run_stage(report, plan.sweeps[s].name(), options.progress, [&](Clock::time_point) {
-      plateau_models[s] =
-          plateau_model(sweep(surface, plan.sweeps[s].levels, plan.sweeps[s].topology, options.threads));
+      sweeps[s] = sweep(surface, plan.sweeps[s].levels, plan.sweeps[s].topology, options.threads);
+      plateau_models[s] = plateau_model(sweeps[s]);
     });
 
   std::vector<BemProducts> bem_products;
   for (std::size_t b = 0; b < plan.bems.size(); ++b) {
     std::set<int> connectivities;
     for (std::size_t m = 0; m < scene.methods.size(); ++m)
-      if (plan.stage_of_method[m] == static_cast<int>(b))
+      if (scene.methods[m].kind == MethodKind::bem && plan.stage_of_method[m] == static_cast<int>(b))
         connectivities.insert(std::get<BemMethodSpec>(scene.methods[m].options).connectivity);
     bem_products.push_back(run_bem_stage(plan.bems[b], surface, scene, connectivities, options, report));
   }
@@ -202,14 +224,14 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
       result = bem_result(method, bem_products[static_cast<std::size_t>(stage)], scene);
     } else if (method.kind == MethodKind::plateau) {
       const auto start = Clock::now();
-      result.curve = plateau_curve_at_loads(plateau_models[static_cast<std::size_t>(stage)], scene.loads);
+      const auto s = static_cast<std::size_t>(stage);
+      result.curve = plateau_curve_at_loads(sweeps[s], plateau_models[s], scene.loads);
       result.seconds = sweep_seconds[static_cast<std::size_t>(stage)] + seconds_since(start);
     } else {
       double seconds = 0;
       run_stage(report, std::string(to_string(method.kind)) + " (" + method.label + ")", options.progress,
                 [&](Clock::time_point start) {
-                  result.curve =
-                      theory_curve(method.kind, report.moments, scene, surface.grid().nominal_area());
+                  result.curve = theory_curve(method, report.moments, scene, surface.grid().nominal_area());
                   seconds = seconds_since(start);
                 });
       result.seconds = moments_seconds + seconds;

@@ -279,23 +279,36 @@ TEST(PlateauModel, PaperLevelsApproachTheExactSum) {
 // between two levels has the lower level's area and the separation where the linear P(z) reaches it, which
 // load_at inverts to round-off (1e-12 relative: one division and one product).
 TEST(PlateauModel, CurveAtLoadsIsExactBetweenLevels) {
-  const SweepCurve sweep_curve =
-      sweep(random_surface(32, 5), SweepLevels::exact(), Topology::for_surface(Connectivity::four, true));
-  const LoadAreaCurve model = plateau_model(sweep_curve);
+  const Surface surface = random_surface(32, 5);
+  const SweepCurve exact =
+      sweep(surface, SweepLevels::exact(), Topology::for_surface(Connectivity::four, true));
+  const LoadAreaCurve model = plateau_model(exact);
   const std::size_t j = model.load.size() / 2;
   const Real between = 0.5 * (model.load[j - 1] + model.load[j]);
-  const std::vector<Real> loads{between, model.load[j], 2 * model.load.back()};
-  const LoadAreaCurve at = plateau_curve_at_loads(model, loads);
+  const Real beyond = model.load.back() + 1e-3;
+  const std::vector<Real> loads{between, model.load[j], beyond};
+  const LoadAreaCurve at = plateau_curve_at_loads(exact, model, loads);
   ASSERT_EQ(at.load.size(), 3u);
   EXPECT_EQ(at.area_fraction[0], model.area_fraction[j]);
   EXPECT_EQ(at.spots[0], model.spots[j]);
   EXPECT_NEAR(load_at(model, at.separation[0]), between, 1e-12 * between);
   EXPECT_EQ(at.area_fraction[1], model.area_fraction[j]);
   EXPECT_NEAR(at.separation[1], model.separation[j], 1e-12 * std::abs(model.separation[j]));
-  // Beyond the lowest level there is no answer, and the parameters say so.
-  EXPECT_TRUE(std::isnan(at.area_fraction[2]));
-  EXPECT_NE(at.parameters.find("no answer"), std::string::npos) << at.parameters;
-  EXPECT_THROW(plateau_curve_at_loads(model, std::vector<Real>{-1.0}), Error);
+  // Below the lowest height: full contact, one spot, and the approach of a flat punch of area A0 (Sneddon).
+  EXPECT_EQ(at.area_fraction[2], 1);
+  EXPECT_EQ(at.spots[2], 1);
+  const Real approach = model.separation.back() - at.separation[2];
+  EXPECT_NEAR(1e-3, 2 / std::sqrt(pi) * std::sqrt(1 / exact.nominal_area) * approach, 1e-15);
+  EXPECT_NE(at.parameters.find("full contact"), std::string::npos) << at.parameters;
+  // The paper's levels stop at the mean plane: beyond them there is no answer, and the parameters say so.
+  const SweepCurve paper =
+      sweep(surface, SweepLevels::paper(), Topology::for_surface(Connectivity::four, true));
+  const LoadAreaCurve paper_model = plateau_model(paper);
+  const LoadAreaCurve paper_at =
+      plateau_curve_at_loads(paper, paper_model, std::vector<Real>{2 * paper_model.load.back()});
+  EXPECT_TRUE(std::isnan(paper_at.area_fraction[0]));
+  EXPECT_NE(paper_at.parameters.find("no answer"), std::string::npos) << paper_at.parameters;
+  EXPECT_THROW(plateau_curve_at_loads(exact, model, std::vector<Real>{-1.0}), Error);
 }
 
 }  // namespace

@@ -304,7 +304,7 @@ TEST(Scene, FullSceneRoundTrips) {
   EXPECT_EQ(uniform.levels.kind, SweepLevels::Kind::uniform);
   EXPECT_EQ(uniform.levels.count, 100);
   EXPECT_EQ(first.method("bgt_linear").kind, MethodKind::bgt_linear);
-  EXPECT_TRUE(std::holds_alternative<std::monostate>(first.method("persson").options));
+  EXPECT_TRUE(std::holds_alternative<TheoryMethodSpec>(first.method("persson").options));
 }
 
 TEST(Scene, DefaultsAreFilledIn) {
@@ -561,6 +561,8 @@ std::vector<InvalidCase> invalid_cases() {
       {"UnknownKeyInBem", bem("colour = 1"), "methods.bem.colour", "unknown key", "tolerance"},
       {"OptionOfAnAnalyticTheory", methods("[methods.persson]\nrefine = 2\n"), "methods.persson.refine",
        "unknown key", "method"},
+      {"UnknownAnisotropyChoice", methods("[methods.persson]\nanisotropy = \"ignore\"\n"),
+       "methods.persson.anisotropy", "unknown choice \"ignore\"", "\"average\""},
       {"StringForANumber", generate("sigma", "sigma = \"big\""), kGenerate + "sigma",
        "wrong type: expected a number, got a string", "> 0"},
       {"FloatForAnInteger", generate("grid", "grid = 64.0"), kGenerate + "grid", "expected an integer",

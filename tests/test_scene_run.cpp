@@ -153,7 +153,9 @@ void expect_complete_run(const std::string& text, const std::filesystem::path& f
       EXPECT_TRUE(std::isfinite(r.curve.area_fraction[k])) << r.label << " at load " << k;
       EXPECT_TRUE(std::isfinite(comparison.methods[m].relative_error[k])) << r.label << " at load " << k;
     }
-    if (r.label == scene.reference) EXPECT_EQ(comparison.methods[m].max_abs_relative_error, 0);
+    if (r.label == scene.reference) {
+      EXPECT_EQ(comparison.methods[m].max_abs_relative_error, 0);
+    }
     EXPECT_GT(comparison.methods[m].kappa, 0) << r.label;
   }
   const Provenance provenance = current_provenance(2, "test");

@@ -35,7 +35,8 @@ LoadAreaCurve plateau_model(const SweepCurve& sweep) {
   return curve;
 }
 
-LoadAreaCurve plateau_curve_at_loads(const LoadAreaCurve& model, std::span<const Real> loads) {
+LoadAreaCurve plateau_curve_at_loads(const SweepCurve& sweep, const LoadAreaCurve& model,
+                                     std::span<const Real> loads) {
   validate_loads(loads, model.method);
   LoadAreaCurve curve;
   curve.method = model.method;
@@ -43,12 +44,21 @@ LoadAreaCurve plateau_curve_at_loads(const LoadAreaCurve& model, std::span<const
   curve.seconds = model.seconds;
   const Real nan = std::numeric_limits<Real>::quiet_NaN();
   const Real highest = model.load.empty() ? 0 : model.load.back();
+  const bool reaches_lowest_height = sweep.levels.kind != SweepLevels::Kind::paper;
   for (const Real load : loads) {
     curve.load.push_back(load);
-    if (!(load <= highest)) {
-      curve.area_fraction.push_back(nan);
-      curve.separation.push_back(nan);
-      curve.spots.push_back(nan);
+    if (load > highest) {
+      if (reaches_lowest_height && !model.load.empty()) {
+        // Full contact: one spot of area A0, P/(E* A0) grows by (2/sqrt(pi)) sqrt(1/A0) per unit of approach.
+        const Real slope = 2 / std::sqrt(std::numbers::pi) / std::sqrt(sweep.nominal_area);
+        curve.area_fraction.push_back(1);
+        curve.separation.push_back(model.separation.back() - (load - highest) / slope);
+        curve.spots.push_back(1);
+      } else {
+        curve.area_fraction.push_back(nan);
+        curve.separation.push_back(nan);
+        curve.spots.push_back(nan);
+      }
       continue;
     }
     // The first level whose load reaches the request; j >= 1 because the first level carries no load.
@@ -62,8 +72,12 @@ LoadAreaCurve plateau_curve_at_loads(const LoadAreaCurve& model, std::span<const
     curve.spots.push_back(model.spots[j]);
   }
   if (!loads.empty() && loads.back() > highest)
-    curve.parameters += "; no answer (NaN) for loads above " + format_number(highest) +
-                        ", the load at the lowest level swept";
+    curve.parameters +=
+        reaches_lowest_height
+            ? "; full contact (A/A0 = 1) for loads above " + format_number(highest) +
+                  ", the load at the lowest height"
+            : "; no answer (NaN) for loads above " + format_number(highest) +
+                  ", the load at the lowest level swept (the paper's levels stop at the mean plane)";
   return curve;
 }
 

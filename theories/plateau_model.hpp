@@ -19,11 +19,14 @@ namespace contactbench {
 // levels it is the right-endpoint Riemann sum with the level step. Loads are P/(E* A0), so E* drops out.
 LoadAreaCurve plateau_model(const SweepCurve& sweep);
 
-// The model's curve (as plateau_model returns it) at requested loads P/(E* A0) (finite, > 0, ascending),
+// The model's curve (model = plateau_model(sweep)) at requested loads P/(E* A0) (finite, > 0, ascending),
 // exactly, without interpolation error: P(z) is linear in z between two levels and the contact set there is
 // the one of the lower level (see above), so a load in (P[j-1], P[j]] has the area and spots of level j and a
-// separation linear between z[j-1] and z[j]. Loads beyond the last level's (the paper's levels stop at the
-// mean plane) get NaN, and the parameters say from which load.
-LoadAreaCurve plateau_curve_at_loads(const LoadAreaCurve& model, std::span<const Real> loads);
+// separation linear between z[j-1] and z[j]. Below the lowest height every point touches: one spot of area
+// A0, dP = 2 E* sqrt(A0/pi) dz, so loads beyond the last level of an exact or uniform sweep (which ends at
+// the lowest height) get A/A0 = 1. The paper's levels stop at the mean plane: loads beyond get NaN, and the
+// parameters say from which load.
+LoadAreaCurve plateau_curve_at_loads(const SweepCurve& sweep, const LoadAreaCurve& model,
+                                     std::span<const Real> loads);
 
 }  // namespace contactbench
