@@ -27,7 +27,7 @@ void write_panels(std::ostream& out, const SceneReport& report) {
     } else {
       out << "set logscale xy\nset key bottom right\n";
     }
-    out << "set xlabel 'P/(E* A_0)'\nset ylabel 'A/A_0'\nset grid\n";
+    out << "set xlabel 'P/(E* A0)'\nset ylabel 'A/A0'\nset grid\n";
     out << "plot ";
     for (std::size_t m = 0; m < report.methods.size(); ++m) {
       const std::string& label = report.methods[m].label;
@@ -48,10 +48,10 @@ void write_gnuplot_script(std::ostream& out, const SceneReport& report, const st
   out << "# Made by contactbench run (app/load_area_plots.cpp): `gnuplot load_area.gp` in this folder "
          "redraws\n"
          "# the plots from curves.csv.\n"
-         "set datafile separator ','\nset datafile missing ''\nset termoption noenhanced\n";
-  out << "set terminal pngcairo size 1400,600 font ',11'\nset output '" << png << "'\n";
+         "set datafile separator ','\nset datafile missing ''\n";
+  out << "set terminal pngcairo noenhanced size 1400,600 font ',11'\nset output '" << png << "'\n";
   write_panels(out, report);
-  out << "set terminal svg size 1400,600 dynamic font ',11'\nset output '" << svg << "'\n";
+  out << "set terminal svg noenhanced size 1400,600 dynamic font ',11'\nset output '" << svg << "'\n";
   write_panels(out, report);
   out << "unset output\n";
 }

@@ -138,7 +138,7 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
   for (std::size_t m = 0; m < report.methods.size(); ++m) {
     const MethodResult& r = report.methods[m];
     const MethodComparison& c = comparison.methods[m];
-    out << "| " << r.label << " | " << r.curve.parameters << " | " << table_number(r.seconds, "%.3g") << " | "
+    out << "| " << r.label << " | " << table_number(r.seconds, "%.3g") << " | "
         << table_number(c.kappa, "%.3f");
     if (c.kappa_nodes) out << " (nodes " << table_number(*c.kappa_nodes, "%.3f") << ")";
     out << " | " << (r.label == comparison.reference ? "reference" : percent(c.max_abs_relative_error))
@@ -163,6 +163,9 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
     }
     out << '\n';
   }
+  out << "\nMethods as run:\n\n";
+  for (const MethodResult& r : report.methods)
+    out << "- " << r.label << ": " << r.curve.parameters << '\n';
   out << "\nStages that ran:";
   for (const StageRecord& s : report.stages)
     out << ' ' << s.name << " " << table_number(s.seconds, "%.3g") << " s;";

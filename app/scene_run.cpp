@@ -229,7 +229,8 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
       result.seconds = sweep_seconds[static_cast<std::size_t>(stage)] + seconds_since(start);
     } else {
       double seconds = 0;
-      run_stage(report, std::string(to_string(method.kind)) + " (" + method.label + ")", options.progress,
+      const std::string kind(to_string(method.kind));
+      run_stage(report, method.label == kind ? kind : kind + " (" + method.label + ")", options.progress,
                 [&](Clock::time_point start) {
                   result.curve = theory_curve(method, report.moments, scene, surface.grid().nominal_area());
                   seconds = seconds_since(start);

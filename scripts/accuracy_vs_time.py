@@ -128,8 +128,8 @@ set grid
 set key top right
 set title 'What accuracy costs in time: surface A'
 do for [t in "pngcairo svg"] {{
-  if (t eq "pngcairo") {{ set terminal pngcairo size 1000,700 font ',11'; set output '{png}' }}
-  else {{ set terminal svg size 1000,700 dynamic font ',11'; set output '{svg}' }}
+  if (t eq "pngcairo") {{ set terminal pngcairo noenhanced size 1000,700 font ',11'; set output '{png}' }}
+  else {{ set terminal svg noenhanced size 1000,700 dynamic font ',11'; set output '{svg}' }}
   plot $front using 1:2 with steps lw 2 lc rgb 'gray' title 'Pareto front', \\
        $points using 1:2 with points pt 7 ps 1.2 lc rgb 'black' notitle, \\
        $points using 1:2:3 with labels offset 1,0.6 left font ',9' notitle

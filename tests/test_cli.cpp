@@ -236,5 +236,56 @@ TEST_F(Cli, BemRefusesBadLoadsAndContradictoryFlags) {
   EXPECT_NE(modulus.err.find("--modulus"), std::string::npos) << modulus.err;
 }
 
+// A scene end to end through the binary: the files appear in --out, the table on standard output.
+TEST_F(Cli, RunWritesTheComparisonOfASmallScene) {
+  const auto scene = folder_ / "tiny.toml";
+  std::ofstream(scene) << R"(name = "tiny"
+[surface]
+generate = { sigma = 0.5e-6, hurst = 0.5, qr = 3.14e4, size = 200e-6, grid = 32, seed = 1 }
+[material]
+E = 100e9
+nu = 0.3
+[loads]
+values = [1e-3, 1e-2]
+[methods.bem]
+[methods.plateau]
+[methods.persson]
+)";
+  const auto out = folder_ / "out";
+  const CommandResult result =
+      run("run " + scene.string() + " --out " + out.string() + " --no-plots --threads 1");
+  ASSERT_EQ(result.status, 0) << result.err;
+  for (const char* file : {"curves.csv", "summary.json", "table.md"})
+    EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
+  EXPECT_FALSE(std::filesystem::exists(out / "load_area.png"));  // --no-plots
+  EXPECT_NE(result.out.find("| plateau |"), std::string::npos) << result.out;
+  // Nothing half-written is left behind: no temporary files beside the results.
+  for (const auto& entry : std::filesystem::directory_iterator(out))
+    EXPECT_NE(entry.path().filename().string().front(), '.') << entry.path();
+}
+
+// A scene that names a missing file (and other problems) fails before any work: one error lists every
+// problem with its key path, and no output folder is made.
+TEST_F(Cli, RunRefusesABadSceneBeforeAnyWork) {
+  const auto scene = folder_ / "bad.toml";
+  std::ofstream(scene) << R"(name = "bad"
+[surface]
+file = "no_such_surface.txt"
+[material]
+E = -1
+nu = 0.3
+[loads]
+values = [1e-3]
+[methods.fem]
+)";
+  const auto out = folder_ / "out";
+  const CommandResult result = run("run " + scene.string() + " --out " + out.string());
+  EXPECT_EQ(result.status, 1);
+  EXPECT_NE(result.err.find("no_such_surface.txt"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("material.E"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("methods.fem"), std::string::npos) << result.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 }  // namespace
 }  // namespace contactbench
