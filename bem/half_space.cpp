@@ -12,7 +12,7 @@ namespace contactbench {
 
 namespace {
 
-using RealMap = Eigen::Array<Real, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using DoubleMap = Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 void check_shape(const Grid& grid, const HeightMap& pressure) {
   if (pressure.rows() != grid.ny || pressure.cols() != grid.nx)
@@ -21,89 +21,94 @@ void check_shape(const Grid& grid, const HeightMap& pressure) {
                 std::to_string(grid.nx) + " x " + std::to_string(grid.ny));
 }
 
-class PeriodicHalfSpace final : public HalfSpace {
- public:
-  PeriodicHalfSpace(const Grid& grid, Real modulus, int threads)
-      : HalfSpace(grid, modulus), fft_(grid.nx, grid.ny, threads) {
-    // 2/(E* |q|) with the FFT pair's normalisation 1/(nx ny) folded in; 0 at q = 0.
-    const HalfLattice lattice(grid);
-    const Eigen::Array<Real, 1, Eigen::Dynamic> qx2 = lattice.qx_row().square();
-    const Eigen::Array<Real, Eigen::Dynamic, 1> qy2 = lattice.qy_column().square();
-    multiplier_ = (qy2.replicate(1, lattice.cols()).rowwise() + qx2).sqrt().inverse() *
-                  (2 / (modulus * static_cast<Real>(grid.points())));
-    multiplier_(0, 0) = 0;
-  }
-
-  void apply(const HeightMap& pressure, HeightMap& displacement) override {
-    check_shape(grid(), pressure);
-    fft_.real() = pressure;
-    fft_.forward();
-    fft_.spectrum() *= multiplier_;
-    fft_.backward();
-    displacement = fft_.real();
-  }
-
- private:
-  RealFft2d fft_;
-  RealMap multiplier_;
-};
-
-class NonPeriodicHalfSpace final : public HalfSpace {
- public:
-  NonPeriodicHalfSpace(const Grid& grid, Real modulus, int threads)
-      : HalfSpace(grid, modulus), fft_(2 * grid.nx, 2 * grid.ny, threads) {
-    // Love's kernel on the doubled lattice, offsets wrapped so that index i stands for i or i - 2n; the
-    // offset n itself is never needed by a convolution of n points (largest offset n - 1).
-    const Index nx = grid.nx, ny = grid.ny;
-    const Real dx = grid.dx(), dy = grid.dy();
-    auto kernel = fft_.real();
-    for (Index iy = 0; iy < 2 * ny; ++iy)
-      for (Index ix = 0; ix < 2 * nx; ++ix) {
-        const Real x = static_cast<Real>(ix < nx ? ix : ix - 2 * nx) * dx;
-        const Real y = static_cast<Real>(iy < ny ? iy : iy - 2 * ny) * dy;
-        kernel(iy, ix) = love_displacement(x, y, dx / 2, dy / 2) / modulus;
-      }
-    fft_.forward();
-    // The kernel is even in x and y, so its transform is real; the FFT pair's 1/(4 nx ny) is folded in.
-    kernel_spectrum_ = fft_.spectrum().real() / static_cast<Real>(4 * nx * ny);
-  }
-
-  void apply(const HeightMap& pressure, HeightMap& displacement) override {
-    check_shape(grid(), pressure);
-    const Index nx = grid().nx, ny = grid().ny;
-    auto padded = fft_.real();
-    padded.setZero();
-    padded.topLeftCorner(ny, nx) = pressure;
-    fft_.forward();
-    fft_.spectrum() *= kernel_spectrum_;
-    fft_.backward();
-    displacement = fft_.real().topLeftCorner(ny, nx);
-  }
-
- private:
-  RealFft2d fft_;
-  RealMap kernel_spectrum_;
-};
-
-}  // namespace
-
-HalfSpace::HalfSpace(const Grid& grid, Real modulus) : grid_(grid), modulus_(modulus) {
+void check_operator(const Grid& grid, Real modulus) {
   validate(grid, "half-space grid");
   if (!(std::isfinite(modulus) && modulus > 0))
     throw Error("half-space: the modulus E* must be finite and > 0 Pa, got " + std::to_string(modulus));
 }
 
+// 2/(E* |q|) with the FFT pair's normalisation 1/(nx ny) folded in; 0 at q = 0.
+DoubleMap periodic_multiplier(const Grid& grid, Real modulus) {
+  const HalfLattice lattice(grid);
+  const Eigen::Array<Real, 1, Eigen::Dynamic> qx2 = lattice.qx_row().square();
+  const Eigen::Array<Real, Eigen::Dynamic, 1> qy2 = lattice.qy_column().square();
+  DoubleMap multiplier = (qy2.replicate(1, lattice.cols()).rowwise() + qx2).sqrt().inverse() *
+                         (2 / (modulus * static_cast<Real>(grid.points())));
+  multiplier(0, 0) = 0;
+  return multiplier;
+}
+
+// Love's kernel on the doubled lattice, offsets wrapped so that index i stands for i or i - 2n; the offset n
+// itself is never needed by a convolution of n points (largest offset n - 1). The kernel is even in x and y,
+// so its transform is real (and even); the FFT pair's 1/(4 nx ny) is folded in.
+DoubleMap nonperiodic_multiplier(const Grid& grid, Real modulus) {
+  const Index nx = grid.nx, ny = grid.ny;
+  const Real dx = grid.dx(), dy = grid.dy();
+  RealFft2d fft(2 * nx, 2 * ny);
+  auto kernel = fft.real();
+  for (Index iy = 0; iy < 2 * ny; ++iy)
+    for (Index ix = 0; ix < 2 * nx; ++ix) {
+      const Real x = static_cast<Real>(ix < nx ? ix : ix - 2 * nx) * dx;
+      const Real y = static_cast<Real>(iy < ny ? iy : iy - 2 * ny) * dy;
+      kernel(iy, ix) = love_displacement(x, y, dx / 2, dy / 2) / modulus;
+    }
+  fft.forward();
+  return fft.spectrum().real() / static_cast<Real>(4 * nx * ny);
+}
+
+class FftHalfSpace final : public HalfSpace {
+ public:
+  FftHalfSpace(const Grid& grid, Real modulus, int threads, bool periodic)
+      : HalfSpace(grid, modulus), convolution_(grid.nx, grid.ny, !periodic, threads) {
+    convolution_.set_multiplier(periodic ? periodic_multiplier(grid, modulus)
+                                         : nonperiodic_multiplier(grid, modulus));
+  }
+
+  void apply(const HeightMap& pressure, HeightMap& displacement) override {
+    check_shape(grid(), pressure);
+    if (&displacement != &pressure) displacement.resize(grid().ny, grid().nx);
+    convolution_.apply(pressure.data(), displacement.data());
+  }
+
+  void apply(const Real* pressure, Real* displacement) override {
+    convolution_.apply(pressure, displacement);
+  }
+
+ private:
+  Convolution<Real> convolution_;
+};
+
+}  // namespace
+
+HalfSpace::HalfSpace(const Grid& grid, Real modulus) : grid_(grid), modulus_(modulus) {
+  check_operator(grid, modulus);
+}
+
 std::unique_ptr<HalfSpace> make_periodic_half_space(const Grid& grid, Real modulus, int threads) {
-  return std::make_unique<PeriodicHalfSpace>(grid, modulus, threads);
+  check_operator(grid, modulus);
+  return std::make_unique<FftHalfSpace>(grid, modulus, threads, true);
 }
 
 std::unique_ptr<HalfSpace> make_nonperiodic_half_space(const Grid& grid, Real modulus, int threads) {
-  return std::make_unique<NonPeriodicHalfSpace>(grid, modulus, threads);
+  check_operator(grid, modulus);
+  return std::make_unique<FftHalfSpace>(grid, modulus, threads, false);
 }
 
 std::unique_ptr<HalfSpace> make_half_space(const Grid& grid, Real modulus, int threads) {
   return grid.periodic ? make_periodic_half_space(grid, modulus, threads)
                        : make_nonperiodic_half_space(grid, modulus, threads);
 }
+
+template <class T>
+std::unique_ptr<Convolution<T>> make_half_space_convolution(const Grid& grid, Real modulus, int threads) {
+  check_operator(grid, modulus);
+  auto convolution = std::make_unique<Convolution<T>>(grid.nx, grid.ny, !grid.periodic, threads);
+  convolution->set_multiplier(grid.periodic ? periodic_multiplier(grid, modulus)
+                                            : nonperiodic_multiplier(grid, modulus));
+  return convolution;
+}
+
+template std::unique_ptr<Convolution<double>> make_half_space_convolution(const Grid&, Real, int);
+template std::unique_ptr<Convolution<float>> make_half_space_convolution(const Grid&, Real, int);
 
 }  // namespace contactbench

@@ -1,9 +1,12 @@
 // The elastic half-space as a boundary-element operator: the normal surface displacement u = G p of a
-// pressure field p sampled on a grid (THEORY.md section 6). One application costs one FFT pair.
+// pressure field p sampled on a grid (THEORY.md section 6). One application costs one FFT pair (for the
+// non-periodic operator, 3/4 of a pair of the padded size: the all-zero rows of the padding are skipped;
+// bem/convolution.hpp).
 #pragma once
 
 #include <memory>
 
+#include "bem/convolution.hpp"
 #include "core/grid.hpp"
 #include "core/types.hpp"
 
@@ -15,6 +18,9 @@ class HalfSpace {
 
   // displacement [m] of the pressure [Pa] on the operator's grid (ny x nx); displacement is resized.
   virtual void apply(const HeightMap& pressure, HeightMap& displacement) = 0;
+  // The same on plain row-major ny x nx arrays, without copies: the transform reads the pressure from and
+  // writes the displacement into these arrays directly (they may be the same array).
+  virtual void apply(const Real* pressure, Real* displacement) = 0;
 
   const Grid& grid() const { return grid_; }
   Real modulus() const { return modulus_; }  // E* [Pa] (THEORY.md section 0)
@@ -38,5 +44,11 @@ std::unique_ptr<HalfSpace> make_nonperiodic_half_space(const Grid& grid, Real mo
 
 // The operator a grid calls for: periodic or not, as grid.periodic says.
 std::unique_ptr<HalfSpace> make_half_space(const Grid& grid, Real modulus, int threads = 1);
+
+// The engine of the operator a grid calls for, in double or single precision, for callers that fuse their
+// own element-wise work into the transforms (the Polonsky-Keer solver). Its self_response() is the
+// displacement of a unit pressure on one pixel at that pixel [m/Pa].
+template <class T>
+std::unique_ptr<Convolution<T>> make_half_space_convolution(const Grid& grid, Real modulus, int threads = 1);
 
 }  // namespace contactbench

@@ -1,25 +1,541 @@
 #include "bem/polonsky_keer.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <iostream>
+#include <limits>
 #include <string>
+#include <vector>
 
+#include "bem/convolution.hpp"
 #include "core/error.hpp"
 
 namespace contactbench {
 
 namespace {
-// Concrete, not an expression: the contact set must not follow the pressure when it changes.
-using BoolMap = Eigen::Array<bool, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// The element-wise kernels are compiled twice, for SSE2 (any x86-64) and AVX2, the better one chosen at load
+// time (g++'s function multi-versioning): twice the lanes on the machines that have them. No FMA, so both
+// round alike; sums over lanes are ordered differently, so results agree between the two to round-off only.
+#define CB_KERNEL __attribute__((target_clones("avx2", "default")))
+
+// What one thread sums during one pass: one cache line each, combined in thread order after the pass, so
+// that for a fixed thread count the sums (and so the iterates) are the same from run to run.
+struct alignas(64) Partial {
+  double change = 0, sum = 0;           // sum |p - p_old|, sum p
+  double elastic = 0, plastic = 0;      // node counts
+  double shift = 0, s1 = 0, s2 = 0;     // sum (g - shift), sum (g - shift)^2 over the elastic set
+  bool has_shift = false;               // see gap_row
+  double gt = 0, t_sum = 0, r_sum = 0;  // sum g t, sum t, sum r over the elastic set
+  double q_sum = 0, entered = 0;        // sum of the new pressure, nodes that entered or left the set
+  void clear() { *this = Partial{}; }
+};
+
 }  // namespace
 
+// What PolonskyKeer needs of an iteration, whatever its scalar.
+class PolonskyKeer::Engine {
+ public:
+  struct Outcome {
+    Index iterations = 0;
+    double change = 0;
+    bool converged = false;
+  };
+  virtual ~Engine() = default;
+  virtual void forget() = 0;
+  // Load control: mean(p) = mean_pressure, the flat's height found.
+  virtual Outcome solve_load(double mean_pressure, double tolerance, Index max_iterations) = 0;
+  // Separation control: the flat at `separation`, the load found; pressures capped at `hardness` (may be
+  // infinite).
+  virtual Outcome solve_separation(double separation, double hardness, double tolerance,
+                                   Index max_iterations) = 0;
+  // Rescales the elastic part of the pressure so that the mean is mean_pressure exactly (plastic nodes stay
+  // at the hardness), and finds the flat's height and the gap of the result as load control does.
+  virtual void impose_load(double mean_pressure, double hardness) = 0;
+  // Writes the last solution (pressure, gap, separation, counts, residual); returns the mean pressure.
+  virtual double write(ContactSolution& s) const = 0;
+  virtual double max_pressure() const = 0;
+};
+
+// The iteration of PK's algorithm in scalar T (double, or float for large grids), keeping its state
+// (pressure, direction, gap) between solves for warm starts.
+//
+// The pressure is kept as p = s q: q an array, s a scalar. Under load control the load is imposed by
+// rescaling (PK's step), and as the operator is linear, G p = s G q: the rescaling is never a pass over the
+// arrays. Two arrays q alternate, so that the change of the pressure in an iteration can be measured while
+// the next gap is computed. The sets are read off q: elastic contact where 0 < p < H (the conjugate
+// gradient's set), plastic where p = H (with a hardness), out of contact where p = 0. Every element-wise
+// step rides inside a convolution (bem/convolution.hpp); one iteration is
+//   G t: producing t (direction) | consuming r = G t (its sum on the contact set; load control only)
+//   G q: producing q (the update) | consuming u = G q (gap, its moments, the change of the pressure)
+// and the apply that finishes an iteration is the one that starts the next: the same count of operator
+// applications as PK's loop (two per iteration and one to start), and no other pass over the arrays.
+template <class T>
+class PolonskyKeerCore final : public PolonskyKeer::Engine {
+ public:
+  PolonskyKeerCore(const Surface& centred, Real modulus, int threads)
+      : grid_(centred.grid()),
+        convolution_(make_half_space_convolution<T>(centred.grid(), modulus, threads)),
+        n_(grid_.points()),
+        h_(static_cast<std::size_t>(n_)),
+        g_(static_cast<std::size_t>(n_)),
+        t_(static_cast<std::size_t>(n_)),
+        partial_(static_cast<std::size_t>(convolution_->threads())) {
+    q_[0].resize(static_cast<std::size_t>(n_));
+    q_[1].resize(static_cast<std::size_t>(n_));
+    const HeightMap& h = centred.heights();
+    for (Index i = 0; i < n_; ++i)
+      h_[static_cast<std::size_t>(i)] = static_cast<T>(h.data()[i]);
+    height_range_ = h.maxCoeff() - h.minCoeff();
+    max_height_ = h.maxCoeff();
+  }
+
+  void forget() override { warm_ = false; }
+
+  Outcome solve_load(double mean_pressure, double tolerance, Index max_iterations) override {
+    const double total = mean_pressure * static_cast<double>(n_);
+    if (warm_) {  // the previous pressure scaled to the new load
+      s_[cur_] = total / q_sum(q_[cur_]);
+    } else {  // the uniform pressure
+      std::fill(q_[cur_].begin(), q_[cur_].end(), T(1));
+      s_[cur_] = mean_pressure;
+    }
+    hardness_ = std::numeric_limits<double>::infinity();
+    const Outcome outcome = iterate<true, false>(total, tolerance, max_iterations);
+    warm_ = true;
+    return outcome;
+  }
+
+  Outcome solve_separation(double separation, double hardness, double tolerance,
+                           Index max_iterations) override {
+    separation_ = separation;
+    hardness_ = hardness;
+    if (!warm_) {
+      // The surface's penetration of the flat, pressed in by the stiffness of a lone pixel (capped).
+      const double stiffness = 1 / convolution_->self_response();
+      for (Index i = 0; i < n_; ++i) {
+        const std::size_t k = static_cast<std::size_t>(i);
+        const double penetration = std::max(static_cast<double>(h_[k]) - separation, 0.0);
+        q_[cur_][k] = static_cast<T>(std::min(penetration * stiffness, hardness));
+      }
+      s_[cur_] = 1;
+    }
+    const Outcome outcome = std::isfinite(hardness) ? iterate<false, true>(0, tolerance, max_iterations)
+                                                    : iterate<false, false>(0, tolerance, max_iterations);
+    warm_ = true;
+    return outcome;
+  }
+
+  void impose_load(double mean_pressure, double hardness) override {
+    // One pass to scale the elastic pressures, one application of G for the gap (a load-control gap pass).
+    std::vector<T>& q = q_[cur_];
+    const double s = s_[cur_];
+    double elastic = 0, plastic = 0;
+    for (const T v : q) {
+      const double p = s * static_cast<double>(v);
+      if (p >= hardness)
+        plastic += hardness;
+      else
+        elastic += p;
+    }
+    const double total = mean_pressure * static_cast<double>(n_);
+    const double factor = elastic > 0 ? (total - plastic) / elastic : 1.0;
+    for (T& v : q) {
+      const double p = s * static_cast<double>(v);
+      v = static_cast<T>(p >= hardness ? hardness : std::min(factor * p, hardness));
+    }
+    s_[cur_] = 1;
+    hardness_ = hardness;
+    separation_ = 0;
+    // The gap of the result, with the flat from the mean gap on the elastic set.
+    const Index nx = grid_.nx;
+    const T* const q_data = q.data();
+    const T h_cap = static_cast<T>(hardness);
+    auto copy_in = [&](Index first, Index rows, T* buffer, Index ld, int) {
+      for (Index r = 0; r < rows; ++r)
+        std::copy_n(q_data + (first + r) * nx, nx, buffer + r * ld);
+    };
+    auto gap = [&](Index first, Index rows, const T* u, Index ld, int thread) {
+      Partial& part = partial_[static_cast<std::size_t>(thread)];
+      for (Index r = 0; r < rows; ++r) {
+        const Index i0 = (first + r) * nx;
+        gap_rows<true, true>(part, q_data + i0, q_data + i0, u + r * ld, h_.data() + i0, g_.data() + i0, nx,
+                             T(1), T(1), T(0), h_cap);
+      }
+    };
+    clear_partials();
+    convolution_->apply(Producer(copy_in), Consumer(gap));
+    const Moments moments = combine_moments<true>();
+    separation_ = -moments.g_mean;
+    gap_offset_ = separation_;
+  }
+
+  double max_pressure() const override {
+    T largest = 0;
+    for (const T v : q_[cur_])
+      largest = std::max(largest, v);
+    return s_[cur_] * static_cast<double>(largest);
+  }
+
+  double write(ContactSolution& s) const override {
+    const Index nx = grid_.nx, ny = grid_.ny;
+    s.pressure.resize(ny, nx);
+    s.gap.resize(ny, nx);
+    const std::vector<T>& q = q_[cur_];
+    const double scale = s_[cur_];
+    double residual = 0, sum = 0;
+    Index contact = 0, plastic = 0;
+    for (Index i = 0; i < n_; ++i) {
+      const std::size_t k = static_cast<std::size_t>(i);
+      const T pt = static_cast<T>(scale) * q[k];  // as the iteration computes it
+      const double p = static_cast<double>(pt);
+      s.pressure.data()[i] = p;
+      sum += p;
+      const double gap = static_cast<double>(g_[k]) + gap_offset_;
+      if (!(pt > 0)) {
+        s.gap.data()[i] = gap;
+      } else {
+        // Zero on the contact set; on plastic nodes too (the surface flowed to fit the flat there).
+        s.gap.data()[i] = 0;
+        ++contact;
+        if (static_cast<double>(pt) >= hardness_)
+          ++plastic;
+        else
+          residual = std::max(residual, std::abs(gap));
+      }
+    }
+    s.separation = separation_;
+    s.contact_points = contact;
+    s.plastic_points = plastic;
+    // Relative to the height range (to 1 m for a flat surface, whose range is 0).
+    s.residual = residual / (height_range_ > 0 ? height_range_ : 1.0);
+    return sum / static_cast<double>(n_);
+  }
+
+ private:
+  using Producer = typename Convolution<T>::Producer;
+  using Consumer = typename Convolution<T>::Consumer;
+  using Hook = typename Convolution<T>::Hook;
+
+  struct Moments {
+    double change = 0, sum = 0, elastic = 0, plastic = 0, g_mean = 0, g_norm = 0;
+  };
+
+  // The loop. kLoad: the load `total` (sum of p) is imposed: the gap is made zero-mean on the elastic set,
+  // which fixes the flat, and p rescaled to the load. Else the flat's height is separation_: no mean taken
+  // out, no rescaling. kHard: pressures capped at hardness_ (separation control only: under load control
+  // the cap is met by a search on the flat's height, see PolonskyKeer::solve).
+  template <bool kLoad, bool kHard>
+  Outcome iterate(double total, double tolerance, Index max_iterations) {
+    static_assert(!(kLoad && kHard));
+    const Index nx = grid_.nx;
+    const T* const h = h_.data();
+    T* const g = g_.data();
+    T* const t = t_.data();
+    const T hardness = kHard ? static_cast<T>(hardness_) : std::numeric_limits<T>::infinity();
+    const T offset = kLoad ? T(0) : static_cast<T>(separation_);  // g = offset - h + u
+
+    // Consuming u = G q (unscaled): the new pressure s q, its change from s_old q_old, the gap, its moments.
+    const T* q_new = nullptr;
+    const T* q_old = nullptr;
+    T s_new = 0, s_old = 0;
+    auto gap = [&](Index first, Index rows, const T* u, Index ld, int thread) {
+      Partial& part = partial_[static_cast<std::size_t>(thread)];
+      const T sn = s_new, so = s_old;
+      for (Index r = 0; r < rows; ++r) {
+        const Index i0 = (first + r) * nx;
+        gap_rows<kLoad, kHard>(part, q_new + i0, q_old + i0, u + r * ld, h + i0, g + i0, nx, sn, so, offset,
+                               hardness);
+      }
+    };
+    // Producing t = g - gbar + beta t on the elastic set (0 elsewhere).
+    const T* q_cur = nullptr;
+    T s_cur = 0, gbar = 0, beta = 0;
+    auto direction = [&](Index first, Index rows, T* buffer, Index ld, int thread) {
+      Partial& part = partial_[static_cast<std::size_t>(thread)];
+      const T sc = s_cur, gb = gbar, b = beta;
+      for (Index r = 0; r < rows; ++r) {
+        const Index i0 = (first + r) * nx;
+        direction_row<kHard>(part, q_cur + i0, g + i0, t + i0, buffer + r * ld, nx, sc, gb, b, hardness);
+      }
+    };
+    // Consuming r = G t: its sum on the elastic set (its mean is taken out: PK's step for the unknown flat).
+    auto response = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
+      Partial& part = partial_[static_cast<std::size_t>(thread)];
+      for (Index r = 0; r < rows; ++r)
+        response_row(part, q_cur + (first + r) * nx, buffer + r * ld, nx);
+    };
+    // Producing the update q = max(p - tau t, 0) (capped at H); nodes out of contact that the surface
+    // penetrates enter with -tau g (PK eq. 14), plastic nodes that open leave with H - tau g.
+    T tau = 0, tau_enter = 0;
+    T* q_next = nullptr;
+    auto update = [&](Index first, Index rows, T* buffer, Index ld, int thread) {
+      Partial& part = partial_[static_cast<std::size_t>(thread)];
+      const T sc = s_cur, step = tau, enter = tau_enter, gb = gbar;
+      for (Index r = 0; r < rows; ++r) {
+        const Index i0 = (first + r) * nx;
+        update_row<kHard>(part, q_cur + i0, t + i0, g + i0, q_next + i0, buffer + r * ld, nx, sc, step, enter,
+                          gb, hardness);
+      }
+    };
+    auto copy_in = [&](Index first, Index rows, T* buffer, Index ld, int) {
+      for (Index r = 0; r < rows; ++r)
+        std::copy_n(q_new + (first + r) * nx, nx, buffer + r * ld);
+    };
+    // Under load control the new pressure is rescaled to the load: its sum is known once every row is
+    // produced, before any is consumed.
+    auto rescale = [&] {
+      double sum = 0;
+      for (const Partial& part : partial_)
+        sum += part.q_sum;
+      s_new = kLoad ? static_cast<T>(sum > 0 ? total / sum : 0.0) : T(1);
+    };
+
+    // The first gap, of the starting pressure.
+    q_new = q_old = q_[cur_].data();
+    s_new = s_old = static_cast<T>(s_[cur_]);
+    clear_partials();
+    convolution_->apply(Producer(copy_in), Consumer(gap));
+    Moments moments = combine_moments<kLoad>();
+
+    double g_norm_old = 1, delta = 0, change = 0;  // delta = 0: the first step is steepest descent
+    Outcome outcome;
+    Index iteration = 0;
+    for (;;) {
+      if (iteration > 0) {
+        // PK's criterion: the relative change of the pressure in the last iteration.
+        change = moments.sum > 0 ? moments.change / moments.sum
+                                 : (moments.change == 0 ? 0.0 : std::numeric_limits<double>::infinity());
+        if (change < tolerance) {
+          outcome.converged = true;
+          break;
+        }
+      }
+      if (iteration == max_iterations) break;
+      if (kLoad && moments.elastic == 0) throw Error("Polonsky-Keer: the contact set became empty");
+      // The gap made zero-mean on the elastic set (load control), the conjugate direction there (PK eq. 11),
+      // restarted after the set grew (delta = 0).
+      q_cur = q_[cur_].data();
+      s_cur = static_cast<T>(s_[cur_]);
+      gbar = static_cast<T>(moments.g_mean);
+      beta = static_cast<T>(delta * moments.g_norm / g_norm_old);
+      g_norm_old = moments.g_norm;
+      clear_partials();
+      const double t_r =
+          convolution_->apply(Producer(direction), kLoad ? Consumer(response) : Consumer(), Hook(), true);
+      double gt = 0, t_sum = 0, r_sum = 0;
+      for (const Partial& part : partial_) {
+        gt += part.gt;
+        t_sum += part.t_sum;
+        r_sum += part.r_sum;
+      }
+      // t . (r - rbar) on the elastic set; t is zero elsewhere, so t . r is the operator's own product.
+      const double tr = kLoad ? t_r - r_sum / moments.elastic * t_sum : t_r;
+      if (kLoad && !(tr > 0)) {  // no descent left: the gap is already zero on the contact set
+        outcome.converged = true;
+        break;
+      }
+      // The step. Nodes entering (or, plastic, leaving) the set take the step of the descent; without one
+      // (separation control, no elastic node to descend on) the stiffness of one pixel, 1/G(0).
+      tau = tr > 0 ? static_cast<T>(gt / tr) : T(0);
+      tau_enter = tr > 0 ? tau : static_cast<T>(1 / convolution_->self_response());
+
+      // The update, and with it the next gap.
+      const int next = 1 - cur_;
+      q_next = q_[next].data();
+      q_new = q_next;
+      q_old = q_cur;
+      s_old = s_cur;
+      clear_partials();
+      convolution_->apply(Producer(update), Consumer(gap), Hook(rescale));
+      cur_ = next;
+      s_[cur_] = static_cast<double>(s_new);
+      double entered = 0;
+      for (const Partial& part : partial_)
+        entered += part.entered;
+      delta = entered > 0 ? 0 : 1;
+      moments = combine_moments<kLoad>();
+      ++iteration;
+    }
+    outcome.iterations = iteration;
+    outcome.change = change;
+    if constexpr (kLoad) {
+      separation_ = -moments.g_mean;  // the flat, from the mean gap on the contact set
+      gap_offset_ = separation_;      // g holds u - h: the gap is g + d
+    } else {
+      gap_offset_ = 0;  // g holds d - h + u already
+    }
+    return outcome;
+  }
+
+  // The element-wise work of the passes, a row at a time (restrict: nothing aliases). Branch-free, so that
+  // the compiler vectorises: the sets are comparisons of the pressure, not stored masks.
+
+  // Consuming u: gap g = s u - h + offset, change of the pressure, and the moments of the gap on the elastic
+  // set. Under load control the mean and the sum of squares about the mean are needed; a sum of squares
+  // about a fixed shift loses nothing when the shift is one of the values (the spread about it is the spread
+  // about the mean), so each thread shifts by the first elastic gap it meets and the threads' moments are
+  // combined exactly (Chan et al.). Separation control needs no mean: the sum of g^2.
+  template <bool kLoad, bool kHard>
+  CB_KERNEL static void gap_rows(Partial& part, const T* __restrict qn, const T* __restrict qo,
+                                 const T* __restrict u, const T* __restrict h, T* __restrict g, Index nx,
+                                 T s_new, T s_old, T offset, T hardness) {
+    if (kLoad && !part.has_shift) {
+      for (Index x = 0; x < nx; ++x)
+        if (qn[x] > 0) {
+          part.shift = static_cast<double>(s_new * u[x] - h[x] + offset);
+          part.has_shift = true;
+          break;
+        }
+    }
+    const double shift = kLoad ? part.shift : 0.0;
+    double change = 0, sum = 0, s1 = 0, s2 = 0, elastic = 0, plastic = 0;
+#pragma omp simd reduction(+ : change, sum, s1, s2, elastic, plastic)
+    for (Index x = 0; x < nx; ++x) {
+      const T p = s_new * qn[x];
+      change += static_cast<double>(std::abs(p - s_old * qo[x]));
+      sum += static_cast<double>(p);
+      const T gv = s_new * u[x] - h[x] + offset;
+      g[x] = gv;
+      const bool in = kHard ? (p > 0) & (p < hardness) : p > 0;
+      const double d = in ? static_cast<double>(gv) - shift : 0.0;
+      s1 += d;
+      s2 += d * d;
+      elastic += in ? 1.0 : 0.0;
+      if constexpr (kHard) plastic += p >= hardness ? 1.0 : 0.0;
+    }
+    part.change += change;
+    part.sum += sum;
+    part.s1 += s1;
+    part.s2 += s2;
+    part.elastic += elastic;
+    part.plastic += plastic;
+  }
+
+  template <bool kHard>
+  CB_KERNEL static void direction_row(Partial& part, const T* __restrict q, const T* __restrict g,
+                                      T* __restrict t, T* __restrict out, Index nx, T s, T gbar, T beta,
+                                      T hardness) {
+    double gt = 0, t_sum = 0;
+#pragma omp simd reduction(+ : gt, t_sum)
+    for (Index x = 0; x < nx; ++x) {
+      const bool in = kHard ? (q[x] > 0) & (s * q[x] < hardness) : q[x] > 0;
+      const T gc = g[x] - gbar;
+      const T tv = in ? gc + beta * t[x] : T(0);
+      t[x] = tv;
+      out[x] = tv;
+      gt += static_cast<double>(gc * tv);
+      t_sum += static_cast<double>(tv);
+    }
+    part.gt += gt;
+    part.t_sum += t_sum;
+  }
+
+  CB_KERNEL static void response_row(Partial& part, const T* __restrict q, const T* __restrict r, Index nx) {
+    double r_sum = 0;
+#pragma omp simd reduction(+ : r_sum)
+    for (Index x = 0; x < nx; ++x) {
+      const double v = static_cast<double>(r[x]);
+      r_sum += q[x] > 0 ? v : 0.0;
+    }
+    part.r_sum += r_sum;
+  }
+
+  template <bool kHard>
+  CB_KERNEL static void update_row(Partial& part, const T* __restrict qc, const T* __restrict t,
+                                   const T* __restrict g, T* __restrict qn, T* __restrict out, Index nx, T s,
+                                   T tau, T tau_enter, T gbar, T hardness) {
+    double q_sum = 0, entered = 0;
+#pragma omp simd reduction(+ : q_sum, entered)
+    for (Index x = 0; x < nx; ++x) {
+      const T p = s * qc[x];
+      const T gc = g[x] - gbar;
+      const T moved_to = -tau_enter * gc;  // entering: the penetration times the step
+      T v;
+      bool moved;
+      if constexpr (kHard) {
+        // t = 0 off the elastic set, so the step leaves plastic nodes at H and the rest at 0.
+        const T stepped = std::min(std::max(p - tau * t[x], T(0)), hardness);
+        const bool enter = (p <= 0) & (gc < 0), leave = (p >= hardness) & (gc > 0);
+        v = enter ? std::min(moved_to, hardness) : (leave ? std::max(hardness + moved_to, T(0)) : stepped);
+        moved = enter | leave;
+      } else {
+        const T stepped = std::max(p - tau * t[x], T(0));
+        moved = (p <= 0) & (gc < 0);
+        v = moved ? moved_to : stepped;
+      }
+      qn[x] = v;
+      out[x] = v;
+      q_sum += static_cast<double>(v);
+      entered += moved ? 1.0 : 0.0;
+    }
+    part.q_sum += q_sum;
+    part.entered += entered;
+  }
+
+  template <bool kLoad>
+  Moments combine_moments() const {
+    Moments m;
+    for (const Partial& part : partial_) {
+      m.change += part.change;
+      m.sum += part.sum;
+      m.elastic += part.elastic;
+      m.plastic += part.plastic;
+    }
+    if (m.elastic == 0) return m;
+    if constexpr (kLoad) {
+      double mean = 0;
+      for (const Partial& part : partial_)
+        if (part.elastic > 0) mean += part.elastic * part.shift + part.s1;
+      mean /= m.elastic;
+      double norm = 0;
+      for (const Partial& part : partial_)
+        if (part.elastic > 0) {
+          const double own = part.shift + part.s1 / part.elastic;
+          norm += part.s2 - part.s1 * part.s1 / part.elastic + part.elastic * (own - mean) * (own - mean);
+        }
+      m.g_mean = mean;
+      m.g_norm = std::max(norm, 0.0);
+    } else {
+      for (const Partial& part : partial_)
+        m.g_norm += part.s2;
+    }
+    return m;
+  }
+
+  static double q_sum(const std::vector<T>& q) {
+    double sum = 0;
+    for (const T v : q)
+      sum += static_cast<double>(v);
+    return sum;
+  }
+
+  void clear_partials() {
+    for (Partial& part : partial_)
+      part.clear();
+  }
+
+  Grid grid_;
+  std::unique_ptr<Convolution<T>> convolution_;
+  Index n_;
+  std::vector<T> h_, g_, t_;
+  std::vector<T> q_[2];
+  double s_[2] = {1, 1};
+  int cur_ = 0;
+  std::vector<Partial> partial_;
+  double height_range_ = 0, max_height_ = 0;
+  double separation_ = 0, gap_offset_ = 0;
+  double hardness_ = std::numeric_limits<double>::infinity();
+  bool warm_ = false;
+};
+
 PolonskyKeer::PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOptions options, int threads)
-    : surface_(surface.centred()),
-      options_(options),
-      half_space_(make_half_space(surface.grid(), modulus, threads)) {
+    : surface_(surface.centred()), options_(options) {
   if (!(options_.tolerance > 0) || options_.max_iterations < 1)
     throw Error("Polonsky-Keer: tolerance must be > 0 and max_iterations >= 1");
+  engine_ = std::make_unique<PolonskyKeerCore<double>>(surface_, modulus, threads);
 }
 
 PolonskyKeer::~PolonskyKeer() = default;
@@ -37,83 +553,22 @@ const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
     solution_.separation = h.maxCoeff();
     solution_.gap = solution_.separation - h;
     solution_.converged = true;
-    warm_ = false;  // nothing to start the next load from
+    engine_->forget();  // nothing to start the next load from
     solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return solution_;
   }
-  const Index n = h.size();
-  const Real total = mean_pressure * static_cast<Real>(n);  // sum of p over the nodes (pixel areas equal)
-  const Real height_range = h.maxCoeff() - h.minCoeff();
-
-  HeightMap& p = solution_.pressure;
-  if (!warm_) {
-    p = HeightMap::Constant(h.rows(), h.cols(), mean_pressure);  // cold start: uniform, the exact load
-  } else {
-    p *= total / p.sum();  // warm start: the previous pressure scaled to the new load
-  }
-  HeightMap u, g(h.rows(), h.cols()), t = HeightMap::Zero(h.rows(), h.cols()), r;
-  Real g_norm_old = 1, delta = 0, change = 0;  // delta = 0: the first step is steepest descent
-  Index iteration = 0;
-  bool converged = false;
-  for (; iteration < options_.max_iterations; ++iteration) {
-    // Gap up to the unknown flat height, made zero-mean on the contact set (which fixes the flat).
-    half_space_->apply(p, u);
-    g = u - h;
-    const BoolMap in_contact = p > 0;
-    const Index contact = in_contact.count();
-    if (contact == 0) throw Error("Polonsky-Keer: the contact set became empty");
-    const Real g_mean = in_contact.select(g, 0).sum() / static_cast<Real>(contact);
-    g -= g_mean;
-    const Real g_norm = in_contact.select(g.square(), 0).sum();
-    // Conjugate direction on the contact set (PK eq. 11), restarted after the set grew (delta = 0).
-    t = in_contact.select(g + (delta * g_norm / g_norm_old) * t, 0);
-    g_norm_old = g_norm;
-    half_space_->apply(t, r);
-    const Real r_mean = in_contact.select(r, 0).sum() / static_cast<Real>(contact);
-    r -= r_mean;
-    const Real tr = in_contact.select(t * r, 0).sum();
-    if (!(tr > 0)) {  // no descent left: the gap is already zero on the contact set
-      converged = true;
-      break;
-    }
-    const Real tau = in_contact.select(g * t, 0).sum() / tr;
-    const HeightMap p_old = p;
-    p = (p - tau * t).max(0);
-    // Points outside the contact set that the surface penetrates (negative gap) re-enter it (PK eq. 14).
-    const BoolMap overlap = (p == 0) && (g < 0) && !in_contact;
-    const bool any_overlap = overlap.any();
-    p = overlap.select(p - tau * g, p);
-    delta = any_overlap ? 0 : 1;
-    p *= total / p.sum();  // the prescribed load
-    change = (p - p_old).abs().sum() / p.sum();
-    if (change < options_.tolerance) {
-      converged = true;
-      ++iteration;
-      break;
-    }
-  }
-
-  // The solution: gap with the flat's height from the contact set, and the residual of complementarity.
-  half_space_->apply(p, u);
-  const BoolMap in_contact = p > 0;
-  const Index contact = in_contact.count();
-  const Real separation = in_contact.select(h - u, 0).sum() / static_cast<Real>(contact);
-  g = separation - h + u;
-  solution_.gap = in_contact.select(HeightMap::Zero(h.rows(), h.cols()), g);
+  const Engine::Outcome outcome =
+      engine_->solve_load(mean_pressure, options_.tolerance, options_.max_iterations);
+  engine_->write(solution_);
   solution_.mean_pressure = mean_pressure;
-  solution_.separation = separation;
-  solution_.contact_points = contact;
-  solution_.iterations = iteration;
-  solution_.change = change;
-  // Relative to the height range (to 1 m for a flat surface, whose range is 0).
-  solution_.residual = in_contact.select(g.abs(), 0).maxCoeff() / (height_range > 0 ? height_range : 1.0);
-  solution_.converged = converged;
+  solution_.iterations = outcome.iterations;
+  solution_.change = outcome.change;
+  solution_.converged = outcome.converged;
   solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!converged)
+  if (!outcome.converged)
     std::cerr << "contactbench: WARNING: Polonsky-Keer did not converge at P/A0 = " << mean_pressure
-              << " Pa in " << iteration << " iterations (relative pressure change " << change
+              << " Pa in " << outcome.iterations << " iterations (relative pressure change " << outcome.change
               << " > tolerance " << options_.tolerance << "); the result is marked converged = false\n";
-  warm_ = true;
   return solution_;
 }
 

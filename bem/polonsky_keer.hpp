@@ -4,7 +4,8 @@
 //
 // Unknowns: the pressure p >= 0 on the grid and the flat's height d above the mean plane. The gap is
 // g = d - h + u(p) >= 0 with u = G p the elastic displacement (bem/half_space.hpp); where p > 0 the gap is 0,
-// and mean(p) = the prescribed mean pressure. Each iteration costs two applications of G (two FFT pairs).
+// and mean(p) = the prescribed mean pressure. Each iteration costs two applications of G (two FFT pairs),
+// with all of its element-wise work fused into them (bem/convolution.hpp): about two FFT pairs in all.
 //
 // Convergence criterion (Polonsky & Keer's): the relative change of the pressure in one iteration,
 //   sum |p_new - p_old| / sum p_new < tolerance,
@@ -36,6 +37,7 @@ struct ContactSolution {
   Real residual = 0;  // max |gap| on the contact set / (max h - min h)
   bool converged = false;
   double seconds = 0;
+  Index plastic_points = 0;  // points at p = H (with a hardness; 0 without), part of contact_points
 };
 
 class PolonskyKeer {
@@ -54,9 +56,13 @@ class PolonskyKeer {
  private:
   Surface surface_;
   PolonskyKeerOptions options_;
-  std::unique_ptr<HalfSpace> half_space_;
   ContactSolution solution_;
-  bool warm_ = false;
+
+ public:
+  class Engine;  // the iteration, in the chosen scalar (polonsky_keer.cpp)
+
+ private:
+  std::unique_ptr<Engine> engine_;
 };
 
 }  // namespace contactbench

@@ -1,9 +1,13 @@
 // The boundary-element solver on the paper's surface A (Table 1, 256 x 256 realisation) refined to n points
-// a side by Fourier interpolation. Names: bem/<periodic|nonperiodic>/n:<n>/<solve|curve>, and the physical
-// reference bem/fft_pair/n:<N> (one r2c + c2r pair of the padded size N the operator transforms: n periodic,
-// 2n non-periodic). Counters: iterations, ms_per_iteration, fft_pairs_per_iteration (one iteration's time
-// over the time of one FFT pair of the same size, measured in this binary just before). All on kThreads
-// threads.
+// a side by Fourier interpolation. Names: bem/<periodic|nonperiodic>/n:<n>/<solve|curve|cold_curve>, and the
+// physical reference bem/fft_pair/n:<N> (one r2c + c2r pair of the padded size N the operator transforms: n
+// periodic, 2n non-periodic). `curve` solves 10 loads in increasing order, each warm-started from the last;
+// `cold_curve` solves the same 10 loads each from a cold start (a new solver), so that their `iterations`
+// (the totals) say what warm starts save. Counters: iterations, ms_per_iteration, fft_pairs_per_iteration
+// (one iteration's time over the time of one FFT pair of the same size, RealFft2d's default FFTW_ESTIMATE
+// plans, measured in this binary just before) and fft_pairs_measured_per_iteration (the same over a pair of
+// FFTW_MEASURE plans, the fastest FFTW offers: the stricter reference, since the solver's own transforms are
+// measured plans too). All on kThreads threads.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -35,11 +39,11 @@ const Surface& refined_surface_a(Index n) {
 }
 
 // Median-free but stable: the best of a few FFT pairs of the padded size, in ms.
-double fft_pair_ms(Index size) {
-  static std::map<Index, double> cache;
-  auto& slot = cache[size];
+double fft_pair_ms(Index size, FftRigor rigor = FftRigor::estimate) {
+  static std::map<std::pair<Index, FftRigor>, double> cache;
+  auto& slot = cache[{size, rigor}];
   if (slot == 0) {
-    RealFft2d fft(size, size, kThreads);
+    RealFft2d fft(size, size, kThreads, rigor);
     fft.real().setRandom();
     double best = 1e300;
     for (int repeat = 0; repeat < 5; ++repeat) {
@@ -64,32 +68,41 @@ void fft_pair(benchmark::State& state, Index size) {
   }
 }
 
-void solve(benchmark::State& state, Index n, bool periodic, bool curve) {
+enum class Run { solve, curve, cold_curve };
+
+void solve(benchmark::State& state, Index n, bool periodic, Run run) {
   const Surface surface = refined_surface_a(n).with_periodic(periodic);
   const Index padded = periodic ? n : 2 * n;
-  const double pair_ms = fft_pair_ms(padded);
+  const double pair_ms = fft_pair_ms(padded), measured_pair_ms = fft_pair_ms(padded, FftRigor::measure);
+  const PolonskyKeerOptions options{.tolerance = 1e-8, .max_iterations = 20000};
   Index iterations = 0;
   double seconds = 0;
   for (auto _ : state) {
-    PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-8, .max_iterations = 20000}, kThreads);
     iterations = 0;
     seconds = 0;
-    if (curve) {
-      for (int k = 1; k <= 10; ++k) {  // 10 loads from 0.001 to 0.01, each warm-started from the last
-        const ContactSolution& s = solver.solve(kModulus * 0.001 * k);
-        iterations += s.iterations;
-        seconds += s.seconds;
-      }
-    } else {
+    if (run == Run::solve) {
+      PolonskyKeer solver(surface, kModulus, options, kThreads);
       const ContactSolution& s = solver.solve(kModulus * kLoad);
       iterations = s.iterations;
       seconds = s.seconds;
+    } else {
+      // 10 loads from 0.001 to 0.01: warm, each from the last solution; cold, each by a new solver.
+      PolonskyKeer warm(surface, kModulus, options, kThreads);
+      for (int k = 1; k <= 10; ++k) {
+        std::unique_ptr<PolonskyKeer> cold;
+        if (run == Run::cold_curve)
+          cold = std::make_unique<PolonskyKeer>(surface, kModulus, options, kThreads);
+        const ContactSolution& s = (cold ? *cold : warm).solve(kModulus * 0.001 * k);
+        iterations += s.iterations;
+        seconds += s.seconds;
+      }
     }
   }
   const double ms_per_iteration = 1e3 * seconds / static_cast<double>(std::max<Index>(iterations, 1));
   state.counters["iterations"] = static_cast<double>(iterations);
   state.counters["ms_per_iteration"] = ms_per_iteration;
   state.counters["fft_pairs_per_iteration"] = ms_per_iteration / pair_ms;
+  state.counters["fft_pairs_measured_per_iteration"] = ms_per_iteration / measured_pair_ms;
 }
 
 void register_all() {
@@ -99,10 +112,11 @@ void register_all() {
       benchmark::RegisterBenchmark(("bem/fft_pair/n:" + std::to_string(padded)).c_str(), fft_pair, padded)
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime();
-      for (const bool curve : {false, true}) {
+      for (const auto& [run, label] : {std::pair{Run::solve, "solve"}, std::pair{Run::curve, "curve"},
+                                       std::pair{Run::cold_curve, "cold_curve"}}) {
         const std::string name = std::string("bem/") + (periodic ? "periodic" : "nonperiodic") +
-                                 "/n:" + std::to_string(n) + (curve ? "/curve" : "/solve");
-        benchmark::RegisterBenchmark(name.c_str(), solve, n, periodic, curve)
+                                 "/n:" + std::to_string(n) + "/" + label;
+        benchmark::RegisterBenchmark(name.c_str(), solve, n, periodic, run)
             ->Unit(benchmark::kMillisecond)
             ->UseRealTime()
             ->Iterations(1);  // seconds to minutes a run at the larger sizes

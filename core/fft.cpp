@@ -24,6 +24,7 @@ void initialise_fftw_threads_once() {
   static std::once_flag once;
   std::call_once(once, [] {
     if (fftw_init_threads() == 0) throw Error("FFTW: fftw_init_threads failed");
+    if (fftwf_init_threads() == 0) throw Error("FFTW: fftwf_init_threads failed");
   });
 }
 
@@ -88,6 +89,11 @@ void RealFft2d::backward(const SpectrumMap& in, HeightMap& out) {
   spectrum() = in;
   backward();
   out = real();
+}
+
+std::unique_lock<std::mutex> lock_fftw_planner() {
+  initialise_fftw_threads_once();
+  return std::unique_lock<std::mutex>(planner_mutex());
 }
 
 RealFft2d& cached_fft(Index nx, Index ny, int threads) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 
 #include <fftw3.h>
 
@@ -53,6 +54,12 @@ class RealFft2d {
 
 // A plan of this shape and thread count for the calling thread, made on first use and kept for reuse.
 RealFft2d& cached_fft(Index nx, Index ny, int threads = 1);
+
+// For code that makes its own FFTW plans (double fftw_* or single fftwf_*): FFTW's planners are not
+// thread-safe, so every plan creation and destruction must hold this process-wide lock, the one RealFft2d
+// holds. Taking it also initialises FFTW's thread support for both precisions (once), so that
+// fftw_plan_with_nthreads / fftwf_plan_with_nthreads may be called under it.
+std::unique_lock<std::mutex> lock_fftw_planner();
 
 // The backward transform with a result that is bit-identical for any thread count: the 2D transform is done
 // as 1D transforms over fixed chunks of lines, each chunk by the same single-threaded plan, so the
