@@ -2,7 +2,8 @@
 # Runs the Google Benchmark harnesses (2 threads, medians of repetitions) and records them under
 # results/bench/: <name>.json (Google Benchmark's output, with commit, date, threads and machine in its
 # context) and <name>.md (tables with ratios to the references measured in the same run).
-# Usage: scripts/bench.sh [labelling|sweep ...]   (default: all). Takes about 15 minutes for all.
+# Usage: scripts/bench.sh [labelling|sweep|bem ...]   (default: all). Takes about 15 minutes for labelling and
+# sweep, and as long again for bem.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -14,14 +15,14 @@ if ! dpkg-query -W -f='${Status}' libopencv-dev 2>/dev/null | grep -q "install o
   fi
 fi
 cmake --preset release >/dev/null
-cmake --build --preset release -j "$(nproc)" --target bench_labelling bench_sweep
+cmake --build --preset release -j "$(nproc)" --target bench_labelling bench_sweep bench_bem
 
 commit=$(git rev-parse --short HEAD)
-git diff --quiet HEAD -- core bench || commit="$commit+uncommitted"
+git diff --quiet HEAD -- core bem bench || commit="$commit+uncommitted"
 # Google Benchmark takes one comma-separated key=value list: no commas inside the values.
 machine="$(lscpu | sed -n 's/^Model name: *//p' | head -n 1 | tr ',' ' ') with $(nproc) cores"
 mkdir -p results/bench
-for name in "${@:-labelling sweep}"; do
+for name in "${@:-labelling sweep bem}"; do
   for bench in $name; do
     out=results/bench/$bench.json
     build/release/bench/bench_$bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Renders a Google Benchmark JSON of contactbench (bench_labelling or bench_sweep) as Markdown tables.
+"""Renders a Google Benchmark JSON of contactbench (bench_labelling, bench_sweep or bench_bem) as Markdown tables.
 
 Medians of the repetitions, in milliseconds, and ratios to the references measured in the same run.
 Usage: render_bench.py results/bench/labelling.json > results/bench/labelling.md
@@ -95,11 +95,57 @@ def sweep(data):
     return lines
 
 
+def median_rows(data):
+    """name -> the median aggregate row (with its counters)."""
+    return {b["run_name"]: b for b in data["benchmarks"]
+            if b.get("run_type") == "aggregate" and b.get("aggregate_name") == "median"}
+
+
+def bem(data):
+    t = medians(data)
+    rows = median_rows(data)
+    pairs = {}
+    table = defaultdict(dict)
+    for name, ms in t.items():
+        kind, f = parse(name)
+        if kind == "fft_pair":
+            pairs[int(f["n"])] = ms
+            continue
+        run = name.split("/")[3]
+        table[(int(f["n"]), kind)][run] = (ms, rows[name])
+    lines = header(data, "The boundary-element solver (Polonsky-Keer)", "scripts/bench.sh bem")
+    lines.append("Surface A (Table 1) Fourier-refined to n x n; tolerance 1e-8 on the relative pressure change. "
+                 "solve: one load, P/(E* A0) = 0.01, cold start; curve: 10 loads 0.001 ... 0.01, each warm-started "
+                 "from the last; cold curve: the same 10 loads, each from a new solver. One FFT pair: r2c + c2r of "
+                 "the padded size (n periodic, 2n non-periodic) in the same binary; FFT pairs per iteration = one "
+                 "iteration's time over that pair's (target <= 2.5; two convolutions are the floor).")
+    lines.append("")
+    lines.append("| n | boundary | solve [ms] | iterations | ms / iteration | FFT pair [ms] | FFT pairs / iteration "
+                 "| curve [ms] | curve iterations (warm) | cold curve [ms] | cold curve iterations |")
+    lines.append("|---|---|---|---|---|---|---|---|---|---|---|")
+    for key in sorted(table):
+        r = table[key]
+        solve_ms, solve_row = r.get("solve", (None, {}))
+        curve_ms, curve_row = r.get("curve", (None, {}))
+        cold_ms, cold_row = r.get("cold_curve", (None, {}))
+        padded = key[0] if key[1] == "periodic" else 2 * key[0]
+        lines.append(f"| {key[0]} | {key[1]} | {fmt(solve_ms)} | {fmt(solve_row.get('iterations'))} | "
+                     f"{fmt(solve_row.get('ms_per_iteration'))} | {fmt(pairs.get(padded))} | "
+                     f"{fmt(solve_row.get('fft_pairs_per_iteration'))} | {fmt(curve_ms)} | "
+                     f"{fmt(curve_row.get('iterations'))} | {fmt(cold_ms)} | {fmt(cold_row.get('iterations'))} |")
+    return lines
+
+
 def main():
     with open(sys.argv[1]) as f:
         data = json.load(f)
     names = [b["name"] for b in data["benchmarks"]]
-    lines = labelling(data) if names and names[0].startswith("labelling/") else sweep(data)
+    if names and names[0].startswith("labelling/"):
+        lines = labelling(data)
+    elif names and names[0].startswith("bem/"):
+        lines = bem(data)
+    else:
+        lines = sweep(data)
     print("\n".join(lines))
 
 
