@@ -12,9 +12,23 @@
 // checked together with the complementarity residual reported as `residual`: the largest |g| on the contact
 // set relative to the surface's height range. A solve that reaches the iteration cap is marked
 // converged = false and says so on stderr; it is never passed off as converged.
+//
+// Hardness (optional): a perfectly plastic cap, p <= H. Nodes at p = H are plastic: their gap may be negative
+// (the surface there flowed; the overlap is the plastic indentation) and they leave the conjugate-gradient
+// set, which is the elastic contact {0 < p < H}; a plastic node whose gap opens (g > 0) is released, as a
+// node out of contact that the surface penetrates enters (the standard capped PK variant: e.g. Almqvist et
+// al., Tribol. Int. 40, 2007; Weber et al., Nat. Commun. 9, 2018). Rescaling the pressure to the load, PK's
+// way of imposing it, does not commute with the cap, so under load control the cap is met the way a
+// rigid-body approach is: the capped problem is solved for the flat's height d (separation control, where
+// the CG needs neither the mean taken out nor the rescaling, and the cap is a plain projection onto
+// [0, H]), and d is searched (bracketed, then regula falsi with the Illinois modification) until the mean
+// pressure is the load to the relative tolerance; the elastic pressures are then rescaled to impose it
+// exactly. The search starts from the elastic solution, which is the answer when its largest pressure is at
+// most H (then no capped code runs at all). Without a hardness, nothing of this runs.
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "bem/half_space.hpp"
 #include "core/surface.hpp"
@@ -24,20 +38,24 @@ namespace contactbench {
 struct PolonskyKeerOptions {
   Real tolerance = 1e-10;  // on the relative change of the pressure (see above)
   Index max_iterations = 20000;
+  // The indentation hardness H [Pa] of a perfectly plastic cap p <= H (see above); none: purely elastic.
+  // A mean pressure P/A0 >= H is refused: the whole surface would be plastic (full plastic contact, p = H
+  // everywhere, the flat's height undetermined).
+  std::optional<Real> hardness = std::nullopt;
 };
 
 struct ContactSolution {
   HeightMap pressure;        // [Pa]
-  HeightMap gap;             // [m], 0 on the contact set
+  HeightMap gap;             // [m], 0 on the contact set (plastic points included)
   Real mean_pressure = 0;    // prescribed P/A0 [Pa]
   Real separation = 0;       // d: the flat's height above the mean plane of the heights [m]
-  Index contact_points = 0;  // points with p > 0
-  Index iterations = 0;
-  Real change = 0;    // the last relative change of the pressure
-  Real residual = 0;  // max |gap| on the contact set / (max h - min h)
+  Index contact_points = 0;  // points with p > 0 (with a hardness, the plastic ones too)
+  Index iterations = 0;      // with a hardness: of every solve the search made, the elastic one included
+  Real change = 0;           // the last relative change of the pressure
+  Real residual = 0;         // max |gap| on the (elastic) contact set / (max h - min h)
   bool converged = false;
   double seconds = 0;
-  Index plastic_points = 0;  // points at p = H (with a hardness; 0 without), part of contact_points
+  Index plastic_points = 0;  // points at p = H (with a hardness; 0 without), counted in contact_points too
 };
 
 class PolonskyKeer {

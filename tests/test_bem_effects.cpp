@@ -1,0 +1,151 @@
+// The Polonsky-Keer solver's options beyond the elastic load-controlled contact (bem/polonsky_keer.hpp): a
+// perfectly plastic pressure cap (hardness), checked in its two limits (very hard: elastic; very soft: the
+// bearing area) and on a sphere.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "bem/polonsky_keer.hpp"
+#include "core/error.hpp"
+#include "core/generation.hpp"
+
+namespace contactbench {
+namespace {
+
+constexpr Real pi = std::numbers::pi;
+constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* [Pa]
+
+// A random rough surface: the paper's surface A spectrum on n x n points over 100 um (seeded).
+Surface rough_surface(Index n, bool periodic) {
+  const Grid grid{.nx = n, .ny = n, .lx = 100e-6, .ly = 100e-6, .periodic = true};
+  return generate_surface(grid, paper::surface_a(), 7).with_periodic(periodic);
+}
+
+// A sphere of radius R (its paraboloidal cap) centred on an n x n non-periodic grid of pixels dx.
+Surface sphere(Index n, Real dx, Real radius) {
+  const Grid grid{.nx = n, .ny = n, .lx = n * dx, .ly = n * dx, .periodic = false};
+  HeightMap h(n, n);
+  for (Index iy = 0; iy < n; ++iy)
+    for (Index ix = 0; ix < n; ++ix) {
+      const Real x = (ix - n / 2) * dx, y = (iy - n / 2) * dx;
+      h(iy, ix) = -(x * x + y * y) / (2 * radius);
+    }
+  return Surface(grid, h);
+}
+
+TEST(Hardness, VeryHardReproducesTheElasticSolution) {
+  // A cap far above every elastic pressure changes nothing: the elastic solution is the answer, to the
+  // solver's tolerance. Both operators, and a cap just above the largest elastic pressure too.
+  for (const bool periodic : {true, false}) {
+    const Surface surface = rough_surface(64, periodic);
+    const Real load = 0.02 * kModulus * 0.05;  // P/A0: a few percent of contact
+    PolonskyKeer elastic(surface, kModulus, {.tolerance = 1e-10});
+    const ContactSolution reference = elastic.solve(load);
+    ASSERT_TRUE(reference.converged);
+    const Real largest = reference.pressure.maxCoeff();
+    for (const Real factor : {1e6, 1.001}) {
+      PolonskyKeer capped(surface, kModulus, {.tolerance = 1e-10, .hardness = factor * largest});
+      const ContactSolution& s = capped.solve(load);
+      ASSERT_TRUE(s.converged) << periodic << " " << factor;
+      EXPECT_EQ(s.plastic_points, 0);
+      EXPECT_EQ(s.contact_points, reference.contact_points);
+      EXPECT_LT((s.pressure - reference.pressure).abs().maxCoeff(), 1e-9 * largest);
+      EXPECT_NEAR(s.separation, reference.separation, 1e-9 * surface.heights().maxCoeff());
+    }
+  }
+}
+
+TEST(Hardness, CapJustBelowThePeakIsCloseToElastic) {
+  // A cap at 99 % of the largest elastic pressure goes through the search on the flat's height (the
+  // capped solves): the peak becomes plastic and the rest barely moves (measured: one plastic point, the
+  // same contact count; allow 0.5 % of it).
+  const Surface surface = rough_surface(64, true);
+  const Real load = 0.02 * kModulus * 0.05;
+  PolonskyKeer elastic(surface, kModulus, {.tolerance = 1e-10});
+  const ContactSolution reference = elastic.solve(load);
+  const Real hardness = 0.99 * reference.pressure.maxCoeff();
+  PolonskyKeer capped(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness});
+  const ContactSolution& s = capped.solve(load);
+  ASSERT_TRUE(s.converged);
+  EXPECT_GT(s.plastic_points, 0);
+  EXPECT_LE(s.pressure.maxCoeff(), hardness);
+  EXPECT_NEAR(s.pressure.mean(), load, 1e-12 * load);  // imposed exactly at the end
+  EXPECT_NEAR(static_cast<Real>(s.contact_points), static_cast<Real>(reference.contact_points),
+              0.005 * static_cast<Real>(reference.contact_points));
+  EXPECT_LT(s.residual, 1e-8);
+}
+
+TEST(Hardness, VerySoftTendsToTheBearingArea) {
+  // H far below the elastic contact pressures (1e-4 of the largest): the displacements H dx/E* are far
+  // smaller than the spacing of the heights, so the contact is the bearing area: P/H of the area, and the
+  // set {h > d} of the highest points. Load P/A0 = 0.2 H: 20 % of the points.
+  for (const bool periodic : {true, false}) {
+    const Index n = 64;
+    const Surface surface = rough_surface(n, periodic);
+    const Real scale = 0.05 * kModulus;  // pressures of the elastic contact: E* times a slope
+    const Real hardness = 1e-4 * scale, load = 0.2 * hardness;
+    PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness});
+    const ContactSolution& s = solver.solve(load);
+    ASSERT_TRUE(s.converged) << periodic;
+    const Index points = n * n;
+    // Area: all but the few elastic points are at H, so the contact is P/H of the area up to those few
+    // (measured: 1 elastic point of 820, both operators); allow 4 points, 0.1 % of the area.
+    const Real fraction = static_cast<Real>(s.contact_points) / static_cast<Real>(points);
+    EXPECT_NEAR(fraction, load / hardness, 4.0 / static_cast<Real>(points)) << periodic;
+    EXPECT_GE(s.plastic_points, s.contact_points - 4) << periodic;
+    EXPECT_NEAR(s.pressure.mean(), load, 1e-12 * load);
+    // The set: the k highest points, k = the contact count. The displacements (at most H times the contact's
+    // size over E*, 2e-10 m, and smooth) could only swap points whose heights differ by less than their
+    // differences; the heights about the level are 1.3e-10 m apart (measured: 0 mismatches); allow 2 points.
+    const HeightMap& h = solver.surface().heights();
+    std::vector<Real> sorted(h.data(), h.data() + h.size());
+    std::sort(sorted.begin(), sorted.end(), std::greater<>());
+    const Real level = sorted[static_cast<std::size_t>(s.contact_points) - 1];  // lowest point inside
+    Index mismatches = 0;
+    for (Index i = 0; i < points; ++i)
+      mismatches += (s.pressure.data()[i] > 0) != (h.data()[i] >= level);
+    EXPECT_LE(mismatches, 2) << periodic;
+  }
+}
+
+TEST(Hardness, SphereBelowItsHertzPeakIsCappedAndWider) {
+  // Hertz: a = 32 pixels, p0 = 3P/(2 pi a^2). With H = 0.7 p0 the pressure is flat at H in a plastic core,
+  // the contact is wider than Hertz's, and at least P/H in area (p <= H everywhere).
+  const Index n = 128;
+  const Real dx = 1e-6, radius = 1e-3, a = 32 * dx;
+  const Real load = 4 * kModulus * a * a * a / (3 * radius);
+  const Real p0 = 3 * load / (2 * pi * a * a), hardness = 0.7 * p0;
+  const Surface surface = sphere(n, dx, radius);
+  const Real area = surface.grid().nominal_area();
+  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness});
+  const ContactSolution& s = solver.solve(load / area);
+  ASSERT_TRUE(s.converged) << s.iterations;
+  EXPECT_LE(s.pressure.maxCoeff(), hardness);
+  EXPECT_EQ(s.pressure.maxCoeff(), hardness);  // the core sits at H exactly
+  EXPECT_GT(s.plastic_points, 0);
+  const Real contact_area = static_cast<Real>(s.contact_points) * dx * dx;
+  EXPECT_GT(contact_area, load / hardness);
+  // Wider than Hertz by more than the half-pixel resolution of the edge (1.6 % of a; measured: +4.0 %).
+  const Real contact_radius = std::sqrt(contact_area / pi);
+  EXPECT_GT(contact_radius, 1.03 * a);
+  EXPECT_NEAR(s.pressure.sum() * dx * dx, load, 1e-12 * load);
+  EXPECT_LT(s.residual, 1e-8);
+  // The plastic core is a disc at the centre: the apex is plastic.
+  EXPECT_EQ(s.pressure(n / 2, n / 2), hardness);
+}
+
+TEST(Hardness, RefusesFullPlasticContactAndABadHardness) {
+  const Surface surface = rough_surface(16, true);
+  PolonskyKeer solver(surface, kModulus, {.hardness = 1e9});
+  EXPECT_THROW(solver.solve(1e9), Error);  // P/A0 = H: full plastic contact
+  EXPECT_THROW(solver.solve(2e9), Error);
+  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = 0.0}), Error);
+  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = -1.0}), Error);
+  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = std::nan("")}), Error);
+}
+
+}  // namespace
+}  // namespace contactbench
