@@ -611,6 +611,39 @@ const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
   return solution_;
 }
 
+const ContactSolution& PolonskyKeer::solve_for_separation(Real separation) {
+  if (!std::isfinite(separation))
+    throw Error("Polonsky-Keer: the separation must be finite, got " + std::to_string(separation));
+  if (surface_.grid().periodic && !options_.hardness && !(separation > 0))
+    throw Error(
+        "Polonsky-Keer: on a periodic surface the separation is the mean gap and must be > 0 m (a "
+        "mean gap of zero or less needs an infinite load), got " +
+        std::to_string(separation));
+  const auto start = std::chrono::steady_clock::now();
+  const HeightMap& h = surface_.heights();
+  if (separation >= h.maxCoeff()) {
+    // At or above the highest point: no contact, and p = 0 satisfies every condition (u = 0, g = d - h >= 0).
+    solution_ = ContactSolution{};
+    solution_.pressure = HeightMap::Zero(h.rows(), h.cols());
+    solution_.separation = separation;
+    solution_.gap = separation - h;
+    solution_.converged = true;
+    engine_->forget();
+    solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return solution_;
+  }
+  const Engine::Outcome outcome =
+      engine_->solve_separation(separation, options_.hardness.value_or(std::numeric_limits<Real>::infinity()),
+                                options_.tolerance, options_.max_iterations);
+  solution_.mean_pressure = engine_->write(solution_);
+  solution_.iterations = outcome.iterations;
+  solution_.change = outcome.change;
+  solution_.converged = outcome.converged;
+  solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!outcome.converged) warn_not_converged("separation [m]", separation, solution_, options_.tolerance);
+  return solution_;
+}
+
 namespace {
 
 // The capped solution under load control: the flat's height d searched, each trial a capped solve under

@@ -25,6 +25,17 @@
 // pressure is the load to the relative tolerance; the elastic pressures are then rescaled to impose it
 // exactly. The search starts from the elastic solution, which is the answer when its largest pressure is at
 // most H (then no capped code runs at all). Without a hardness, nothing of this runs.
+//
+// Separation control (solve_for_separation): the flat's height d above the mean plane of the heights is
+// imposed and the load is the unknown; the CG then takes no mean out of the gap and does not rescale the
+// pressure (PK's two steps for an unknown d and a known load). Why d and not the mean gap: in the periodic
+// case they are the same thing (the operator's q = 0 mode is zero, so the displacement has zero mean and
+// the mean gap is d - mean(h) + mean(u) = d), and there d must be > 0 (a mean gap of zero or less needs an
+// infinite load; refused, unless a hardness bounds the load); in the non-periodic case d is the rigid-body
+// approach measured from the undeformed surface (the displacement vanishes far away; the approach of the
+// highest point is max h - d, Hertz's and Sneddon's delta), while the mean gap over the window would
+// depend on the displacement of the whole window, a poor thing to prescribe. Solving for the d that a
+// load-controlled solve reported gives that load back (tests/test_bem_effects.cpp).
 #pragma once
 
 #include <memory>
@@ -47,8 +58,8 @@ struct PolonskyKeerOptions {
 struct ContactSolution {
   HeightMap pressure;        // [Pa]
   HeightMap gap;             // [m], 0 on the contact set (plastic points included)
-  Real mean_pressure = 0;    // prescribed P/A0 [Pa]
-  Real separation = 0;       // d: the flat's height above the mean plane of the heights [m]
+  Real mean_pressure = 0;    // P/A0 [Pa]: prescribed (solve), or the result (solve_for_separation)
+  Real separation = 0;       // d: the flat's height above the mean plane of the heights [m] (found or given)
   Index contact_points = 0;  // points with p > 0 (with a hardness, the plastic ones too)
   Index iterations = 0;      // with a hardness: of every solve the search made, the elastic one included
   Real change = 0;           // the last relative change of the pressure
@@ -67,6 +78,11 @@ class PolonskyKeer {
   // Solves for the mean pressure P/A0 [Pa] (>= 0; 0 gives no contact), starting from the previous solution
   // when there is one (load stepping: solve increasing loads in order).
   const ContactSolution& solve(Real mean_pressure);
+
+  // Solves with the flat at height `separation` [m] above the mean plane of the heights (the d of
+  // ContactSolution::separation; see above), the load unknown: solution().mean_pressure is the resulting
+  // P/A0. Warm-started like solve(). A flat at or above the highest point touches nothing (zero pressure).
+  const ContactSolution& solve_for_separation(Real separation);
 
   const ContactSolution& solution() const { return solution_; }
   const Surface& surface() const { return surface_; }
