@@ -550,7 +550,14 @@ PolonskyKeer::PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOpt
   if (options_.hardness && !(std::isfinite(*options_.hardness) && *options_.hardness > 0))
     throw Error("Polonsky-Keer: the hardness must be finite and > 0 Pa, got " +
                 std::to_string(*options_.hardness));
-  engine_ = std::make_unique<PolonskyKeerCore<double>>(surface_, modulus, threads);
+  if (options_.single_precision && options_.tolerance < kSinglePrecisionTolerance)
+    throw Error("Polonsky-Keer: single precision cannot reach a relative pressure change of " +
+                std::to_string(options_.tolerance) + " (float resolves about 1e-7); use a tolerance >= " +
+                std::to_string(kSinglePrecisionTolerance) + " or double precision");
+  if (options_.single_precision)
+    engine_ = std::make_unique<PolonskyKeerCore<float>>(surface_, modulus, threads);
+  else
+    engine_ = std::make_unique<PolonskyKeerCore<double>>(surface_, modulus, threads);
 }
 
 PolonskyKeer::~PolonskyKeer() = default;

@@ -1,6 +1,7 @@
 // The Polonsky-Keer solver's options beyond the elastic load-controlled contact (bem/polonsky_keer.hpp): a
 // perfectly plastic pressure cap (hardness), checked in its two limits (very hard: elastic; very soft: the
-// bearing area) and on a sphere; separation control, against load control and Hertz's approach.
+// bearing area) and on a sphere; separation control, against load control and Hertz's approach; single
+// precision, against double.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -236,6 +237,62 @@ TEST(Separation, AboveTheSurfaceNothingAndPeriodicNeedsAPositiveMeanGap) {
   EXPECT_TRUE(full.converged);
   EXPECT_EQ(full.contact_points, 32 * 32);
   EXPECT_GT(full.mean_pressure, 0);
+}
+
+TEST(SinglePrecision, AgreesWithDoubleToFloatsAccuracy) {
+  // A 128 x 128 random surface at P/A0 = 0.01 E* (11 % of contact), both operators: float at the smallest
+  // tolerance it accepts against double at 1e-10. Float's gap is good to about 1e-7 of the heights, so
+  // the area fraction (node count) may differ by points whose gap is that close to zero, a few in 1e3 at
+  // most: 1e-3 relative; the mean gap and the flat's height, integrals, to 1e-4 relative (measured:
+  // identical counts, mean gaps within 2e-7).
+  for (const bool periodic : {true, false}) {
+    const Surface surface = rough_surface(128, periodic);
+    const Real load = 0.01 * kModulus;
+    PolonskyKeer twice(surface, kModulus, {.tolerance = 1e-10});
+    const ContactSolution reference = twice.solve(load);
+    PolonskyKeer single(surface, kModulus,
+                        {.tolerance = kSinglePrecisionTolerance, .single_precision = true});
+    const ContactSolution& s = single.solve(load);
+    ASSERT_TRUE(s.converged) << periodic;  // float reaches its tolerance
+    EXPECT_LT(s.change, kSinglePrecisionTolerance);
+    const Real points = static_cast<Real>(reference.contact_points);
+    EXPECT_NEAR(static_cast<Real>(s.contact_points), points, 1e-3 * points) << periodic;
+    EXPECT_NEAR(s.gap.mean(), reference.gap.mean(), 1e-4 * reference.gap.mean()) << periodic;
+    EXPECT_NEAR(s.separation, reference.separation, 1e-4 * std::abs(reference.separation)) << periodic;
+    EXPECT_NEAR(s.pressure.mean(), load, 1e-6 * load);  // float sums, imposed to float's accuracy
+    EXPECT_LT(s.residual, 1e-6);
+  }
+}
+
+TEST(SinglePrecision, CappedAndSeparationControlledToo) {
+  // The other modes in float: the capped sphere (as Hardness.SphereBelowItsHertzPeakIsCappedAndWider) and
+  // the Hertz approach (as Separation.HertzLoadOfAnApproach), at float's tolerance.
+  const Index n = 128;
+  const Real dx = 1e-6, radius = 1e-3, a = 32 * dx;
+  const Real load = 4 * kModulus * a * a * a / (3 * radius);
+  const Real hardness = 0.7 * 3 * load / (2 * pi * a * a);
+  const Surface surface = sphere(n, dx, radius);
+  const Real area = surface.grid().nominal_area();
+  PolonskyKeer capped(
+      surface, kModulus,
+      {.tolerance = kSinglePrecisionTolerance, .hardness = hardness, .single_precision = true});
+  const ContactSolution& s = capped.solve(load / area);
+  ASSERT_TRUE(s.converged);
+  EXPECT_LE(s.pressure.maxCoeff(), hardness * (1 + 1e-6));  // H rounded to float
+  EXPECT_GT(s.plastic_points, 0);
+  EXPECT_NEAR(s.pressure.mean() * area, load, 1e-5 * load);
+  PolonskyKeer elastic(surface, kModulus, {.tolerance = kSinglePrecisionTolerance, .single_precision = true});
+  const Real apex = elastic.surface().heights().maxCoeff();
+  const ContactSolution& e = elastic.solve_for_separation(apex - a * a / radius);
+  ASSERT_TRUE(e.converged);
+  EXPECT_NEAR(e.mean_pressure * area, load, 3e-3 * load);
+}
+
+TEST(SinglePrecision, RefusesATolerancePastFloat) {
+  const Surface surface = rough_surface(16, true);
+  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.tolerance = 1e-7, .single_precision = true}), Error);
+  EXPECT_NO_THROW(PolonskyKeer(surface, kModulus, {.tolerance = 1e-6, .single_precision = true}));
+  EXPECT_NO_THROW(PolonskyKeer(surface, kModulus, {.tolerance = 1e-7}));  // double: fine
 }
 
 }  // namespace
