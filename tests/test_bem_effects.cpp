@@ -1,17 +1,25 @@
 // The Polonsky-Keer solver's options beyond the elastic load-controlled contact (bem/polonsky_keer.hpp): a
 // perfectly plastic pressure cap (hardness), checked in its two limits (very hard: elastic; very soft: the
 // bearing area) and on a sphere; separation control, against load control and Hertz's approach; single
-// precision, against double.
+// precision, against double; and the options of `contactbench bem` that reach them, end to end.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <sstream>
+#include <string>
 #include <vector>
+
+#include <sys/wait.h>
 
 #include "bem/polonsky_keer.hpp"
 #include "core/error.hpp"
 #include "core/generation.hpp"
+#include "core/topography_io.hpp"
 
 namespace contactbench {
 namespace {
@@ -293,6 +301,107 @@ TEST(SinglePrecision, RefusesATolerancePastFloat) {
   EXPECT_THROW(PolonskyKeer(surface, kModulus, {.tolerance = 1e-7, .single_precision = true}), Error);
   EXPECT_NO_THROW(PolonskyKeer(surface, kModulus, {.tolerance = 1e-6, .single_precision = true}));
   EXPECT_NO_THROW(PolonskyKeer(surface, kModulus, {.tolerance = 1e-7}));  // double: fine
+}
+
+// `contactbench bem` run as a user would (the binary the build made), in a folder of its own.
+class BemCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ =
+        std::filesystem::temp_directory_path() /
+        ("contactbench_bem_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::remove_all(folder_);
+    std::filesystem::create_directories(folder_);
+    surface_ = folder_ / "s.txt";
+    write_surface(surface_, rough_surface(64, true));
+  }
+  void TearDown() override { std::filesystem::remove_all(folder_); }
+
+  // Exit status and standard error of `contactbench bem <surface> <arguments>`.
+  std::pair<int, std::string> bem(const std::string& arguments) {
+    const auto err = folder_ / "stderr.txt";
+    const std::string command = std::string(CB_CLI_PATH) + " bem " + surface_.string() + " " + arguments +
+                                " >/dev/null 2>" + err.string() + " </dev/null";
+    const int raw = std::system(command.c_str());
+    std::ifstream in(err);
+    std::stringstream text;
+    text << in.rdbuf();
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
+  }
+
+  // The CSV's rows below its two header lines, split at commas; the header line itself in `header`.
+  std::vector<std::vector<std::string>> rows(const std::filesystem::path& csv, std::string& header) {
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);  // comment
+    std::getline(in, header);
+    std::vector<std::vector<std::string>> table;
+    while (std::getline(in, line)) {
+      std::vector<std::string> row;
+      std::stringstream fields(line);
+      std::string value;
+      while (std::getline(fields, value, ','))
+        row.push_back(value);
+      table.push_back(row);
+    }
+    return table;
+  }
+
+  std::filesystem::path folder_, surface_;
+};
+
+TEST_F(BemCommand, HardnessFloatAndFields) {
+  // E* = 109.9 GPa; loads 0.002 and 0.005 E* (0.22 and 0.55 GPa) under H = 2 GPa: capped, in float.
+  const auto csv = folder_ / "bem.csv";
+  const std::string prefix = (folder_ / "f").string();
+  const auto [status, err] =
+      bem("--loads 0.005,0.002 --hardness 2e9 --float --fields " + prefix + " --out " + csv.string());
+  ASSERT_EQ(status, 0) << err;
+  std::string header;
+  const auto table = rows(csv, header);
+  EXPECT_EQ(header,
+            "load,area_fraction,area_fraction_corrected,spots,mean_gap,max_pressure,separation,iterations,"
+            "residual,converged,seconds,plastic_points");
+  ASSERT_EQ(table.size(), 2u);
+  for (std::size_t k = 0; k < table.size(); ++k) {
+    ASSERT_EQ(table[k].size(), 12u);
+    EXPECT_EQ(table[k][9], "1");  // converged
+    EXPECT_LE(std::stod(table[k][5]), 2e9 * (1 + 1e-6));
+    // The fields of row k (the loads in increasing order), read back with their grid.
+    const Surface pressure = read_topography(prefix + "_load" + std::to_string(k + 1) + "_pressure.txt");
+    const Surface gap = read_topography(prefix + "_load" + std::to_string(k + 1) + "_gap.txt");
+    EXPECT_EQ(pressure.grid().nx, 64);
+    EXPECT_TRUE(pressure.grid().periodic);
+    const Real load = std::stod(table[k][0]) * 1e11 / (1 - 0.3 * 0.3);
+    EXPECT_NEAR(pressure.heights().mean(), load, 1e-5 * load);  // float's load, imposed
+    EXPECT_NEAR(gap.heights().mean(), std::stod(table[k][4]), 1e-6 * std::stod(table[k][4]));
+    EXPECT_EQ(std::stol(table[k][11]), (pressure.heights() >= 2e9 * (1 - 1e-7)).count());
+  }
+  EXPECT_LT(std::stod(table[0][0]), std::stod(table[1][0]));
+  EXPECT_GT(std::stol(table[1][11]), 0);  // the larger load has plastic points
+}
+
+TEST_F(BemCommand, WithoutHardnessNoPlasticColumn) {
+  const auto csv = folder_ / "bem.csv";
+  ASSERT_EQ(bem("--loads 0.002 --out " + csv.string()).first, 0);
+  std::string header;
+  const auto table = rows(csv, header);
+  EXPECT_EQ(header.find("plastic_points"), std::string::npos);
+  ASSERT_EQ(table.size(), 1u);
+  EXPECT_EQ(table[0].size(), 11u);
+}
+
+TEST_F(BemCommand, RefusesWhatCannotBeSolved) {
+  // Float cannot reach 1e-8; a load at the hardness is full plastic contact; H must be positive.
+  const auto [float_status, float_err] = bem("--loads 0.002 --float --tolerance 1e-8");
+  EXPECT_NE(float_status, 0);
+  EXPECT_NE(float_err.find("--tolerance"), std::string::npos) << float_err;
+  const auto [plastic_status, plastic_err] = bem("--loads 0.002,0.01 --hardness 1e9");
+  EXPECT_NE(plastic_status, 0);
+  EXPECT_NE(plastic_err.find("full plastic"), std::string::npos) << plastic_err;
+  const auto [zero_status, zero_err] = bem("--loads 0.002 --hardness 0");
+  EXPECT_NE(zero_status, 0);
+  EXPECT_NE(zero_err.find("--hardness"), std::string::npos) << zero_err;
 }
 
 }  // namespace
