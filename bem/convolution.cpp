@@ -224,8 +224,9 @@ Convolution<T>::Convolution(Index nx, Index ny, bool padded, int threads)
   for (Index row = 0; row < ny_; row += kRowsPerChunk)
     aligned = aligned && F::alignment_of(reinterpret_cast<T*>(spectrum + row * m.nxh)) ==
                              F::alignment_of(reinterpret_cast<T*>(spectrum));
-  // Measuring pays off for the thousands of transforms of a solve, and costs little for one-dimensional
-  // plans of one chunk; small lattices (tests) plan instantly.
+  // Measured plans apply 10-30 % faster than estimated ones (measured at 128^2 to 1024^2) and cost 0.25 s
+  // (256^2) to 1.3 s (1024^2, padded) to make, once per shape and process (FFTW keeps the wisdom: a load
+  // curve, or a second solver of the same grid, plans instantly). Small lattices are estimated.
   const unsigned rigor = lx_ * ly_ >= kMinPointsForThreads ? FFTW_MEASURE : FFTW_ESTIMATE;
   const unsigned flags = rigor | (aligned ? 0u : FFTW_UNALIGNED);
   const int n_x = static_cast<int>(lx_), n_y = static_cast<int>(ly_), nxh = static_cast<int>(m.nxh);

@@ -57,6 +57,9 @@ class PolonskyKeer::Engine {
   // Writes the last solution (pressure, gap, separation, counts, residual); returns the mean pressure.
   virtual double write(ContactSolution& s) const = 0;
   virtual double max_pressure() const = 0;
+  // Of the last solve: the flat's height, and the mean pressure (sum p / points).
+  virtual double separation() const = 0;
+  virtual double mean_pressure() const = 0;
 };
 
 // The iteration of PK's algorithm in scalar T (double, or float for large grids), keeping its state
@@ -170,7 +173,11 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     const Moments moments = combine_moments<true>();
     separation_ = -moments.g_mean;
     gap_offset_ = separation_;
+    last_sum_ = moments.sum;
   }
+
+  double separation() const override { return separation_; }
+  double mean_pressure() const override { return last_sum_ / static_cast<double>(n_); }
 
   double max_pressure() const override {
     T largest = 0;
@@ -320,7 +327,7 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
       q_cur = q_[cur_].data();
       s_cur = static_cast<T>(s_[cur_]);
       gbar = static_cast<T>(moments.g_mean);
-      beta = static_cast<T>(delta * moments.g_norm / g_norm_old);
+      beta = static_cast<T>(delta > 0 && g_norm_old > 0 ? moments.g_norm / g_norm_old : 0.0);
       g_norm_old = moments.g_norm;
       clear_partials();
       const double t_r =
@@ -361,6 +368,7 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     }
     outcome.iterations = iteration;
     outcome.change = change;
+    last_sum_ = moments.sum;
     if constexpr (kLoad) {
       separation_ = -moments.g_mean;  // the flat, from the mean gap on the contact set
       gap_offset_ = separation_;      // g holds u - h: the gap is g + d
@@ -456,10 +464,14 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
       T v;
       bool moved;
       if constexpr (kHard) {
-        // t = 0 off the elastic set, so the step leaves plastic nodes at H and the rest at 0.
+        // t = 0 off the elastic set, so the step leaves plastic nodes at H and the rest at 0. Nodes entering
+        // or leaving move at most halfway into [0, H]: into the elastic set, whose conjugate gradient then
+        // accounts for how they press on each other. (Moved all the way, to H or to 0, as PK's entry step
+        // would, many nodes at once overshoot together: a cycle between all plastic and all released.)
         const T stepped = std::min(std::max(p - tau * t[x], T(0)), hardness);
         const bool enter = (p <= 0) & (gc < 0), leave = (p >= hardness) & (gc > 0);
-        v = enter ? std::min(moved_to, hardness) : (leave ? std::max(hardness + moved_to, T(0)) : stepped);
+        const T middle = hardness / 2;
+        v = enter ? std::min(moved_to, middle) : (leave ? std::max(hardness + moved_to, middle) : stepped);
         moved = enter | leave;
       } else {
         const T stepped = std::max(p - tau * t[x], T(0));
@@ -526,7 +538,7 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
   int cur_ = 0;
   std::vector<Partial> partial_;
   double height_range_ = 0, max_height_ = 0;
-  double separation_ = 0, gap_offset_ = 0;
+  double separation_ = 0, gap_offset_ = 0, last_sum_ = 0;
   double hardness_ = std::numeric_limits<double>::infinity();
   bool warm_ = false;
 };
@@ -535,15 +547,43 @@ PolonskyKeer::PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOpt
     : surface_(surface.centred()), options_(options) {
   if (!(options_.tolerance > 0) || options_.max_iterations < 1)
     throw Error("Polonsky-Keer: tolerance must be > 0 and max_iterations >= 1");
-  engine_ = std::make_unique<PolonskyKeerCore<double>>(surface_, modulus, threads);
+  if (options_.hardness && !(std::isfinite(*options_.hardness) && *options_.hardness > 0))
+    throw Error("Polonsky-Keer: the hardness must be finite and > 0 Pa, got " +
+                std::to_string(*options_.hardness));
+  if (options_.single_precision && options_.tolerance < kSinglePrecisionTolerance)
+    throw Error("Polonsky-Keer: single precision cannot reach a relative pressure change of " +
+                std::to_string(options_.tolerance) + " (float resolves about 1e-7); use a tolerance >= " +
+                std::to_string(kSinglePrecisionTolerance) + " or double precision");
+  if (options_.single_precision)
+    engine_ = std::make_unique<PolonskyKeerCore<float>>(surface_, modulus, threads);
+  else
+    engine_ = std::make_unique<PolonskyKeerCore<double>>(surface_, modulus, threads);
 }
 
 PolonskyKeer::~PolonskyKeer() = default;
+
+namespace {
+
+PolonskyKeer::Engine::Outcome solve_capped(PolonskyKeer::Engine& engine, const HeightMap& heights,
+                                           const PolonskyKeerOptions& options, Real mean_pressure);
+
+void warn_not_converged(const char* what, Real value, const ContactSolution& s, Real tolerance) {
+  std::cerr << "contactbench: WARNING: Polonsky-Keer did not converge at " << what << " = " << value << " in "
+            << s.iterations << " iterations (relative pressure change " << s.change << ", tolerance "
+            << tolerance << "); the result is marked converged = false\n";
+}
+
+}  // namespace
 
 const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
   if (!(std::isfinite(mean_pressure) && mean_pressure >= 0))
     throw Error("Polonsky-Keer: the mean pressure must be finite and >= 0 Pa, got " +
                 std::to_string(mean_pressure));
+  if (options_.hardness && mean_pressure >= *options_.hardness)
+    throw Error("Polonsky-Keer: the mean pressure " + std::to_string(mean_pressure) +
+                " Pa is at or above the hardness " + std::to_string(*options_.hardness) +
+                " Pa: that is full plastic contact (p = H everywhere, the flat's height undetermined), "
+                "which has no elastic solution to compute");
   const auto start = std::chrono::steady_clock::now();
   const HeightMap& h = surface_.heights();
   if (mean_pressure == 0) {
@@ -559,17 +599,133 @@ const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
   }
   const Engine::Outcome outcome =
       engine_->solve_load(mean_pressure, options_.tolerance, options_.max_iterations);
+  Index iterations = outcome.iterations;
+  Real change = outcome.change;
+  bool converged = outcome.converged;
+  if (options_.hardness && engine_->max_pressure() > *options_.hardness) {
+    const Engine::Outcome capped = solve_capped(*engine_, surface_.heights(), options_, mean_pressure);
+    iterations += capped.iterations;
+    change = capped.change;
+    converged = converged && capped.converged;
+  }
   engine_->write(solution_);
   solution_.mean_pressure = mean_pressure;
+  solution_.iterations = iterations;
+  solution_.change = change;
+  solution_.converged = converged;
+  solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!converged) warn_not_converged("P/A0", mean_pressure, solution_, options_.tolerance);
+  return solution_;
+}
+
+const ContactSolution& PolonskyKeer::solve_for_separation(Real separation) {
+  if (!std::isfinite(separation))
+    throw Error("Polonsky-Keer: the separation must be finite, got " + std::to_string(separation));
+  if (surface_.grid().periodic && !options_.hardness && !(separation > 0))
+    throw Error(
+        "Polonsky-Keer: on a periodic surface the separation is the mean gap and must be > 0 m (a "
+        "mean gap of zero or less needs an infinite load), got " +
+        std::to_string(separation));
+  const auto start = std::chrono::steady_clock::now();
+  const HeightMap& h = surface_.heights();
+  if (separation >= h.maxCoeff()) {
+    // At or above the highest point: no contact, and p = 0 satisfies every condition (u = 0, g = d - h >= 0).
+    solution_ = ContactSolution{};
+    solution_.pressure = HeightMap::Zero(h.rows(), h.cols());
+    solution_.separation = separation;
+    solution_.gap = separation - h;
+    solution_.converged = true;
+    engine_->forget();
+    solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return solution_;
+  }
+  const Engine::Outcome outcome =
+      engine_->solve_separation(separation, options_.hardness.value_or(std::numeric_limits<Real>::infinity()),
+                                options_.tolerance, options_.max_iterations);
+  solution_.mean_pressure = engine_->write(solution_);
   solution_.iterations = outcome.iterations;
   solution_.change = outcome.change;
   solution_.converged = outcome.converged;
   solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!outcome.converged)
-    std::cerr << "contactbench: WARNING: Polonsky-Keer did not converge at P/A0 = " << mean_pressure
-              << " Pa in " << outcome.iterations << " iterations (relative pressure change " << outcome.change
-              << " > tolerance " << options_.tolerance << "); the result is marked converged = false\n";
+  if (!outcome.converged) warn_not_converged("separation [m]", separation, solution_, options_.tolerance);
   return solution_;
 }
+
+namespace {
+
+// The capped solution under load control: the flat's height d searched, each trial a capped solve under
+// separation control (warm-started from the last), until the mean pressure is the load to the tolerance.
+// Starts from the elastic solution just computed: its d carries less than the load once capped, and lower
+// flats carry more (the load is a continuous, non-increasing function of d). Leaves the engine at the
+// trial that met the tolerance, with the elastic pressures then rescaled to the load exactly.
+PolonskyKeer::Engine::Outcome solve_capped(PolonskyKeer::Engine& engine, const HeightMap& heights,
+                                           const PolonskyKeerOptions& options, Real mean_pressure) {
+  constexpr int kMaxTrials = 200;
+  const Real hardness = *options.hardness;
+  PolonskyKeer::Engine::Outcome total;
+  total.converged = true;
+  int trials = 0;
+  // The excess of the capped mean pressure over the load with the flat at d.
+  auto excess = [&](Real d) {
+    const auto o = engine.solve_separation(d, hardness, options.tolerance, options.max_iterations);
+    total.iterations += o.iterations;
+    total.change = o.change;
+    total.converged = total.converged && o.converged;
+    ++trials;
+    return engine.mean_pressure() - mean_pressure;
+  };
+  const Real target = options.tolerance * mean_pressure;
+  auto done = [&](Real f) { return std::abs(f) <= target || trials >= kMaxTrials; };
+  const Real top = heights.maxCoeff();
+  const Real range = std::max(top - heights.minCoeff(), std::numeric_limits<Real>::min());
+  // Bracket: d_hi carries at most the load, d_lo at least; steps double from the elastic approach.
+  Real d = engine.separation(), f = excess(d);
+  Real d_lo = d, f_lo = f, d_hi = d, f_hi = f;
+  // First step: the approach times the relative shortfall (a contact's load grows faster than its approach,
+  // so this overshoots a little and brackets), then doubling.
+  Real step = std::max((top - d) * std::abs(f) / mean_pressure, 1e-6 * range);
+  while (!done(f) && f < 0) {
+    d_hi = d;
+    f_hi = f;
+    d -= step;
+    step *= 2;
+    f = excess(d);
+    d_lo = d;
+    f_lo = f;
+  }
+  while (!done(f) && f_hi > 0) {  // not expected (see above), but then search upwards
+    d_lo = d;
+    f_lo = f;
+    d += step;
+    step *= 2;
+    f = excess(d);
+    d_hi = d;
+    f_hi = f;
+  }
+  // Regula falsi with the Illinois modification, bisection when it would leave the bracket; stops at the
+  // tolerance on the load, or when the bracket is a rounding error wide.
+  int side = 0;
+  while (!done(f) && d_hi - d_lo > 4 * std::numeric_limits<Real>::epsilon() * (std::abs(d_lo) + range)) {
+    d = d_hi - f_hi * (d_hi - d_lo) / (f_hi - f_lo);
+    if (!(d > d_lo && d < d_hi)) d = 0.5 * (d_lo + d_hi);
+    f = excess(d);
+    if (f >= 0) {  // carries at least the load: the new lower end
+      d_lo = d;
+      f_lo = f;
+      if (side == -1) f_hi *= 0.5;
+      side = -1;
+    } else {
+      d_hi = d;
+      f_hi = f;
+      if (side == +1) f_lo *= 0.5;
+      side = +1;
+    }
+  }
+  if (std::abs(f) > target) total.converged = false;
+  engine.impose_load(mean_pressure, hardness);
+  return total;
+}
+
+}  // namespace
 
 }  // namespace contactbench

@@ -12,9 +12,34 @@
 // checked together with the complementarity residual reported as `residual`: the largest |g| on the contact
 // set relative to the surface's height range. A solve that reaches the iteration cap is marked
 // converged = false and says so on stderr; it is never passed off as converged.
+//
+// Hardness (optional): a perfectly plastic cap, p <= H. Nodes at p = H are plastic: their gap may be negative
+// (the surface there flowed; the overlap is the plastic indentation) and they leave the conjugate-gradient
+// set, which is the elastic contact {0 < p < H}; a plastic node whose gap opens (g > 0) is released, as a
+// node out of contact that the surface penetrates enters (the standard capped PK variant: e.g. Almqvist et
+// al., Tribol. Int. 40, 2007; Weber et al., Nat. Commun. 9, 2018). Rescaling the pressure to the load, PK's
+// way of imposing it, does not commute with the cap, so under load control the cap is met the way a
+// rigid-body approach is: the capped problem is solved for the flat's height d (separation control, where
+// the CG needs neither the mean taken out nor the rescaling, and the cap is a plain projection onto
+// [0, H]), and d is searched (bracketed, then regula falsi with the Illinois modification) until the mean
+// pressure is the load to the relative tolerance; the elastic pressures are then rescaled to impose it
+// exactly. The search starts from the elastic solution, which is the answer when its largest pressure is at
+// most H (then no capped code runs at all). Without a hardness, nothing of this runs.
+//
+// Separation control (solve_for_separation): the flat's height d above the mean plane of the heights is
+// imposed and the load is the unknown; the CG then takes no mean out of the gap and does not rescale the
+// pressure (PK's two steps for an unknown d and a known load). Why d and not the mean gap: in the periodic
+// case they are the same thing (the operator's q = 0 mode is zero, so the displacement has zero mean and
+// the mean gap is d - mean(h) + mean(u) = d), and there d must be > 0 (a mean gap of zero or less needs an
+// infinite load; refused, unless a hardness bounds the load); in the non-periodic case d is the rigid-body
+// approach measured from the undeformed surface (the displacement vanishes far away; the approach of the
+// highest point is max h - d, Hertz's and Sneddon's delta), while the mean gap over the window would
+// depend on the displacement of the whole window, a poor thing to prescribe. Solving for the d that a
+// load-controlled solve reported gives that load back (tests/test_bem_effects.cpp).
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "bem/half_space.hpp"
 #include "core/surface.hpp"
@@ -24,20 +49,35 @@ namespace contactbench {
 struct PolonskyKeerOptions {
   Real tolerance = 1e-10;  // on the relative change of the pressure (see above)
   Index max_iterations = 20000;
+  // The indentation hardness H [Pa] of a perfectly plastic cap p <= H (see above); none: purely elastic.
+  // A mean pressure P/A0 >= H is refused: the whole surface would be plastic (full plastic contact, p = H
+  // everywhere, the flat's height undetermined).
+  std::optional<Real> hardness = std::nullopt;
+  // Iterate in single precision (FFTW's float transforms, float arrays; sums still in double): half the
+  // memory, and faster (measured per iteration, one thread: x1.2 at 256^2, x1.5 to x1.6 at 1024^2). Float
+  // resolves a relative change of about 1e-7 (its epsilon) and the gap g = u - h to about 1e-7 of the
+  // heights, so a tolerance below kSinglePrecisionTolerance is refused. Results agree with double precision
+  // to float's accuracy (e.g. the area fraction to 1e-3 relative, the mean gap to 1e-4;
+  // tests/test_bem_effects.cpp).
+  bool single_precision = false;
 };
+
+// The smallest tolerance single precision accepts: ten times float's epsilon (1.2e-7), with room for the
+// round-off of the sums of an iteration.
+inline constexpr Real kSinglePrecisionTolerance = 1e-6;
 
 struct ContactSolution {
   HeightMap pressure;        // [Pa]
-  HeightMap gap;             // [m], 0 on the contact set
-  Real mean_pressure = 0;    // prescribed P/A0 [Pa]
-  Real separation = 0;       // d: the flat's height above the mean plane of the heights [m]
-  Index contact_points = 0;  // points with p > 0
-  Index iterations = 0;
-  Real change = 0;    // the last relative change of the pressure
-  Real residual = 0;  // max |gap| on the contact set / (max h - min h)
+  HeightMap gap;             // [m], 0 on the contact set (plastic points included)
+  Real mean_pressure = 0;    // P/A0 [Pa]: prescribed (solve), or the result (solve_for_separation)
+  Real separation = 0;       // d: the flat's height above the mean plane of the heights [m] (found or given)
+  Index contact_points = 0;  // points with p > 0 (with a hardness, the plastic ones too)
+  Index iterations = 0;      // with a hardness: of every solve the search made, the elastic one included
+  Real change = 0;           // the last relative change of the pressure
+  Real residual = 0;         // max |gap| on the (elastic) contact set / (max h - min h)
   bool converged = false;
   double seconds = 0;
-  Index plastic_points = 0;  // points at p = H (with a hardness; 0 without), part of contact_points
+  Index plastic_points = 0;  // points at p = H (with a hardness; 0 without), counted in contact_points too
 };
 
 class PolonskyKeer {
@@ -49,6 +89,11 @@ class PolonskyKeer {
   // Solves for the mean pressure P/A0 [Pa] (>= 0; 0 gives no contact), starting from the previous solution
   // when there is one (load stepping: solve increasing loads in order).
   const ContactSolution& solve(Real mean_pressure);
+
+  // Solves with the flat at height `separation` [m] above the mean plane of the heights (the d of
+  // ContactSolution::separation; see above), the load unknown: solution().mean_pressure is the resulting
+  // P/A0. Warm-started like solve(). A flat at or above the highest point touches nothing (zero pressure).
+  const ContactSolution& solve_for_separation(Real separation);
 
   const ContactSolution& solution() const { return solution_; }
   const Surface& surface() const { return surface_; }

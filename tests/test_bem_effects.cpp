@@ -1,0 +1,408 @@
+// The Polonsky-Keer solver's options beyond the elastic load-controlled contact (bem/polonsky_keer.hpp): a
+// perfectly plastic pressure cap (hardness), checked in its two limits (very hard: elastic; very soft: the
+// bearing area) and on a sphere; separation control, against load control and Hertz's approach; single
+// precision, against double; and the options of `contactbench bem` that reach them, end to end.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+
+#include "bem/polonsky_keer.hpp"
+#include "core/error.hpp"
+#include "core/generation.hpp"
+#include "core/topography_io.hpp"
+
+namespace contactbench {
+namespace {
+
+constexpr Real pi = std::numbers::pi;
+constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* [Pa]
+
+// A random rough surface: the paper's surface A spectrum on n x n points over 100 um (seeded).
+Surface rough_surface(Index n, bool periodic) {
+  const Grid grid{.nx = n, .ny = n, .lx = 100e-6, .ly = 100e-6, .periodic = true};
+  return generate_surface(grid, paper::surface_a(), 7).with_periodic(periodic);
+}
+
+// A sphere of radius R (its paraboloidal cap) centred on an n x n non-periodic grid of pixels dx.
+Surface sphere(Index n, Real dx, Real radius) {
+  const Grid grid{.nx = n, .ny = n, .lx = n * dx, .ly = n * dx, .periodic = false};
+  HeightMap h(n, n);
+  for (Index iy = 0; iy < n; ++iy)
+    for (Index ix = 0; ix < n; ++ix) {
+      const Real x = (ix - n / 2) * dx, y = (iy - n / 2) * dx;
+      h(iy, ix) = -(x * x + y * y) / (2 * radius);
+    }
+  return Surface(grid, h);
+}
+
+TEST(Hardness, VeryHardReproducesTheElasticSolution) {
+  // A cap far above every elastic pressure changes nothing: the elastic solution is the answer, to the
+  // solver's tolerance. Both operators, and a cap just above the largest elastic pressure too.
+  for (const bool periodic : {true, false}) {
+    const Surface surface = rough_surface(64, periodic);
+    const Real load = 0.02 * kModulus * 0.05;  // P/A0: a few percent of contact
+    PolonskyKeer elastic(surface, kModulus, {.tolerance = 1e-10});
+    const ContactSolution reference = elastic.solve(load);
+    ASSERT_TRUE(reference.converged);
+    const Real largest = reference.pressure.maxCoeff();
+    for (const Real factor : {1e6, 1.001}) {
+      PolonskyKeer capped(surface, kModulus, {.tolerance = 1e-10, .hardness = factor * largest});
+      const ContactSolution& s = capped.solve(load);
+      ASSERT_TRUE(s.converged) << periodic << " " << factor;
+      EXPECT_EQ(s.plastic_points, 0);
+      EXPECT_EQ(s.contact_points, reference.contact_points);
+      EXPECT_LT((s.pressure - reference.pressure).abs().maxCoeff(), 1e-9 * largest);
+      EXPECT_NEAR(s.separation, reference.separation, 1e-9 * surface.heights().maxCoeff());
+    }
+  }
+}
+
+TEST(Hardness, CapJustBelowThePeakIsCloseToElastic) {
+  // A cap at 99 % of the largest elastic pressure goes through the search on the flat's height (the
+  // capped solves): the peak becomes plastic and the rest barely moves (measured: one plastic point, the
+  // same contact count; allow 0.5 % of it).
+  const Surface surface = rough_surface(64, true);
+  const Real load = 0.02 * kModulus * 0.05;
+  PolonskyKeer elastic(surface, kModulus, {.tolerance = 1e-10});
+  const ContactSolution reference = elastic.solve(load);
+  const Real hardness = 0.99 * reference.pressure.maxCoeff();
+  PolonskyKeer capped(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness});
+  const ContactSolution& s = capped.solve(load);
+  ASSERT_TRUE(s.converged);
+  EXPECT_GT(s.plastic_points, 0);
+  EXPECT_LE(s.pressure.maxCoeff(), hardness);
+  EXPECT_NEAR(s.pressure.mean(), load, 1e-12 * load);  // imposed exactly at the end
+  EXPECT_NEAR(static_cast<Real>(s.contact_points), static_cast<Real>(reference.contact_points),
+              0.005 * static_cast<Real>(reference.contact_points));
+  EXPECT_LT(s.residual, 1e-8);
+}
+
+TEST(Hardness, VerySoftTendsToTheBearingArea) {
+  // H far below the elastic contact pressures (1e-4 of the largest): the displacements H dx/E* are far
+  // smaller than the spacing of the heights, so the contact is the bearing area: P/H of the area, and the
+  // set {h > d} of the highest points. Load P/A0 = 0.2 H: 20 % of the points.
+  for (const bool periodic : {true, false}) {
+    const Index n = 64;
+    const Surface surface = rough_surface(n, periodic);
+    const Real scale = 0.05 * kModulus;  // pressures of the elastic contact: E* times a slope
+    const Real hardness = 1e-4 * scale, load = 0.2 * hardness;
+    PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness});
+    const ContactSolution& s = solver.solve(load);
+    ASSERT_TRUE(s.converged) << periodic;
+    const Index points = n * n;
+    // Area: all but the few elastic points are at H, so the contact is P/H of the area up to those few
+    // (measured: 1 elastic point of 820, both operators); allow 4 points, 0.1 % of the area.
+    const Real fraction = static_cast<Real>(s.contact_points) / static_cast<Real>(points);
+    EXPECT_NEAR(fraction, load / hardness, 4.0 / static_cast<Real>(points)) << periodic;
+    EXPECT_GE(s.plastic_points, s.contact_points - 4) << periodic;
+    EXPECT_NEAR(s.pressure.mean(), load, 1e-12 * load);
+    // The set: the k highest points, k = the contact count. The displacements (at most H times the contact's
+    // size over E*, 2e-10 m, and smooth) could only swap points whose heights differ by less than their
+    // differences; the heights about the level are 1.3e-10 m apart (measured: 0 mismatches); allow 2 points.
+    const HeightMap& h = solver.surface().heights();
+    std::vector<Real> sorted(h.data(), h.data() + h.size());
+    std::sort(sorted.begin(), sorted.end(), std::greater<>());
+    const Real level = sorted[static_cast<std::size_t>(s.contact_points) - 1];  // lowest point inside
+    Index mismatches = 0;
+    for (Index i = 0; i < points; ++i)
+      mismatches += (s.pressure.data()[i] > 0) != (h.data()[i] >= level);
+    EXPECT_LE(mismatches, 2) << periodic;
+  }
+}
+
+TEST(Hardness, SphereBelowItsHertzPeakIsCappedAndWider) {
+  // Hertz: a = 32 pixels, p0 = 3P/(2 pi a^2). With H = 0.7 p0 the pressure is flat at H in a plastic core,
+  // the contact is wider than Hertz's, and at least P/H in area (p <= H everywhere).
+  const Index n = 128;
+  const Real dx = 1e-6, radius = 1e-3, a = 32 * dx;
+  const Real load = 4 * kModulus * a * a * a / (3 * radius);
+  const Real p0 = 3 * load / (2 * pi * a * a), hardness = 0.7 * p0;
+  const Surface surface = sphere(n, dx, radius);
+  const Real area = surface.grid().nominal_area();
+  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness});
+  const ContactSolution& s = solver.solve(load / area);
+  ASSERT_TRUE(s.converged) << s.iterations;
+  EXPECT_LE(s.pressure.maxCoeff(), hardness);
+  EXPECT_EQ(s.pressure.maxCoeff(), hardness);  // the core sits at H exactly
+  EXPECT_GT(s.plastic_points, 0);
+  const Real contact_area = static_cast<Real>(s.contact_points) * dx * dx;
+  EXPECT_GT(contact_area, load / hardness);
+  // Wider than Hertz by more than the half-pixel resolution of the edge (1.6 % of a; measured: +4.0 %).
+  const Real contact_radius = std::sqrt(contact_area / pi);
+  EXPECT_GT(contact_radius, 1.03 * a);
+  EXPECT_NEAR(s.pressure.sum() * dx * dx, load, 1e-12 * load);
+  EXPECT_LT(s.residual, 1e-8);
+  // The plastic core is a disc at the centre: the apex is plastic.
+  EXPECT_EQ(s.pressure(n / 2, n / 2), hardness);
+}
+
+TEST(Hardness, RefusesFullPlasticContactAndABadHardness) {
+  const Surface surface = rough_surface(16, true);
+  PolonskyKeer solver(surface, kModulus, {.hardness = 1e9});
+  EXPECT_THROW(solver.solve(1e9), Error);  // P/A0 = H: full plastic contact
+  EXPECT_THROW(solver.solve(2e9), Error);
+  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = 0.0}), Error);
+  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = -1.0}), Error);
+  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = std::nan("")}), Error);
+}
+
+TEST(Separation, GivesBackTheLoadThatLoadControlFound) {
+  // Load control at P/A0 reports the flat's height d; a cold solve for that d must carry P/A0 again. Both
+  // converge to a relative pressure change of 1e-12, which fixes the pressure, hence d and the load, to
+  // about that relative accuracy times the conditioning of the contact (a few hundred at most here): 1e-6
+  // is a wide bound (measured: 6e-15 periodic, 3e-14 not), and the contact sets must be the same.
+  for (const bool periodic : {true, false}) {
+    const Surface surface = rough_surface(64, periodic);
+    const Real load = 0.02 * kModulus * 0.05;
+    PolonskyKeer by_load(surface, kModulus, {.tolerance = 1e-12});
+    const ContactSolution reference = by_load.solve(load);
+    ASSERT_TRUE(reference.converged);
+    PolonskyKeer by_separation(surface, kModulus, {.tolerance = 1e-12});
+    const ContactSolution& s = by_separation.solve_for_separation(reference.separation);
+    ASSERT_TRUE(s.converged) << periodic;
+    EXPECT_NEAR(s.mean_pressure, load, 1e-6 * load) << periodic;
+    EXPECT_NEAR(s.pressure.mean(), s.mean_pressure, 1e-12 * load);
+    EXPECT_EQ(s.separation, reference.separation);
+    EXPECT_EQ(s.contact_points, reference.contact_points) << periodic;
+    EXPECT_LT((s.pressure - reference.pressure).abs().maxCoeff(), 1e-6 * reference.pressure.maxCoeff());
+    EXPECT_LT(s.residual, 1e-10);
+    // Warm: the same solver asked back for its own d converges at once to the same load.
+    const ContactSolution& again = by_load.solve_for_separation(reference.separation);
+    EXPECT_NEAR(again.mean_pressure, load, 1e-6 * load) << periodic;
+  }
+}
+
+TEST(Separation, HertzLoadOfAnApproach) {
+  // The sphere of PolonskyKeer.HertzContactOfASphere: the approach delta = a^2/R of the apex (a = 32 pixels)
+  // must carry P = 4 E* a^3/(3 R). The load is an integral of the pressure, whose discretisation error is
+  // of order (dx/a)^2 ~ 1e-3 (load control measured the approach to below 1e-4); P ~ delta^(3/2): allow
+  // 3e-3 (measured: 5e-5).
+  const Index n = 128;
+  const Real dx = 1e-6, radius = 1e-3, a = 32 * dx;
+  const Surface surface = sphere(n, dx, radius);
+  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
+  const Real apex = solver.surface().heights().maxCoeff();
+  const ContactSolution& s = solver.solve_for_separation(apex - a * a / radius);
+  ASSERT_TRUE(s.converged) << s.iterations;
+  const Real load = 4 * kModulus * a * a * a / (3 * radius);
+  EXPECT_NEAR(s.mean_pressure * surface.grid().nominal_area(), load, 3e-3 * load);
+  const Real radius_from_nodes = std::sqrt(static_cast<Real>(s.contact_points) * dx * dx / pi);
+  EXPECT_NEAR(radius_from_nodes, a, 0.016 * a);  // the edge to half a pixel, as under load control
+  EXPECT_LT(s.residual, 1e-8);
+}
+
+TEST(Separation, WithHardnessGivesBackTheCappedLoad) {
+  // The capped sphere (H = 0.7 p0): load control searches the flat's height; solving for the height it
+  // found carries the load again, with the same plastic core (tolerance as in the elastic case; measured:
+  // 7e-14).
+  const Index n = 128;
+  const Real dx = 1e-6, radius = 1e-3, a = 32 * dx;
+  const Real load = 4 * kModulus * a * a * a / (3 * radius);
+  const Real hardness = 0.7 * 3 * load / (2 * pi * a * a);
+  const Surface surface = sphere(n, dx, radius);
+  const Real mean = load / surface.grid().nominal_area();
+  PolonskyKeer by_load(surface, kModulus, {.tolerance = 1e-12, .hardness = hardness});
+  const ContactSolution reference = by_load.solve(mean);
+  ASSERT_TRUE(reference.converged);
+  PolonskyKeer by_separation(surface, kModulus, {.tolerance = 1e-12, .hardness = hardness});
+  const ContactSolution& s = by_separation.solve_for_separation(reference.separation);
+  ASSERT_TRUE(s.converged);
+  EXPECT_NEAR(s.mean_pressure, mean, 1e-6 * mean);
+  EXPECT_EQ(s.plastic_points, reference.plastic_points);
+  EXPECT_EQ(s.contact_points, reference.contact_points);
+}
+
+TEST(Separation, AboveTheSurfaceNothingAndPeriodicNeedsAPositiveMeanGap) {
+  const Surface surface = rough_surface(32, true);
+  PolonskyKeer solver(surface, kModulus);
+  const Real top = solver.surface().heights().maxCoeff();
+  const ContactSolution& s = solver.solve_for_separation(top);
+  EXPECT_TRUE(s.converged);
+  EXPECT_EQ(s.contact_points, 0);
+  EXPECT_EQ(s.mean_pressure, 0);
+  EXPECT_GE(s.gap.minCoeff(), 0);
+  // Periodic: d is the mean gap, which no finite load brings to zero or below.
+  EXPECT_THROW(solver.solve_for_separation(0), Error);
+  EXPECT_THROW(solver.solve_for_separation(-1e-7), Error);
+  EXPECT_THROW(solver.solve_for_separation(std::nan("")), Error);
+  // Non-periodic: any height. Ten height ranges below the lowest point the window is pressed in like a
+  // punch, whose displacement dwarfs the roughness: full contact, at a finite load. (One range below is
+  // not enough: a punch sinks deeper at its centre than at its edges, and lifts off there; measured 726 of
+  // 1024 points, load control at the same load agreeing.)
+  PolonskyKeer window(rough_surface(32, false), kModulus, {.tolerance = 1e-10});
+  const Real bottom = window.surface().heights().minCoeff();
+  const ContactSolution& full = window.solve_for_separation(bottom - 10 * (top - bottom));
+  EXPECT_TRUE(full.converged);
+  EXPECT_EQ(full.contact_points, 32 * 32);
+  EXPECT_GT(full.mean_pressure, 0);
+}
+
+TEST(SinglePrecision, AgreesWithDoubleToFloatsAccuracy) {
+  // A 128 x 128 random surface at P/A0 = 0.01 E* (11 % of contact), both operators: float at the smallest
+  // tolerance it accepts against double at 1e-10. Float's gap is good to about 1e-7 of the heights, so
+  // the area fraction (node count) may differ by points whose gap is that close to zero, a few in 1e3 at
+  // most: 1e-3 relative; the mean gap and the flat's height, integrals, to 1e-4 relative (measured:
+  // identical counts, mean gaps within 2e-7).
+  for (const bool periodic : {true, false}) {
+    const Surface surface = rough_surface(128, periodic);
+    const Real load = 0.01 * kModulus;
+    PolonskyKeer twice(surface, kModulus, {.tolerance = 1e-10});
+    const ContactSolution reference = twice.solve(load);
+    PolonskyKeer single(surface, kModulus,
+                        {.tolerance = kSinglePrecisionTolerance, .single_precision = true});
+    const ContactSolution& s = single.solve(load);
+    ASSERT_TRUE(s.converged) << periodic;  // float reaches its tolerance
+    EXPECT_LT(s.change, kSinglePrecisionTolerance);
+    const Real points = static_cast<Real>(reference.contact_points);
+    EXPECT_NEAR(static_cast<Real>(s.contact_points), points, 1e-3 * points) << periodic;
+    EXPECT_NEAR(s.gap.mean(), reference.gap.mean(), 1e-4 * reference.gap.mean()) << periodic;
+    EXPECT_NEAR(s.separation, reference.separation, 1e-4 * std::abs(reference.separation)) << periodic;
+    EXPECT_NEAR(s.pressure.mean(), load, 1e-6 * load);  // float sums, imposed to float's accuracy
+    EXPECT_LT(s.residual, 1e-6);
+  }
+}
+
+TEST(SinglePrecision, CappedAndSeparationControlledToo) {
+  // The other modes in float: the capped sphere (as Hardness.SphereBelowItsHertzPeakIsCappedAndWider) and
+  // the Hertz approach (as Separation.HertzLoadOfAnApproach), at float's tolerance.
+  const Index n = 128;
+  const Real dx = 1e-6, radius = 1e-3, a = 32 * dx;
+  const Real load = 4 * kModulus * a * a * a / (3 * radius);
+  const Real hardness = 0.7 * 3 * load / (2 * pi * a * a);
+  const Surface surface = sphere(n, dx, radius);
+  const Real area = surface.grid().nominal_area();
+  PolonskyKeer capped(
+      surface, kModulus,
+      {.tolerance = kSinglePrecisionTolerance, .hardness = hardness, .single_precision = true});
+  const ContactSolution& s = capped.solve(load / area);
+  ASSERT_TRUE(s.converged);
+  EXPECT_LE(s.pressure.maxCoeff(), hardness * (1 + 1e-6));  // H rounded to float
+  EXPECT_GT(s.plastic_points, 0);
+  EXPECT_NEAR(s.pressure.mean() * area, load, 1e-5 * load);
+  PolonskyKeer elastic(surface, kModulus, {.tolerance = kSinglePrecisionTolerance, .single_precision = true});
+  const Real apex = elastic.surface().heights().maxCoeff();
+  const ContactSolution& e = elastic.solve_for_separation(apex - a * a / radius);
+  ASSERT_TRUE(e.converged);
+  EXPECT_NEAR(e.mean_pressure * area, load, 3e-3 * load);
+}
+
+TEST(SinglePrecision, RefusesATolerancePastFloat) {
+  const Surface surface = rough_surface(16, true);
+  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.tolerance = 1e-7, .single_precision = true}), Error);
+  EXPECT_NO_THROW(PolonskyKeer(surface, kModulus, {.tolerance = 1e-6, .single_precision = true}));
+  EXPECT_NO_THROW(PolonskyKeer(surface, kModulus, {.tolerance = 1e-7}));  // double: fine
+}
+
+// `contactbench bem` run as a user would (the binary the build made), in a folder of its own.
+class BemCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    folder_ =
+        std::filesystem::temp_directory_path() /
+        ("contactbench_bem_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::remove_all(folder_);
+    std::filesystem::create_directories(folder_);
+    surface_ = folder_ / "s.txt";
+    write_surface(surface_, rough_surface(64, true));
+  }
+  void TearDown() override { std::filesystem::remove_all(folder_); }
+
+  // Exit status and standard error of `contactbench bem <surface> <arguments>`.
+  std::pair<int, std::string> bem(const std::string& arguments) {
+    const auto err = folder_ / "stderr.txt";
+    const std::string command = std::string(CB_CLI_PATH) + " bem " + surface_.string() + " " + arguments +
+                                " >/dev/null 2>" + err.string() + " </dev/null";
+    const int raw = std::system(command.c_str());
+    std::ifstream in(err);
+    std::stringstream text;
+    text << in.rdbuf();
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
+  }
+
+  // The CSV's rows below its two header lines, split at commas; the header line itself in `header`.
+  std::vector<std::vector<std::string>> rows(const std::filesystem::path& csv, std::string& header) {
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);  // comment
+    std::getline(in, header);
+    std::vector<std::vector<std::string>> table;
+    while (std::getline(in, line)) {
+      std::vector<std::string> row;
+      std::stringstream fields(line);
+      std::string value;
+      while (std::getline(fields, value, ','))
+        row.push_back(value);
+      table.push_back(row);
+    }
+    return table;
+  }
+
+  std::filesystem::path folder_, surface_;
+};
+
+TEST_F(BemCommand, HardnessFloatAndFields) {
+  // E* = 109.9 GPa; loads 0.002 and 0.005 E* (0.22 and 0.55 GPa) under H = 2 GPa: capped, in float.
+  const auto csv = folder_ / "bem.csv";
+  const std::string prefix = (folder_ / "f").string();
+  const auto [status, err] =
+      bem("--loads 0.005,0.002 --hardness 2e9 --float --fields " + prefix + " --out " + csv.string());
+  ASSERT_EQ(status, 0) << err;
+  std::string header;
+  const auto table = rows(csv, header);
+  EXPECT_EQ(header,
+            "load,area_fraction,area_fraction_corrected,spots,mean_gap,max_pressure,separation,iterations,"
+            "residual,converged,seconds,plastic_points");
+  ASSERT_EQ(table.size(), 2u);
+  for (std::size_t k = 0; k < table.size(); ++k) {
+    ASSERT_EQ(table[k].size(), 12u);
+    EXPECT_EQ(table[k][9], "1");  // converged
+    EXPECT_LE(std::stod(table[k][5]), 2e9 * (1 + 1e-6));
+    // The fields of row k (the loads in increasing order), read back with their grid.
+    const Surface pressure = read_topography(prefix + "_load" + std::to_string(k + 1) + "_pressure.txt");
+    const Surface gap = read_topography(prefix + "_load" + std::to_string(k + 1) + "_gap.txt");
+    EXPECT_EQ(pressure.grid().nx, 64);
+    EXPECT_TRUE(pressure.grid().periodic);
+    const Real load = std::stod(table[k][0]) * 1e11 / (1 - 0.3 * 0.3);
+    EXPECT_NEAR(pressure.heights().mean(), load, 1e-5 * load);  // float's load, imposed
+    EXPECT_NEAR(gap.heights().mean(), std::stod(table[k][4]), 1e-6 * std::stod(table[k][4]));
+    EXPECT_EQ(std::stol(table[k][11]), (pressure.heights() >= 2e9 * (1 - 1e-7)).count());
+  }
+  EXPECT_LT(std::stod(table[0][0]), std::stod(table[1][0]));
+  EXPECT_GT(std::stol(table[1][11]), 0);  // the larger load has plastic points
+}
+
+TEST_F(BemCommand, WithoutHardnessNoPlasticColumn) {
+  const auto csv = folder_ / "bem.csv";
+  ASSERT_EQ(bem("--loads 0.002 --out " + csv.string()).first, 0);
+  std::string header;
+  const auto table = rows(csv, header);
+  EXPECT_EQ(header.find("plastic_points"), std::string::npos);
+  ASSERT_EQ(table.size(), 1u);
+  EXPECT_EQ(table[0].size(), 11u);
+}
+
+TEST_F(BemCommand, RefusesWhatCannotBeSolved) {
+  // Float cannot reach 1e-8; a load at the hardness is full plastic contact; H must be positive.
+  const auto [float_status, float_err] = bem("--loads 0.002 --float --tolerance 1e-8");
+  EXPECT_NE(float_status, 0);
+  EXPECT_NE(float_err.find("--tolerance"), std::string::npos) << float_err;
+  const auto [plastic_status, plastic_err] = bem("--loads 0.002,0.01 --hardness 1e9");
+  EXPECT_NE(plastic_status, 0);
+  EXPECT_NE(plastic_err.find("full plastic"), std::string::npos) << plastic_err;
+  const auto [zero_status, zero_err] = bem("--loads 0.002 --hardness 0");
+  EXPECT_NE(zero_status, 0);
+  EXPECT_NE(zero_err.find("--hardness"), std::string::npos) << zero_err;
+}
+
+}  // namespace
+}  // namespace contactbench
