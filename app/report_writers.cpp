@@ -133,8 +133,7 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
               ? std::string(" No reference: no errors.")
               : " Errors are relative to " + comparison.reference + ", load by load.")
       << "\n\n";
-  out << "| method | parameters | time [s] | kappa | max abs error | rms error "
-         "|\n|---|---|---:|---:|---:|---:|\n";
+  out << "| method | time [s] | kappa | max abs error | rms error |\n|---|---:|---:|---:|---:|\n";
   for (std::size_t m = 0; m < report.methods.size(); ++m) {
     const MethodResult& r = report.methods[m];
     const MethodComparison& c = comparison.methods[m];

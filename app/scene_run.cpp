@@ -70,6 +70,7 @@ struct BemProducts {
   std::vector<ContactSolution> solutions;  // fields dropped (pressure and gap emptied) to keep memory small
   std::map<int, std::vector<ContactStatistics>> statistics;  // by connectivity
   double seconds = 0;                                        // refinement + solves + statistics
+  Index points = 0;                                          // nodes of the grid solved on
 };
 
 BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, const Scene& scene,
@@ -85,11 +86,13 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, const S
                                     solved = refine(surface, stage.refine, stage.refine, options.threads);
                                   });
   if (solved.grid().periodic != stage.periodic) solved = solved.with_periodic(stage.periodic);
+  products.points = solved.grid().points();
   const std::string name = stage.name();
   products.seconds += run_stage(report, name, options.progress, [&](Clock::time_point start) {
     PolonskyKeerOptions solver_options;
     solver_options.tolerance = stage.tolerance;
     solver_options.max_iterations = stage.max_iterations;
+    solver_options.hardness = stage.hardness;  // absent: purely elastic, no capped code runs
     PolonskyKeer solver(solved, scene.material.estar, solver_options, options.threads);
     std::map<int, Labeller> labellers;
     for (const int c : connectivities)
@@ -112,13 +115,14 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, const S
   return products;
 }
 
-MethodResult bem_result(const MethodSpec& method, const BemProducts& products, const Scene& scene) {
+MethodResult bem_result(const MethodSpec& method, const BemStage& stage, const BemProducts& products,
+                        const Scene& scene) {
   const auto& spec = std::get<BemMethodSpec>(method.options);
   const std::vector<ContactStatistics>& stats = products.statistics.at(spec.connectivity);
   MethodResult result;
   result.curve.method = "bem";
   result.curve.load = scene.loads;
-  std::vector<Real> nodes, mean_gap, max_pressure, iterations, residual, converged, solve_seconds;
+  std::vector<Real> nodes, mean_gap, max_pressure, iterations, residual, converged, solve_seconds, plastic;
   for (std::size_t k = 0; k < scene.loads.size(); ++k) {
     const ContactSolution& s = products.solutions[k];
     result.curve.area_fraction.push_back(stats[k].area_fraction_corrected);
@@ -131,13 +135,15 @@ MethodResult bem_result(const MethodSpec& method, const BemProducts& products, c
     residual.push_back(s.residual);
     converged.push_back(s.converged ? 1 : 0);
     solve_seconds.push_back(s.seconds);
+    plastic.push_back(static_cast<Real>(s.plastic_points) / static_cast<Real>(products.points));
   }
   result.columns = {{"area_fraction_nodes", nodes},  {"mean_gap", mean_gap}, {"max_pressure", max_pressure},
                     {"iterations", iterations},      {"residual", residual}, {"converged", converged},
                     {"solve_seconds", solve_seconds}};
-  result.curve.parameters =
-      "Polonsky-Keer, area perimeter-corrected (node count in area_fraction_nodes), spots by " +
-      std::to_string(spec.connectivity) + "-connectivity";
+  if (spec.hardness) result.columns.emplace_back("plastic_fraction", plastic);  // nodes at p = H / all nodes
+  result.curve.parameters = "Polonsky-Keer " + stage.name().substr(4) +
+                            ", area perimeter-corrected (node count in area_fraction_nodes), spots by " +
+                            std::to_string(spec.connectivity) + "-connectivity";
   result.seconds = products.seconds;
   return result;
 }
@@ -221,7 +227,8 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
     const int stage = plan.stage_of_method[m];
     MethodResult result;
     if (method.kind == MethodKind::bem) {
-      result = bem_result(method, bem_products[static_cast<std::size_t>(stage)], scene);
+      const auto b = static_cast<std::size_t>(stage);
+      result = bem_result(method, plan.bems[b], bem_products[b], scene);
     } else if (method.kind == MethodKind::plateau) {
       const auto start = Clock::now();
       const auto s = static_cast<std::size_t>(stage);

@@ -121,6 +121,29 @@ tolerance = 1e-4
   EXPECT_FALSE(plan.needs_theories());
 }
 
+// An effect runs only where a method names it: the pressure cap shows in its stage and its own column, and
+// the elastic method beside it has neither (and caps nothing: more area under the cap at the same load).
+TEST(ScenePlan, AHardnessRunsOnlyForTheMethodThatAsksForIt) {
+  const SceneReport report = run_text("name = \"cap\"\nreference = \"\"\n" + kSmallSurface + R"(
+[methods.elastic]
+method = "bem"
+[methods.capped]
+method = "bem"
+hardness = 2e9
+)");
+  ASSERT_EQ(report.stages.size(), 4u);  // surface, moments, two BEM solves
+  EXPECT_EQ(report.stages[2].name.find("hardness"), std::string::npos) << report.stages[2].name;
+  EXPECT_NE(report.stages[3].name.find("hardness"), std::string::npos) << report.stages[3].name;
+  const auto has_plastic = [](const MethodResult& m) {
+    return std::any_of(m.columns.begin(), m.columns.end(),
+                       [](const auto& c) { return c.first == "plastic_fraction"; });
+  };
+  EXPECT_FALSE(has_plastic(report.methods[0]));
+  EXPECT_TRUE(has_plastic(report.methods[1]));
+  for (std::size_t k = 0; k < 2; ++k)
+    EXPECT_GT(report.methods[1].curve.area_fraction[k], report.methods[0].curve.area_fraction[k]);
+}
+
 TEST(ScenePlan, RefusesToRefineANonPeriodicSurface) {
   const Scene scene = parse_scene(R"(name = "measured"
 [surface]
