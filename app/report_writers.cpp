@@ -34,10 +34,11 @@ std::string table_number(Real value, const char* format = "%.4g") {
   return text;
 }
 
-std::string percent(Real value) {
+// A relative error in per cent: signed for one load, unsigned for a magnitude (max, rms).
+std::string percent(Real value, bool is_signed = true) {
   if (!std::isfinite(value)) return "n/a";
   char text[32];
-  std::snprintf(text, sizeof text, "%+.1f %%", 100 * value);
+  std::snprintf(text, sizeof text, is_signed ? "%+.1f %%" : "%.1f %%", 100 * value);
   return text;
 }
 
@@ -140,8 +141,8 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
     out << "| " << r.label << " | " << table_number(r.seconds, "%.3g") << " | "
         << table_number(c.kappa, "%.3f");
     if (c.kappa_nodes) out << " (nodes " << table_number(*c.kappa_nodes, "%.3f") << ")";
-    out << " | " << (r.label == comparison.reference ? "reference" : percent(c.max_abs_relative_error))
-        << " | " << (r.label == comparison.reference ? "" : percent(c.rms_relative_error)) << " |\n";
+    out << " | " << (r.label == comparison.reference ? "reference" : percent(c.max_abs_relative_error, false))
+        << " | " << (r.label == comparison.reference ? "" : percent(c.rms_relative_error, false)) << " |\n";
   }
   out << "\nA/A0 at each load" << (comparison.reference.empty() ? "" : " (relative error to the reference)")
       << ":\n\n| P/(E* A0) |";
