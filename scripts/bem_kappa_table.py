@@ -93,7 +93,7 @@ def main():
                         help="the contactbench executable (default: build/release/app/contactbench)")
     parser.add_argument("--sizes", default="256,512,1024", help="points a side, comma-separated")
     parser.add_argument("--pressures", default="0.005,0.01,0.05", help="p/(E* gbar), comma-separated")
-    parser.add_argument("--threads", type=int, default=1, help="threads for contactbench (default 1)")
+    parser.add_argument("--threads", type=int, default=2, help="threads for contactbench (default 2)")
     parser.add_argument("--tolerance", default="1e-8", help="relative pressure change to stop at (default 1e-8)")
     parser.add_argument("--seed", default="1", help="seed of the realisation (default 1)")
     parser.add_argument("--out", default=os.path.join(repository, "results/bem_kappa/surface_a_kappa"),
