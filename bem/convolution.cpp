@@ -98,7 +98,11 @@ class Aligned {
 constexpr Index kRowsPerChunk = 8;  // rows per transform call: a chunk of 2 nx doubles a row fits in L2
 
 // The element-wise work around the column transforms, compiled for SSE2 and AVX2 (chosen at load time).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define CB_KERNEL __attribute__((target_clones("avx2", "default")))
+#else
+#define CB_KERNEL
+#endif
 
 // A block of `cols` spectral columns (rows `stride` apart, `rows` of them) into `block`, transposed so that
 // each column is contiguous and `length` long, the rows beyond `rows` zero (the padding).

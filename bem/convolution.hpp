@@ -17,7 +17,8 @@
 // count the arithmetic (and any reduction the caller keeps per thread) is the same from run to run.
 //
 // Plans are single-threaded FFTW plans of one chunk, executed by the team's threads (FFTW's new-array
-// execute); on grids below kMinPointsForThreads points (of the transform) the team is one thread.
+// execute); on grids below kMinPointsForThreads points (of the transform) the team is one thread. One
+// Convolution serves one caller at a time (its spectrum and buffers are shared by the stages).
 #pragma once
 
 #include <cstdint>

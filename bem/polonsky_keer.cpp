@@ -19,7 +19,11 @@ namespace {
 // The element-wise kernels are compiled twice, for SSE2 (any x86-64) and AVX2, the better one chosen at load
 // time (g++'s function multi-versioning): twice the lanes on the machines that have them. No FMA, so both
 // round alike; sums over lanes are ordered differently, so results agree between the two to round-off only.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define CB_KERNEL __attribute__((target_clones("avx2", "default")))
+#else
+#define CB_KERNEL
+#endif
 
 // What one thread sums during one pass: one cache line each, combined in thread order after the pass, so
 // that for a fixed thread count the sums (and so the iterates) are the same from run to run.
@@ -27,7 +31,7 @@ struct alignas(64) Partial {
   double change = 0, sum = 0;           // sum |p - p_old|, sum p
   double elastic = 0, plastic = 0;      // node counts
   double shift = 0, s1 = 0, s2 = 0;     // sum (g - shift), sum (g - shift)^2 over the elastic set
-  bool has_shift = false;               // see gap_row
+  bool has_shift = false;               // see gap_rows
   double gt = 0, t_sum = 0, r_sum = 0;  // sum g t, sum t, sum r over the elastic set
   double q_sum = 0, entered = 0;        // sum of the new pressure, nodes that entered or left the set
   void clear() { *this = Partial{}; }
@@ -92,7 +96,6 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     for (Index i = 0; i < n_; ++i)
       h_[static_cast<std::size_t>(i)] = static_cast<T>(h.data()[i]);
     height_range_ = h.maxCoeff() - h.minCoeff();
-    max_height_ = h.maxCoeff();
   }
 
   void forget() override { warm_ = false; }
@@ -554,7 +557,7 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
   double s_[2] = {1, 1};
   int cur_ = 0;
   std::vector<Partial> partial_;
-  double height_range_ = 0, max_height_ = 0;
+  double height_range_ = 0;
   double separation_ = 0, gap_offset_ = 0, last_sum_ = 0;
   double hardness_ = std::numeric_limits<double>::infinity();
   bool warm_ = false;

@@ -1,7 +1,8 @@
 // The Polonsky-Keer solver's options beyond the elastic load-controlled contact (bem/polonsky_keer.hpp): a
 // perfectly plastic pressure cap (hardness), checked in its two limits (very hard: elastic; very soft: the
 // bearing area) and on a sphere; separation control, against load control and Hertz's approach; single
-// precision, against double; and the options of `contactbench bem` that reach them, end to end.
+// precision, against double; and the options of `contactbench bem` that reach them, end to end. First, the
+// convolution engine under them (bem/convolution.hpp) through what the solver relies on.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +17,8 @@
 
 #include <sys/wait.h>
 
+#include "bem/convolution.hpp"
+#include "bem/half_space.hpp"
 #include "bem/polonsky_keer.hpp"
 #include "core/error.hpp"
 #include "core/generation.hpp"
@@ -43,6 +46,66 @@ Surface sphere(Index n, Real dx, Real radius) {
       h(iy, ix) = -(x * x + y * y) / (2 * radius);
     }
   return Surface(grid, h);
+}
+
+HeightMap random_pressure(Index nx, Index ny, unsigned seed) {
+  HeightMap p(ny, nx);
+  std::uint64_t state = seed;
+  for (Index i = 0; i < p.size(); ++i) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;  // Knuth's LCG: enough for a test
+    p.data()[i] = 1e8 * static_cast<Real>(state >> 11) / static_cast<Real>(1ULL << 53);
+  }
+  return p;
+}
+
+TEST(Convolution, PlainArraysInPlaceAndTheProductAgreeWithTheOperator) {
+  // Odd and even sizes, both operators: the copy-free apply on plain arrays (also in place) equals the
+  // HeightMap apply bit for bit (the same arithmetic); the product returned by the callback apply is
+  // p . G p, summed in the spectral domain, equal to the direct sum to round-off; float agrees with double
+  // to float's accuracy.
+  for (const bool periodic : {true, false})
+    for (const auto& [nx, ny] : {std::pair<Index, Index>{12, 9}, std::pair<Index, Index>{40, 32}}) {
+      const Grid grid{.nx = nx, .ny = ny, .lx = nx * 1e-6, .ly = ny * 1.5e-6, .periodic = periodic};
+      const HeightMap p = random_pressure(nx, ny, 3);
+      auto half_space = make_half_space(grid, kModulus);
+      HeightMap u;
+      half_space->apply(p, u);
+      HeightMap raw(ny, nx), in_place = p;
+      half_space->apply(p.data(), raw.data());
+      half_space->apply(in_place.data(), in_place.data());
+      EXPECT_EQ((raw - u).abs().maxCoeff(), 0) << periodic << " " << nx;
+      EXPECT_EQ((in_place - u).abs().maxCoeff(), 0) << periodic << " " << nx;
+
+      auto convolution = make_half_space_convolution<double>(grid, kModulus);
+      auto produce = [&](Index first, Index rows, double* buffer, Index ld, int) {
+        for (Index r = 0; r < rows; ++r)
+          for (Index x = 0; x < nx; ++x)
+            buffer[r * ld + x] = p(first + r, x);
+      };
+      const double product = convolution->apply(Convolution<double>::Producer(produce),
+                                                Convolution<double>::Consumer(), {}, true);
+      const Real direct = (p * u).sum();
+      EXPECT_NEAR(product, direct, 1e-12 * direct) << periodic << " " << nx;
+
+      auto single = make_half_space_convolution<float>(grid, kModulus);
+      std::vector<float> pf(p.data(), p.data() + p.size()), uf(pf.size());
+      single->apply(pf.data(), uf.data());
+      Real worst = 0;
+      for (Index i = 0; i < p.size(); ++i)
+        worst = std::max(worst, std::abs(static_cast<Real>(uf[static_cast<std::size_t>(i)]) - u.data()[i]));
+      EXPECT_LT(worst, 1e-6 * u.abs().maxCoeff()) << periodic << " " << nx;  // float: ~1e-7, summed
+    }
+}
+
+TEST(Convolution, ManyThreadsGiveTheSameAnswerAsOne) {
+  // Above kMinPointsForThreads the team has two threads; the chunks are fixed, so the result is the same
+  // bit for bit whatever the team.
+  const Grid grid{.nx = 256, .ny = 256, .lx = 256e-6, .ly = 256e-6, .periodic = true};
+  const HeightMap p = random_pressure(256, 256, 5);
+  HeightMap one, two;
+  make_half_space(grid, kModulus, 1)->apply(p, one);
+  make_half_space(grid, kModulus, 2)->apply(p, two);
+  EXPECT_EQ((one - two).abs().maxCoeff(), 0);
 }
 
 TEST(Hardness, VeryHardReproducesTheElasticSolution) {
