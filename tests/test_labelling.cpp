@@ -463,5 +463,58 @@ TEST(Labelling, AnyNonZeroValueIsForeground) {
   }
 }
 
+TEST(Labelling, RowsTouchingAtOnePointUnderLongRuns) {
+  // Two full rows (0 and 3) with one point each between them, in rows 1 and 2 at columns a and b: rows 0-1
+  // and 2-3 are two spots, joined only if the two points touch, |a - b| <= 1 for 8-connectivity, a == b
+  // for 4-connectivity (with wrap_x, also across the seam). Every column of rows 0-1 and of rows 2-3 is
+  // foreground, so a scan that pairs rows sees two bands overlapping from end to end, touching at one
+  // place; widths around 64 and 128 put that place on either side of a word boundary or deep inside a
+  // long overlap. Rows 4 and 5 stay empty, so wrap_y joins nothing.
+  for (const Index nx : {63, 64, 65, 129, 200}) {
+    std::vector<Index> columns = {0, 1, 62, 63, 64, 65, 100, 127, 128, nx - 2, nx - 1};
+    std::erase_if(columns, [&](Index x) { return x < 0 || x >= nx; });
+    for (const Index a : columns)
+      for (const Index shift : {-2, -1, 0, 1, 2}) {
+        const Index b = a + shift;
+        if (b < 0 || b >= nx) continue;
+        BinaryMap map = BinaryMap::Zero(6, nx);
+        map.row(0).setOnes();
+        map.row(3).setOnes();
+        map(1, a) = map(2, b) = 1;
+        for (const int threads : {1, 2}) {
+          EXPECT_EQ(count(map, {Connectivity::eight, false, false}, threads), shift * shift <= 1 ? 1 : 2)
+              << "nx " << nx << ", a " << a << ", b " << b << ", threads " << threads;
+          EXPECT_EQ(count(map, {Connectivity::four, false, false}, threads), shift == 0 ? 1 : 2)
+              << "nx " << nx << ", a " << a << ", b " << b << ", threads " << threads;
+        }
+        for (const Topology& t : all_topologies()) {
+          expect_matches_reference(map, t, 1, label_components(map, t, 1), reference_labelling(map, t));
+          if (HasFatalFailure()) return;
+        }
+      }
+  }
+}
+
+TEST(Labelling, AnyNonZeroValueIsForegroundOnWideMaps) {
+  // The same as above on rows wide enough for a labeller to read many points at once (64 and more), with
+  // every kind of non-zero byte (the high bit set or not).
+  const std::uint8_t values[] = {1, 2, 127, 128, 255};
+  for (const Index nx : {64, 150, 257}) {
+    const BinaryMap ones = random_map(9, nx, 0.55, 0xb17e5ULL + static_cast<std::uint64_t>(nx));
+    BinaryMap bytes(ones.rows(), ones.cols());
+    for (Index i = 0; i < ones.size(); ++i)
+      bytes.data()[i] = ones.data()[i] ? values[i % 5] : 0;
+    for (const Topology& t : all_topologies())
+      for (const int threads : {1, 2}) {
+        const Labelling a = label_components(ones, t, threads), b = label_components(bytes, t, threads);
+        EXPECT_EQ(a.count, b.count) << describe(t);
+        EXPECT_TRUE((a.labels == b.labels).all()) << describe(t);
+        EXPECT_EQ(a.areas, b.areas) << describe(t);
+        expect_matches_reference(bytes, t, threads, b, reference_labelling(bytes, t));
+        if (HasFatalFailure()) return;
+      }
+  }
+}
+
 }  // namespace
 }  // namespace contactbench
