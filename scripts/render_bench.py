@@ -10,12 +10,14 @@ from collections import defaultdict
 
 
 def medians(data):
-    """name -> median real time in ms, from the aggregate rows."""
+    """name -> median real time in ms, from the aggregate rows (or the single run of a benchmark repeated once)."""
     out = {}
     for b in data["benchmarks"]:
+        scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
         if b.get("run_type") == "aggregate" and b.get("aggregate_name") == "median":
-            scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b["time_unit"]]
             out[b["run_name"]] = b["real_time"] * scale
+        elif b.get("run_type") == "iteration" and b.get("repetitions", 1) <= 1:
+            out.setdefault(b["run_name"], b["real_time"] * scale)
     return out
 
 
@@ -97,8 +99,11 @@ def sweep(data):
 
 def median_rows(data):
     """name -> the median aggregate row (with its counters)."""
-    return {b["run_name"]: b for b in data["benchmarks"]
-            if b.get("run_type") == "aggregate" and b.get("aggregate_name") == "median"}
+    rows = {b["run_name"]: b for b in data["benchmarks"]
+            if b.get("run_type") == "iteration" and b.get("repetitions", 1) <= 1}
+    rows.update({b["run_name"]: b for b in data["benchmarks"]
+                 if b.get("run_type") == "aggregate" and b.get("aggregate_name") == "median"})
+    return rows
 
 
 def bem(data):
