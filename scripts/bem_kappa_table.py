@@ -59,7 +59,9 @@ def commit(repository):
     try:
         out = subprocess.run(["git", "-C", repository, "rev-parse", "--short", "HEAD"], capture_output=True,
                              text=True, check=True).stdout.strip()
-        dirty = subprocess.run(["git", "-C", repository, "status", "--porcelain", "--untracked-files=no"],
+        # Only the sources that make the numbers count (results/ and docs may be mid-edit).
+        dirty = subprocess.run(["git", "-C", repository, "status", "--porcelain", "--untracked-files=no", "--",
+                                "core", "bem", "app", "theories", "CMakeLists.txt", "cmake"],
                                capture_output=True, text=True, check=True).stdout.strip()
         return out + ("-dirty" if dirty else "")
     except (OSError, subprocess.CalledProcessError):
@@ -165,7 +167,7 @@ def main():
     md += [f"- {key}: `{value}`" for key, value in stamp.items()]
     md += [
         "", about[2:].strip(), "",
-        "Times are from a shared machine (other jobs were running): read them as orders of magnitude.", "",
+        "The machine is shared: read the times within a factor of about 1.5.", "",
         "| n | p/(E* gbar) | kappa (nodes) | kappa (corrected) | spots | iterations | seconds |",
         "|---|---|---|---|---|---|---|",
     ]
