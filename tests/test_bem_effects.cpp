@@ -23,6 +23,7 @@
 #include "core/error.hpp"
 #include "core/generation.hpp"
 #include "core/topography_io.hpp"
+#include "tests/contact_shapes.hpp"
 
 namespace contactbench {
 namespace {
@@ -34,18 +35,6 @@ constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* [Pa]
 Surface rough_surface(Index n, bool periodic) {
   const Grid grid{.nx = n, .ny = n, .lx = 100e-6, .ly = 100e-6, .periodic = true};
   return generate_surface(grid, paper::surface_a(), 7).with_periodic(periodic);
-}
-
-// A sphere of radius R (its paraboloidal cap) centred on an n x n non-periodic grid of pixels dx.
-Surface sphere(Index n, Real dx, Real radius) {
-  const Grid grid{.nx = n, .ny = n, .lx = n * dx, .ly = n * dx, .periodic = false};
-  HeightMap h(n, n);
-  for (Index iy = 0; iy < n; ++iy)
-    for (Index ix = 0; ix < n; ++ix) {
-      const Real x = (ix - n / 2) * dx, y = (iy - n / 2) * dx;
-      h(iy, ix) = -(x * x + y * y) / (2 * radius);
-    }
-  return Surface(grid, h);
 }
 
 HeightMap random_pressure(Index nx, Index ny, unsigned seed) {

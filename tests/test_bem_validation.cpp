@@ -15,6 +15,7 @@
 #include "bem/polonsky_keer.hpp"
 #include "core/generation.hpp"
 #include "core/spectrum.hpp"
+#include "tests/contact_shapes.hpp"
 #include "tests/tolerances.hpp"
 
 namespace contactbench {
@@ -31,19 +32,6 @@ Surface bisinusoid(Index n, Real lambda, Real amplitude) {
     for (Index ix = 0; ix < n; ++ix)
       h(iy, ix) = amplitude * std::cos(2 * pi * ix / static_cast<Real>(n)) *
                   std::cos(2 * pi * iy / static_cast<Real>(n));
-  return Surface(grid, h);
-}
-
-// The paraboloidal cap h = -r^2/(2R) of a sphere, centred on node (nx/2, ny/2) of a non-periodic grid of
-// square pixels dx.
-Surface sphere_cap(Index nx, Index ny, Real dx, Real radius) {
-  const Grid grid{.nx = nx, .ny = ny, .lx = nx * dx, .ly = ny * dx, .periodic = false};
-  HeightMap h(ny, nx);
-  for (Index iy = 0; iy < ny; ++iy)
-    for (Index ix = 0; ix < nx; ++ix) {
-      const Real x = (ix - nx / 2) * dx, y = (iy - ny / 2) * dx;
-      h(iy, ix) = -(x * x + y * y) / (2 * radius);
-    }
   return Surface(grid, h);
 }
 

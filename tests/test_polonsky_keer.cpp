@@ -8,25 +8,13 @@
 #include "bem/contact_statistics.hpp"
 #include "bem/polonsky_keer.hpp"
 #include "core/error.hpp"
+#include "tests/contact_shapes.hpp"
 
 namespace contactbench {
 namespace {
 
 constexpr Real pi = std::numbers::pi;
 constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* [Pa]
-
-// A sphere of radius R (its paraboloidal cap, h = -r^2/(2R)) centred on an n x n non-periodic grid of pixels
-// dx.
-Surface sphere(Index n, Real dx, Real radius) {
-  const Grid grid{.nx = n, .ny = n, .lx = n * dx, .ly = n * dx, .periodic = false};
-  HeightMap h(n, n);
-  for (Index iy = 0; iy < n; ++iy)
-    for (Index ix = 0; ix < n; ++ix) {
-      const Real x = (ix - n / 2) * dx, y = (iy - n / 2) * dx;
-      h(iy, ix) = -(x * x + y * y) / (2 * radius);
-    }
-  return Surface(grid, h);
-}
 
 // h = D cos(2 pi x/lambda) on nx x ny periodic points over one wavelength (rows identical).
 Surface cosine_strip(Index nx, Index ny, Real lambda, Real amplitude) {
