@@ -2,7 +2,8 @@
 # Runs the Google Benchmark harnesses (2 threads, medians of repetitions) and records them under
 # results/bench/: <name>.json (Google Benchmark's output, with commit, date, threads and machine in its
 # context) and <name>.md (tables with ratios to the references measured in the same run).
-# Usage: scripts/bench.sh [labelling|sweep|bem ...]   (default: all). Takes about 15 minutes for labelling and
+# Usage: scripts/bench.sh [labelling|sweep|bem ...]   (default: all). BENCH_FILTER=REGEX runs only the matching
+# benchmarks (recorded in the files' command). Takes about 15 minutes for labelling and
 # sweep, and as long again for bem.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -25,9 +26,10 @@ mkdir -p results/bench
 for name in "${@:-labelling sweep bem}"; do
   for bench in $name; do
     out=results/bench/$bench.json
-    build/release/bench/bench_$bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
+    filter=${BENCH_FILTER:+--benchmark_filter=$BENCH_FILTER}
+    build/release/bench/bench_$bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true $filter \
       --benchmark_out="$out.tmp" --benchmark_out_format=json \
-      --benchmark_context="commit=$commit,machine=$machine,command=scripts/bench.sh $bench"
+      --benchmark_context="commit=$commit,machine=$machine,command=${BENCH_FILTER:+BENCH_FILTER=$BENCH_FILTER }scripts/bench.sh $bench"
     mv "$out.tmp" "$out"
     python3 scripts/render_bench.py "$out" >"${out%.json}.md.tmp"
     mv "${out%.json}.md.tmp" "${out%.json}.md"
