@@ -29,7 +29,7 @@ for name in "${@:-labelling sweep bem}"; do
     filter=${BENCH_FILTER:+--benchmark_filter=$BENCH_FILTER}
     build/release/bench/bench_$bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true $filter \
       --benchmark_out="$out.tmp" --benchmark_out_format=json \
-      --benchmark_context="commit=$commit,machine=$machine,command=${BENCH_FILTER:+BENCH_FILTER=$BENCH_FILTER }scripts/bench.sh $bench"
+      --benchmark_context="commit=$commit,machine=$machine,command=scripts/bench.sh $bench${BENCH_FILTER:+ with BENCH_FILTER set to $BENCH_FILTER}"
     mv "$out.tmp" "$out"
     python3 scripts/render_bench.py "$out" >"${out%.json}.md.tmp"
     mv "${out%.json}.md.tmp" "${out%.json}.md"
