@@ -25,7 +25,7 @@ struct Labelling {
 // load curve or a benchmark labels many maps of one shape). Two-pass labelling with union-find, parallel
 // over horizontal stripes whose borders (and the periodic seams) are merged afterwards: for 4-connectivity a
 // scan point by point (the decision tree of SAUF, Wu, Otoo and Suzuki 2009, reduced to its two neighbours),
-// for 8-connectivity a scan of 2 x 2 blocks (the block-based family of BBDT, Grana et al. 2010).
+// for 8-connectivity a scan of runs of two-row bands on rows packed into bits (BMRS, Lee et al. 2021).
 // Components are numbered in raster order of their first point (4-connectivity) or of their first 2 x 2
 // block (8-connectivity; a block never holds two components), whatever the thread count.
 class Labeller {
