@@ -6,14 +6,14 @@
 #include <string>
 #include <vector>
 
-#include "app/cli.hpp"
-#include "app/json_writer.hpp"
-#include "app/output.hpp"
-#include "app/topography_options.hpp"
-#include "bem/contact_statistics.hpp"
-#include "bem/polonsky_keer.hpp"
-#include "core/error.hpp"
-#include "core/topography_io.hpp"
+#include "contactbench/app/cli.hpp"
+#include "contactbench/app/json_writer.hpp"
+#include "contactbench/app/output.hpp"
+#include "contactbench/app/topography_options.hpp"
+#include "contactbench/bem/contact_statistics.hpp"
+#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/topography_io.hpp"
 
 namespace contactbench {
 
@@ -24,7 +24,7 @@ struct BemOptions {
   bool non_periodic = false;
   std::vector<Real> loads;
   Real modulus =
-      100e9 / (1 - 0.3 * 0.3);    // the paper's material: E = 100 GPa, nu = 0.3 (THEORY.md section 2)
+      100e9 / (1 - 0.3 * 0.3);    // the paper's material: E = 100 GPa, nu = 0.3 (docs/theory.md section 2)
   std::optional<Real> tolerance;  // default: 1e-8, or the smallest single precision accepts with --float
   Index max_iterations = 20000;
   std::optional<Real> hardness;

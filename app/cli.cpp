@@ -1,11 +1,11 @@
-#include "app/cli.hpp"
+#include "contactbench/app/cli.hpp"
 
 #include <exception>
 #include <iostream>
 
 #include <omp.h>
 
-#include "core/error.hpp"
+#include "contactbench/core/error.hpp"
 
 namespace contactbench {
 

@@ -1,4 +1,4 @@
-#include "app/comparison.hpp"
+#include "contactbench/app/comparison.hpp"
 
 #include <cmath>
 #include <limits>

@@ -1,12 +1,13 @@
-// Every method's curve judged against the scene's reference at the reference's loads (ARCHITECTURE.md, data
-// flow): the relative error in A/A0, and the areal kappa at the smallest load (THEORY.md section 0).
+// Every method's curve judged against the scene's reference at the reference's loads (docs/architecture.md,
+// data flow): the relative error in A/A0, and the areal kappa at the smallest load (docs/theory.md section
+// 0).
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "app/scene_run.hpp"
+#include "contactbench/app/scene_run.hpp"
 
 namespace contactbench {
 

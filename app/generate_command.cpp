@@ -1,13 +1,14 @@
-// contactbench generate: the paper's random self-affine surface (THEORY.md section 2), written to a file.
+// contactbench generate: the paper's random self-affine surface (docs/theory.md section 2), written to a
+// file.
 #include <cstdint>
 #include <iostream>
 #include <optional>
 #include <string>
 
-#include "app/cli.hpp"
-#include "core/error.hpp"
-#include "core/generation.hpp"
-#include "core/topography_io.hpp"
+#include "contactbench/app/cli.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/generation.hpp"
+#include "contactbench/core/topography_io.hpp"
 
 namespace contactbench {
 

@@ -1,4 +1,4 @@
-#include "app/json_writer.hpp"
+#include "contactbench/app/json_writer.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -1,9 +1,9 @@
-#include "app/load_area_plots.hpp"
+#include "contactbench/app/load_area_plots.hpp"
 
 #include <cstdlib>
 #include <string>
 
-#include "core/atomic_file.hpp"
+#include "contactbench/core/atomic_file.hpp"
 
 namespace contactbench {
 

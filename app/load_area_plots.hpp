@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <ostream>
 
-#include "app/scene_run.hpp"
+#include "contactbench/app/scene_run.hpp"
 
 namespace contactbench {
 

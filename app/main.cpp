@@ -1,5 +1,5 @@
 // The contactbench command: parses arguments and hands over to the app library.
-#include "app/cli.hpp"
+#include "contactbench/app/cli.hpp"
 
 int main(int argc, char** argv) {
   return contactbench::run_cli(argc, argv);

@@ -1,8 +1,8 @@
-#include "app/output.hpp"
+#include "contactbench/app/output.hpp"
 
 #include <iostream>
 
-#include "core/atomic_file.hpp"
+#include "contactbench/core/atomic_file.hpp"
 
 namespace contactbench {
 

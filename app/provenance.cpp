@@ -1,4 +1,4 @@
-#include "app/provenance.hpp"
+#include "contactbench/app/provenance.hpp"
 
 #include <unistd.h>
 

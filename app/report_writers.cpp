@@ -1,13 +1,13 @@
-#include "app/report_writers.hpp"
+#include "contactbench/app/report_writers.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
 
-#include "app/json_writer.hpp"
-#include "core/atomic_file.hpp"
-#include "core/error.hpp"
+#include "contactbench/app/json_writer.hpp"
+#include "contactbench/core/atomic_file.hpp"
+#include "contactbench/core/error.hpp"
 
 namespace contactbench {
 
@@ -129,7 +129,7 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
       << "; E* = " << table_number(report.scene.material.estar)
       << " Pa; areal rms gradient gbar = " << table_number(comparison.rms_gradient)
       << ". Loads are P/(E* A0); kappa is the areal kappa (A/A0)/(p/(E* gbar)) at the smallest load, "
-      << table_number(comparison.kappa_load) << " (THEORY.md section 0)."
+      << table_number(comparison.kappa_load) << " (docs/theory.md section 0)."
       << (comparison.reference.empty()
               ? std::string(" No reference: no errors.")
               : " Errors are relative to " + comparison.reference + ", load by load.")

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <ostream>
 
-#include "app/comparison.hpp"
-#include "app/provenance.hpp"
-#include "app/scene_run.hpp"
+#include "contactbench/app/comparison.hpp"
+#include "contactbench/app/provenance.hpp"
+#include "contactbench/app/scene_run.hpp"
 
 namespace contactbench {
 

@@ -4,13 +4,13 @@
 #include <sstream>
 #include <string>
 
-#include "app/cli.hpp"
-#include "app/comparison.hpp"
-#include "app/load_area_plots.hpp"
-#include "app/provenance.hpp"
-#include "app/report_writers.hpp"
-#include "app/scene.hpp"
-#include "app/scene_run.hpp"
+#include "contactbench/app/cli.hpp"
+#include "contactbench/app/comparison.hpp"
+#include "contactbench/app/load_area_plots.hpp"
+#include "contactbench/app/provenance.hpp"
+#include "contactbench/app/report_writers.hpp"
+#include "contactbench/app/scene.hpp"
+#include "contactbench/app/scene_run.hpp"
 
 namespace contactbench {
 
@@ -18,7 +18,7 @@ namespace {
 
 struct RunCommandOptions {
   std::string scene;
-  std::string out;  // default results/<name>/
+  std::string out;  // default runs/<name>/ (untracked; results/ holds the published record)
   int threads = 1;
   bool plots = true;
   bool quiet = false;
@@ -27,7 +27,7 @@ struct RunCommandOptions {
 void run_command(const RunCommandOptions& o) {
   const Scene scene = read_scene(o.scene);  // everything validated before any work
   const std::filesystem::path folder =
-      o.out.empty() ? std::filesystem::path("results") / scene.name : std::filesystem::path(o.out);
+      o.out.empty() ? std::filesystem::path("runs") / scene.name : std::filesystem::path(o.out);
   std::string command = "contactbench run " + o.scene + " --threads " + std::to_string(o.threads);
   if (!o.out.empty()) command += " --out " + o.out;
   if (!o.plots) command += " --no-plots";
@@ -56,7 +56,8 @@ void add_run_command(CLI::App& parent) {
       "curves.csv, "
       "summary.json, table.md and load-area plots.");
   command->add_option("SCENE", options->scene, "scene file (TOML)")->required();
-  command->add_option("--out", options->out, "output folder (default: results/<scene name>/)");
+  command->add_option("--out", options->out,
+                      "output folder (default: runs/<scene name>/, which git ignores)");
   command->add_flag("!--no-plots", options->plots, "do not draw the plots (no gnuplot run)");
   command->add_flag("--quiet", options->quiet, "no progress and no table on the terminal");
   add_threads_option(*command, options->threads);

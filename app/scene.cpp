@@ -1,4 +1,4 @@
-#include "app/scene.hpp"
+#include "contactbench/app/scene.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -15,10 +15,10 @@
 
 #include <toml++/toml.h>
 
-#include "core/generation.hpp"
-#include "core/grid.hpp"
-#include "core/material.hpp"
-#include "core/topography_io.hpp"
+#include "contactbench/core/generation.hpp"
+#include "contactbench/core/grid.hpp"
+#include "contactbench/core/material.hpp"
+#include "contactbench/core/topography_io.hpp"
 
 namespace contactbench {
 
@@ -303,7 +303,7 @@ std::optional<GeneratedSurfaceSpec> parse_generated(const Section& g, Problems& 
   const auto refine = g.integer("refine", false, int_range(grid.value_or(2), kMaxPointsASide));
   std::optional<Real> qs;
   if (g.has("qs")) {
-    // qs <= qr would leave no self-affine range (THEORY.md section 2); the upper limit is the grid's.
+    // qs <= qr would leave no self-affine range (docs/theory.md section 2); the upper limit is the grid's.
     const Rule<Real> rule = qr ? Rule<Real>{[q = *qr](Real v) { return std::isfinite(v) && v > q; },
                                             "a finite number > qr = " + str(*qr) + " [1/m]"}
                                : positive("[1/m]");

@@ -11,13 +11,13 @@
 #include <variant>
 #include <vector>
 
-#include "core/error.hpp"
-#include "core/sweep.hpp"
-#include "core/types.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/sweep.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench {
 
-// [surface] generate = { ... }: the paper's self-affine generator (THEORY.md section 2), SI units.
+// [surface] generate = { ... }: the paper's self-affine generator (docs/theory.md section 2), SI units.
 struct GeneratedSurfaceSpec {
   Real sigma = 0;          // rms height [m]
   Real hurst = 0;          // Hurst exponent, (0, 1]
@@ -42,9 +42,9 @@ struct SurfaceSpec {
   std::variant<GeneratedSurfaceSpec, FileSurfaceSpec> source;
 };
 
-// [material]: E* is what every method uses (THEORY.md section 0); the elastic constants are kept as given
-// so that the report can show them. Either E and nu (then optionally E2 and nu2: a second elastic body), or
-// estar alone.
+// [material]: E* is what every method uses (docs/theory.md section 0); the elastic constants are kept as
+// given so that the report can show them. Either E and nu (then optionally E2 and nu2: a second elastic
+// body), or estar alone.
 struct MaterialSpec {
   Real estar = 0;                        // the contact modulus E* [Pa], always set
   std::optional<Real> youngs_modulus;    // E [Pa]
@@ -71,7 +71,7 @@ struct BemMethodSpec {
   int connectivity = 4;          // for counting contact spots
 };
 
-// [methods.<label>] with method = "plateau" (THEORY.md section 4).
+// [methods.<label>] with method = "plateau" (docs/theory.md section 4).
 struct PlateauMethodSpec {
   int connectivity = 4;
   SweepLevels levels = SweepLevels::exact();  // levels = "exact" | "paper" | an integer count (uniform)

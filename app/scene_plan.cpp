@@ -1,9 +1,9 @@
-#include "app/scene_plan.hpp"
+#include "contactbench/app/scene_plan.hpp"
 
 #include <algorithm>
 #include <sstream>
 
-#include "core/error.hpp"
+#include "contactbench/core/error.hpp"
 
 namespace contactbench {
 

@@ -1,4 +1,4 @@
-// The planner (ARCHITECTURE.md, data flow): from a scene's methods, the stages that must run, each once.
+// The planner (docs/architecture.md, data flow): from a scene's methods, the stages that must run, each once.
 // Analytic theories need the spectral moments only; the plateau model one sweep per (topology, levels);
 // the BEM one load-stepped solve per (grid, boundary, solver options). Nothing else runs: a scene of theories
 // never sorts a height nor solves a contact, a scene without the BEM never runs it, and an effect that no
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "app/scene.hpp"
-#include "core/topology.hpp"
+#include "contactbench/app/scene.hpp"
+#include "contactbench/core/topology.hpp"
 
 namespace contactbench {
 

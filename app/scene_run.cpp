@@ -1,4 +1,4 @@
-#include "app/scene_run.hpp"
+#include "contactbench/app/scene_run.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -7,18 +7,18 @@
 #include <memory>
 #include <set>
 
-#include "bem/contact_statistics.hpp"
-#include "bem/polonsky_keer.hpp"
-#include "core/error.hpp"
-#include "core/generation.hpp"
-#include "core/labelling.hpp"
-#include "core/sweep.hpp"
-#include "core/topography_io.hpp"
-#include "theories/bgt_linear.hpp"
-#include "theories/bush_gibson_thomas.hpp"
-#include "theories/greenwood_williamson.hpp"
-#include "theories/persson.hpp"
-#include "theories/plateau_model.hpp"
+#include "contactbench/bem/contact_statistics.hpp"
+#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/generation.hpp"
+#include "contactbench/core/labelling.hpp"
+#include "contactbench/core/sweep.hpp"
+#include "contactbench/core/topography_io.hpp"
+#include "contactbench/theories/bgt_linear.hpp"
+#include "contactbench/theories/bush_gibson_thomas.hpp"
+#include "contactbench/theories/greenwood_williamson.hpp"
+#include "contactbench/theories/persson.hpp"
+#include "contactbench/theories/plateau_model.hpp"
 
 namespace contactbench {
 

@@ -7,10 +7,10 @@
 #include <utility>
 #include <vector>
 
-#include "app/scene.hpp"
-#include "app/scene_plan.hpp"
-#include "core/load_area_curve.hpp"
-#include "core/spectrum.hpp"
+#include "contactbench/app/scene.hpp"
+#include "contactbench/app/scene_plan.hpp"
+#include "contactbench/core/load_area_curve.hpp"
+#include "contactbench/core/spectrum.hpp"
 
 namespace contactbench {
 
@@ -22,8 +22,8 @@ struct StageRecord {
 struct MethodResult {
   std::string label;
   MethodKind kind = MethodKind::bem;
-  // At the scene's loads. For the BEM, area_fraction is the perimeter-corrected area (THEORY.md section 6):
-  // the best estimate of the real area a grid gives; the node count is the column area_fraction_nodes.
+  // At the scene's loads. For the BEM, area_fraction is the perimeter-corrected area (docs/theory.md section
+  // 6): the best estimate of the real area a grid gives; the node count is the column area_fraction_nodes.
   LoadAreaCurve curve;
   // The method's own columns beside load, area_fraction, separation and spots (e.g. iterations for the BEM).
   std::vector<std::pair<std::string, std::vector<Real>>> columns;
@@ -35,7 +35,7 @@ struct MethodResult {
 struct SceneReport {
   Scene scene;
   Grid grid;                          // of the scene's surface (before any refinement a method asks for)
-  SpectralMoments moments;            // of the scene's surface (profile moments, THEORY.md section 1)
+  SpectralMoments moments;            // of the scene's surface (profile moments, docs/theory.md section 1)
   std::vector<StageRecord> stages;    // every stage that ran, in order
   std::vector<MethodResult> methods;  // in the scene's order
   int threads = 1;

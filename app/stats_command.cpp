@@ -1,12 +1,13 @@
-// contactbench stats: a topography's sizes and spectral statistics as one JSON object (THEORY.md section 1).
+// contactbench stats: a topography's sizes and spectral statistics as one JSON object (docs/theory.md section
+// 1).
 #include <iostream>
 #include <string>
 
-#include "app/cli.hpp"
-#include "app/json_writer.hpp"
-#include "app/topography_options.hpp"
-#include "core/spectrum.hpp"
-#include "core/topography_io.hpp"
+#include "contactbench/app/cli.hpp"
+#include "contactbench/app/json_writer.hpp"
+#include "contactbench/app/topography_options.hpp"
+#include "contactbench/core/spectrum.hpp"
+#include "contactbench/core/topography_io.hpp"
 
 namespace contactbench {
 
@@ -22,7 +23,7 @@ JsonObject conventions(Window window) {
   c.add("units", "SI: lengths and sq in m, m0 in m^2, m2 dimensionless, m4 in m^-2");
   c.add("moments",
         "profile (Nayak) moments along x and y, summed over the lattice: m_n = sum_k q^n |hhat_k|^2, mean "
-        "removed (THEORY.md section 1)");
+        "removed (docs/theory.md section 1)");
   c.add("alpha", "Nayak bandwidth m0 m4x / m2x^2 of the x profile; alpha_y from the y profile");
   c.add("rms_gradient", "areal sqrt(<|grad h|^2>) = sqrt(m2x + m2y)");
   c.add("sq", "root-mean-square height about the mean, no detrending");

@@ -1,14 +1,15 @@
-// contactbench sweep: bearing area and contact-spot count of {h > z} at many levels (THEORY.md section 3).
+// contactbench sweep: bearing area and contact-spot count of {h > z} at many levels (docs/theory.md section
+// 3).
 #include <charconv>
 #include <iostream>
 #include <string>
 
-#include "app/cli.hpp"
-#include "app/json_writer.hpp"
-#include "app/output.hpp"
-#include "app/topography_options.hpp"
-#include "core/error.hpp"
-#include "core/sweep.hpp"
+#include "contactbench/app/cli.hpp"
+#include "contactbench/app/json_writer.hpp"
+#include "contactbench/app/output.hpp"
+#include "contactbench/app/topography_options.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/sweep.hpp"
 
 namespace contactbench {
 

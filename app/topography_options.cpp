@@ -1,6 +1,6 @@
-#include "app/topography_options.hpp"
+#include "contactbench/app/topography_options.hpp"
 
-#include "core/topography_io.hpp"
+#include "contactbench/core/topography_io.hpp"
 
 namespace contactbench {
 

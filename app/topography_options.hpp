@@ -7,7 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "core/surface.hpp"
+#include "contactbench/core/surface.hpp"
 
 namespace contactbench {
 

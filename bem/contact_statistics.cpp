@@ -1,4 +1,4 @@
-#include "bem/contact_statistics.hpp"
+#include "contactbench/bem/contact_statistics.hpp"
 
 namespace contactbench {
 

@@ -1,11 +1,11 @@
-// What a boundary-element solution says about the contact (THEORY.md section 6): real contact area by node
-// count and perimeter-corrected, the number of contact spots, the mean gap and the largest pressure.
+// What a boundary-element solution says about the contact (docs/theory.md section 6): real contact area by
+// node count and perimeter-corrected, the number of contact spots, the mean gap and the largest pressure.
 #pragma once
 
 #include <numbers>
 
-#include "bem/polonsky_keer.hpp"
-#include "core/labelling.hpp"
+#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/core/labelling.hpp"
 
 namespace contactbench {
 

@@ -1,4 +1,4 @@
-#include "bem/convolution.hpp"
+#include "contactbench/bem/convolution.hpp"
 
 #include <algorithm>
 #include <complex>
@@ -8,8 +8,8 @@
 #include <fftw3.h>
 #include <omp.h>
 
-#include "core/error.hpp"
-#include "core/fft.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/fft.hpp"
 
 namespace contactbench {
 

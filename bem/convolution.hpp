@@ -25,7 +25,7 @@
 #include <memory>
 #include <type_traits>
 
-#include "core/types.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench {
 

@@ -1,12 +1,12 @@
-#include "bem/half_space.hpp"
+#include "contactbench/bem/half_space.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "bem/love_kernel.hpp"
-#include "core/error.hpp"
-#include "core/fft.hpp"
-#include "core/spectrum.hpp"
+#include "contactbench/bem/love_kernel.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/fft.hpp"
+#include "contactbench/core/spectrum.hpp"
 
 namespace contactbench {
 

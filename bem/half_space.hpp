@@ -1,14 +1,14 @@
 // The elastic half-space as a boundary-element operator: the normal surface displacement u = G p of a
-// pressure field p sampled on a grid (THEORY.md section 6). One application costs one FFT pair (for the
+// pressure field p sampled on a grid (docs/theory.md section 6). One application costs one FFT pair (for the
 // non-periodic operator, 3/4 of a pair of the padded size: the all-zero rows of the padding are skipped;
 // bem/convolution.hpp).
 #pragma once
 
 #include <memory>
 
-#include "bem/convolution.hpp"
-#include "core/grid.hpp"
-#include "core/types.hpp"
+#include "contactbench/bem/convolution.hpp"
+#include "contactbench/core/grid.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench {
 
@@ -23,7 +23,7 @@ class HalfSpace {
   virtual void apply(const Real* pressure, Real* displacement) = 0;
 
   const Grid& grid() const { return grid_; }
-  Real modulus() const { return modulus_; }  // E* [Pa] (THEORY.md section 0)
+  Real modulus() const { return modulus_; }  // E* [Pa] (docs/theory.md section 0)
 
  protected:
   HalfSpace(const Grid& grid, Real modulus);

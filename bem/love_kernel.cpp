@@ -1,4 +1,4 @@
-#include "bem/love_kernel.hpp"
+#include "contactbench/bem/love_kernel.hpp"
 
 #include <cmath>
 #include <numbers>

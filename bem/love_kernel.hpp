@@ -1,9 +1,9 @@
 // The normal surface displacement of an elastic half-space under a uniform pressure on a rectangle
-// (A. E. H. Love, Phil. Trans. R. Soc. A 228, 1929; THEORY.md section 6): the kernel of the non-periodic
+// (A. E. H. Love, Phil. Trans. R. Soc. A 228, 1929; docs/theory.md section 6): the kernel of the non-periodic
 // boundary-element operator, one pixel of pressure at a time.
 #pragma once
 
-#include "core/types.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench {
 

@@ -1,4 +1,4 @@
-#include "bem/polonsky_keer.hpp"
+#include "contactbench/bem/polonsky_keer.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "bem/convolution.hpp"
-#include "core/error.hpp"
+#include "contactbench/bem/convolution.hpp"
+#include "contactbench/core/error.hpp"
 
 namespace contactbench {
 

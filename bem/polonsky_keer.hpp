@@ -1,6 +1,6 @@
 // The boundary-element ground truth: frictionless normal contact of a rough rigid surface and an elastic
 // half-space (equivalently a rigid flat on a rough elastic body), solved for a prescribed mean pressure by
-// the constrained conjugate gradient of Polonsky & Keer (Wear 231, 206-219, 1999; THEORY.md section 6).
+// the constrained conjugate gradient of Polonsky & Keer (Wear 231, 206-219, 1999; docs/theory.md section 6).
 //
 // Unknowns: the pressure p >= 0 on the grid and the flat's height d above the mean plane. The gap is
 // g = d - h + u(p) >= 0 with u = G p the elastic displacement (bem/half_space.hpp); where p > 0 the gap is 0,
@@ -41,8 +41,8 @@
 #include <memory>
 #include <optional>
 
-#include "bem/half_space.hpp"
-#include "core/surface.hpp"
+#include "contactbench/bem/half_space.hpp"
+#include "contactbench/core/surface.hpp"
 
 namespace contactbench {
 

@@ -16,10 +16,10 @@
 #include <set>
 #include <string>
 
-#include "bem/polonsky_keer.hpp"
-#include "bench/bench_surfaces.hpp"
-#include "core/fft.hpp"
-#include "core/generation.hpp"
+#include "bench_surfaces.hpp"
+#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/core/fft.hpp"
+#include "contactbench/core/generation.hpp"
 
 namespace contactbench::bench {
 namespace {

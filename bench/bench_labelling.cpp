@@ -7,8 +7,8 @@
 
 #include <string>
 
-#include "bench/bench_surfaces.hpp"
-#include "core/labelling.hpp"
+#include "bench_surfaces.hpp"
+#include "contactbench/core/labelling.hpp"
 
 #ifdef CB_HAVE_OPENCV
 #include <opencv2/core.hpp>

@@ -1,11 +1,11 @@
-#include "bench/bench_surfaces.hpp"
+#include "bench_surfaces.hpp"
 
 #include <algorithm>
 #include <map>
 #include <memory>
 #include <vector>
 
-#include "core/generation.hpp"
+#include "contactbench/core/generation.hpp"
 
 namespace contactbench::bench {
 

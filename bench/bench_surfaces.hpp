@@ -7,8 +7,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "core/labelling.hpp"
-#include "core/surface.hpp"
+#include "contactbench/core/labelling.hpp"
+#include "contactbench/core/surface.hpp"
 
 namespace contactbench::bench {
 

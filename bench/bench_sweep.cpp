@@ -8,9 +8,9 @@
 
 #include <string>
 
-#include "bench/bench_surfaces.hpp"
-#include "core/labelling.hpp"
-#include "core/sweep.hpp"
+#include "bench_surfaces.hpp"
+#include "contactbench/core/labelling.hpp"
+#include "contactbench/core/sweep.hpp"
 
 namespace contactbench::bench {
 namespace {

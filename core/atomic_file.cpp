@@ -1,4 +1,4 @@
-#include "core/atomic_file.hpp"
+#include "contactbench/core/atomic_file.hpp"
 
 #include <atomic>
 #include <fstream>
@@ -7,7 +7,7 @@
 
 #include <unistd.h>
 
-#include "core/error.hpp"
+#include "contactbench/core/error.hpp"
 
 namespace contactbench {
 

@@ -1,4 +1,4 @@
-#include "core/fft.hpp"
+#include "contactbench/core/fft.hpp"
 
 #include <map>
 #include <mutex>
@@ -8,7 +8,7 @@
 #include <fftw3.h>
 #include <omp.h>
 
-#include "core/error.hpp"
+#include "contactbench/core/error.hpp"
 
 namespace contactbench {
 

@@ -1,7 +1,7 @@
 // FFT engine over FFTW: real-to-complex 2D plans made once per shape and reused.
 //
-// Conventions (THEORY.md section 1): forward is the unnormalised sum_x h(x) exp(-i q_k.x); backward is the
-// unnormalised sum_k c_k exp(+i q_k.x) over the full lattice, given its Hermitian half (types.hpp).
+// Conventions (docs/theory.md section 1): forward is the unnormalised sum_x h(x) exp(-i q_k.x); backward is
+// the unnormalised sum_k c_k exp(+i q_k.x) over the full lattice, given its Hermitian half (types.hpp).
 // Divide the forward result by nx * ny to get the Fourier-series coefficients hhat_k.
 #pragma once
 
@@ -10,7 +10,7 @@
 
 #include <fftw3.h>
 
-#include "core/types.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench {
 

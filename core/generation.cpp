@@ -1,12 +1,12 @@
-#include "core/generation.hpp"
+#include "contactbench/core/generation.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <string>
 
-#include "core/error.hpp"
-#include "core/fft.hpp"
-#include "core/spectrum.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/fft.hpp"
+#include "contactbench/core/spectrum.hpp"
 
 namespace contactbench {
 
@@ -21,7 +21,8 @@ std::uint64_t splitmix64(std::uint64_t x) {
 }
 
 // A uniform phase in [0, 2 pi) for the mode pair {k, -k}, keyed by its representative with kx > 0, or kx = 0
-// and ky > 0; the other member of the pair gets the opposite phase (THEORY.md section 2: phi_{-k} = -phi_k).
+// and ky > 0; the other member of the pair gets the opposite phase (docs/theory.md section 2: phi_{-k} =
+// -phi_k).
 Real random_phase(std::uint64_t seed, Index kx, Index ky) {
   Real sign = 1;
   if (kx < 0 || (kx == 0 && ky < 0)) {

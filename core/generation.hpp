@@ -1,14 +1,14 @@
-// Random self-affine surfaces: the paper's generator (THEORY.md section 2) and Fourier refinement.
+// Random self-affine surfaces: the paper's generator (docs/theory.md section 2) and Fourier refinement.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 
-#include "core/surface.hpp"
+#include "contactbench/core/surface.hpp"
 
 namespace contactbench {
 
-// PSD with roll-off and a radial cut (THEORY.md section 2):
+// PSD with roll-off and a radial cut (docs/theory.md section 2):
 //   C = C0 for |q| < qr,  C0 (|q|/qr)^(-2(1+H)) for qr <= |q| <= qs,  0 above qs,
 // with C0 fixed by sum_k C_k dqx dqy = sigma^2 on the lattice, and C = 0 at k = 0 and on the Nyquist
 // row and column. Anisotropy: |q| -> sqrt((qx/gx)^2 + (qy/gy)^2), with gx/gy = sqrt(anisotropy) and
@@ -46,7 +46,7 @@ Surface synthesize(const Grid& grid, const SpectrumMap& hhat, Index nx, Index ny
 // unchanged and its heights at the original nodes too (to round-off). Refuses a non-periodic surface.
 Surface refine(const Surface& surface, Index nx, Index ny, int threads = 1);
 
-// The paper's inputs (THEORY.md section 2, Table 1): L = 200 um, 256 x 256, periodic.
+// The paper's inputs (docs/theory.md section 2, Table 1): L = 200 um, 256 x 256, periodic.
 namespace paper {
 Grid grid();
 // Surface A: sigma = 0.5 um, H = 0.5, qr = 3.14e4 1/m, qs = 4.02e6 1/m (the Nyquist wavevector).

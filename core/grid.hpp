@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <numbers>
 
-#include "core/types.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench {
 
@@ -18,8 +18,8 @@ struct Grid {
   Real dx() const { return lx / static_cast<Real>(nx); }
   Real dy() const { return ly / static_cast<Real>(ny); }
   Index points() const { return nx * ny; }
-  Real nominal_area() const { return lx * ly; }  // A0 (THEORY.md section 0)
-  // Lattice spacing of the wavevectors, q_k = 2 pi (kx/Lx, ky/Ly) (THEORY.md section 1).
+  Real nominal_area() const { return lx * ly; }  // A0 (docs/theory.md section 0)
+  // Lattice spacing of the wavevectors, q_k = 2 pi (kx/Lx, ky/Ly) (docs/theory.md section 1).
   Real dqx() const { return 2 * std::numbers::pi / lx; }
   Real dqy() const { return 2 * std::numbers::pi / ly; }
   // Largest wavevector both axes resolve: the radius of the circle that fits in the lattice.

@@ -1,13 +1,13 @@
-#include "core/labelling.hpp"
+#include "contactbench/core/labelling.hpp"
 
 #include <algorithm>
 #include <bit>
 #include <string>
 #include <utility>
 
-#include "core/error.hpp"
-#include "core/large_buffer.hpp"
-#include "core/union_find.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/large_buffer.hpp"
+#include "contactbench/core/union_find.hpp"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>

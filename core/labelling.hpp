@@ -5,8 +5,8 @@
 #include <memory>
 #include <vector>
 
-#include "core/topology.hpp"
-#include "core/types.hpp"
+#include "contactbench/core/topology.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench {
 
@@ -54,7 +54,7 @@ class Labeller {
 // Labels are numbered in raster order of each component's first point, whatever the thread count.
 Labelling label_components(const BinaryMap& map, const Topology& topology, int threads = 1);
 
-// The set {h > z} (strictly above, THEORY.md section 3).
+// The set {h > z} (strictly above, docs/theory.md section 3).
 BinaryMap threshold_above(const HeightMap& heights, Real z);
 
 }  // namespace contactbench

@@ -1,11 +1,11 @@
-// The one currency between modules (ARCHITECTURE.md): a load-area curve in the dimensionless form
+// The one currency between modules (docs/architecture.md): a load-area curve in the dimensionless form
 // A/A0 against P/(E* A0), with the method's name, its parameters and the wall time it cost.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "core/types.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench {
 

@@ -1,11 +1,12 @@
-// The contact modulus E* (THEORY.md section 0): one elastic body against a rigid one, or two elastic bodies.
+// The contact modulus E* (docs/theory.md section 0): one elastic body against a rigid one, or two elastic
+// bodies.
 #pragma once
 
 #include <cmath>
 #include <string>
 
-#include "core/error.hpp"
-#include "core/types.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench {
 
@@ -24,7 +25,7 @@ inline Real contact_modulus(Real youngs_modulus, Real poisson_ratio) {
   return youngs_modulus / (1 - poisson_ratio * poisson_ratio);
 }
 
-// Two elastic bodies: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (THEORY.md section 0). Not E/(2(1 - nu^2)),
+// Two elastic bodies: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (docs/theory.md section 0). Not E/(2(1 - nu^2)),
 // which is the special case of two identical bodies.
 inline Real composite_modulus(Real e1, Real nu1, Real e2, Real nu2) {
   validate_elastic_constants(e1, nu1, "first body");

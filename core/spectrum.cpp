@@ -1,9 +1,9 @@
-#include "core/spectrum.hpp"
+#include "contactbench/core/spectrum.hpp"
 
 #include <cmath>
 #include <numbers>
 
-#include "core/fft.hpp"
+#include "contactbench/core/fft.hpp"
 
 namespace contactbench {
 

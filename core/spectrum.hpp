@@ -1,4 +1,4 @@
-// Spectra and spectral moments of a surface (THEORY.md section 1).
+// Spectra and spectral moments of a surface (docs/theory.md section 1).
 //
 // Conventions, named in every output:
 // - Fourier-series coefficients hhat_k = (1/(Nx Ny)) sum_x h(x) exp(-i q_k.x), q_k = 2 pi (kx/Lx, ky/Ly),
@@ -14,8 +14,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/grid.hpp"
-#include "core/surface.hpp"
+#include "contactbench/core/grid.hpp"
+#include "contactbench/core/surface.hpp"
 
 namespace contactbench {
 

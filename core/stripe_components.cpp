@@ -1,4 +1,4 @@
-#include "core/stripe_components.hpp"
+#include "contactbench/core/stripe_components.hpp"
 
 #include <algorithm>
 #include <utility>

@@ -1,7 +1,7 @@
 // Internal to the sweep (core/sweep.cpp): the connected components of the points added so far within one
 // horizontal stripe of the grid, grown point by point with a union-find, and a record of every merge that
 // joins two components touching the stripe's seam rows, so that stripes swept in parallel can be joined
-// afterwards (THEORY.md section 3).
+// afterwards (docs/theory.md section 3).
 #pragma once
 
 #include <array>
@@ -9,9 +9,9 @@
 #include <limits>
 #include <vector>
 
-#include "core/large_buffer.hpp"
-#include "core/topology.hpp"
-#include "core/types.hpp"
+#include "contactbench/core/large_buffer.hpp"
+#include "contactbench/core/topology.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench::sweep_detail {
 

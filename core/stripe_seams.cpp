@@ -1,4 +1,4 @@
-#include "core/stripe_seams.hpp"
+#include "contactbench/core/stripe_seams.hpp"
 
 #include <algorithm>
 #include <numeric>

@@ -1,5 +1,5 @@
 // Internal to the sweep (core/sweep.cpp): joining horizontal stripes that were swept independently
-// (THEORY.md section 3). Each stripe counts its own components; along the seams between stripes (and the
+// (docs/theory.md section 3). Each stripe counts its own components; along the seams between stripes (and the
 // periodic seam in y) some of those are one component of the whole grid. This counts, as a step function of
 // join time, how many the stripes counted twice.
 #pragma once
@@ -7,8 +7,8 @@
 #include <functional>
 #include <vector>
 
-#include "core/stripe_components.hpp"
-#include "core/topology.hpp"
+#include "contactbench/core/stripe_components.hpp"
+#include "contactbench/core/topology.hpp"
 
 namespace contactbench::sweep_detail {
 

@@ -1,9 +1,9 @@
-#include "core/surface.hpp"
+#include "contactbench/core/surface.hpp"
 
 #include <cmath>
 #include <string>
 
-#include "core/error.hpp"
+#include "contactbench/core/error.hpp"
 
 namespace contactbench {
 

@@ -1,8 +1,8 @@
-// A rough surface: heights on a grid (THEORY.md section 0).
+// A rough surface: heights on a grid (docs/theory.md section 0).
 #pragma once
 
-#include "core/grid.hpp"
-#include "core/types.hpp"
+#include "contactbench/core/grid.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench {
 
@@ -20,7 +20,7 @@ class Surface {
   // Sq: root-mean-square height about the mean (no detrending) [m].
   Real rms_height() const;
 
-  // The same heights with the mean removed (THEORY.md section 0: heights have zero mean).
+  // The same heights with the mean removed (docs/theory.md section 0: heights have zero mean).
   Surface centred() const;
   Surface with_periodic(bool periodic) const;
 

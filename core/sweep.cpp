@@ -1,4 +1,4 @@
-#include "core/sweep.hpp"
+#include "contactbench/core/sweep.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,9 +9,9 @@
 #include <string>
 #include <utility>
 
-#include "core/error.hpp"
-#include "core/stripe_components.hpp"
-#include "core/stripe_seams.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/stripe_components.hpp"
+#include "contactbench/core/stripe_seams.hpp"
 
 namespace contactbench {
 

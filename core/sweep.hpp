@@ -1,5 +1,5 @@
 // The geometric sweep: bearing area A_c(z) and spot count N(z) of {h > z} for many levels in one pass
-// (THEORY.md section 3): points are visited in descending height and merged in a union-find, so the
+// (docs/theory.md section 3): points are visited in descending height and merged in a union-find, so the
 // components after each level are known without labelling any level. With several threads the grid is cut
 // into horizontal stripes swept independently, and the spots counted twice along the seams are removed
 // exactly afterwards; the result does not depend on the thread count.
@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "core/surface.hpp"
-#include "core/topology.hpp"
+#include "contactbench/core/surface.hpp"
+#include "contactbench/core/topology.hpp"
 
 namespace contactbench {
 

@@ -1,4 +1,4 @@
-#include "core/topography_io.hpp"
+#include "contactbench/core/topography_io.hpp"
 
 #include <algorithm>
 #include <array>
@@ -13,8 +13,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/atomic_file.hpp"
-#include "core/error.hpp"
+#include "contactbench/core/atomic_file.hpp"
+#include "contactbench/core/error.hpp"
 
 namespace contactbench {
 

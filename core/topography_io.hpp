@@ -5,7 +5,7 @@
 #include <optional>
 #include <string_view>
 
-#include "core/surface.hpp"
+#include "contactbench/core/surface.hpp"
 
 namespace contactbench {
 

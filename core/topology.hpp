@@ -1,4 +1,4 @@
-// Which grid points touch: 4- or 8-connectivity and periodic wrap-around (THEORY.md section 3).
+// Which grid points touch: 4- or 8-connectivity and periodic wrap-around (docs/theory.md section 3).
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// Scalars, indices and the array types every module shares (ARCHITECTURE.md: "one header").
+// Scalars, indices and the array types every module shares (docs/architecture.md: "one header").
 #pragma once
 
 #include <complex>

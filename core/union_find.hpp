@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/large_buffer.hpp"
+#include "contactbench/core/large_buffer.hpp"
 
 namespace contactbench {
 

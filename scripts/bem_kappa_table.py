@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
 """The areal kappa of surface A from the boundary-element reference, under grid refinement.
 
-Surface A of the paper (THEORY.md section 2, Table 1: sigma = 0.5 um, H = 0.5, qr = 3.14e4 1/m, L = 200 um,
+Surface A of the paper (docs/theory.md section 2, Table 1: sigma = 0.5 um, H = 0.5, qr = 3.14e4 1/m, L = 200 um,
 256 x 256 points, qs at the Nyquist wavevector of that grid) is generated once with seed 1 and resampled by
 Fourier interpolation on n x n points (the same realisation, only sampled finer). At each nominal pressure
 p/(E* gbar) the Polonsky-Keer solver (contactbench bem) gives A/A0 by node count and perimeter-corrected
-(Yastrebov, Anciaux, Molinari 2017), and the areal kappa (THEORY.md section 0) is
+(Yastrebov, Anciaux, Molinari 2017), and the areal kappa (docs/theory.md section 0) is
 
     kappa = (A/A0) / (p/(E* gbar)),   gbar = sqrt(<|grad h|^2>) the areal rms gradient.
 
@@ -149,10 +149,10 @@ def main():
                       f"{float(row['seconds']):.2f} s", file=sys.stderr, flush=True)
 
     header = "".join(f"# {key}: {value}\n" for key, value in stamp.items())
-    about = ("# surface A (THEORY.md section 2, Table 1), seed " + args.seed + ", generated on 256 x 256 and "
+    about = ("# surface A (docs/theory.md section 2, Table 1), seed " + args.seed + ", generated on 256 x 256 and "
              "Fourier-refined to n x n; periodic half-space, E* = 109.9 GPa, Polonsky-Keer tolerance " +
              args.tolerance + " on the relative pressure change, each load cold-started; "
-             "kappa = (A/A0)/(p/(E* gbar)), areal gbar (THEORY.md section 0); seconds = solver time of that "
+             "kappa = (A/A0)/(p/(E* gbar)), areal gbar (docs/theory.md section 0); seconds = solver time of that "
              "solve, wall_seconds = the whole bem command (reading the file included)\n")
     columns = ["n", "pressure", "gbar", "load", "area_fraction", "area_fraction_corrected", "kappa_nodes",
                "kappa_corrected", "spots", "iterations", "residual", "seconds", "wall_seconds"]

@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
-# Fails when a library includes a header it must not see (ARCHITECTURE.md: core <- bem, core <- theories,
-# only app and bench see everything; theories never includes bem, so each stays a check on the other).
+# Fails when a library includes a header it must not see (docs/architecture.md: core <- bem, core <- theories,
+# only app and bench see everything; theories never includes bem, so each stays a check on the other), when a
+# project header is included without the contactbench/ prefix, or when a tracked file reaches outside the
+# project for its docs or data (the project stands on its own: docs/ and data/ are inside it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 status=0
-forbid() {  # forbid <folder> <include prefixes...>
+forbid() {  # forbid <folder> <library folders it must not include...>
   local folder=$1; shift
   [[ -d "$folder" ]] || return 0
-  for prefix in "$@"; do
-    if grep -rnE "#include \"${prefix}/" "$folder" --include='*.hpp' --include='*.cpp'; then
-      echo "check-layers: $folder/ must not include $prefix/" >&2
+  for library in "$@"; do
+    if grep -rnE "#include \"contactbench/${library}/" "$folder" --include='*.hpp' --include='*.cpp'; then
+      echo "check-layers: $folder/ must not include contactbench/$library/" >&2
       status=1
     fi
   done
@@ -18,4 +20,16 @@ forbid core bem theories app bench
 forbid bem theories app bench
 forbid theories bem app bench
 forbid app bench
+
+# Project headers are reached as "contactbench/<library>/x.hpp", the path they have once installed.
+if git grep -nE '#include "(core|bem|theories|app)/' -- '*.cpp' '*.hpp'; then
+  echo "check-layers: include project headers as \"contactbench/<library>/...\"" >&2
+  status=1
+fi
+
+# Nothing tracked may name the reference shelf beside the checkout (../shared) or read from it.
+if git grep -nI -e '\.\./shared' -e 'shared/data/' -e 'shared/THEORY' -- ':!scripts/check-layers.sh'; then
+  echo "check-layers: the files above point outside the project (../shared); put what they need in docs/ or data/" >&2
+  status=1
+fi
 exit $status

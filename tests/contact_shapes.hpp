@@ -1,7 +1,7 @@
-// Surfaces with analytic contact solutions, shared by the BEM tests (THEORY.md section 6).
+// Surfaces with analytic contact solutions, shared by the BEM tests (docs/theory.md section 6).
 #pragma once
 
-#include "core/surface.hpp"
+#include "contactbench/core/surface.hpp"
 
 namespace contactbench {
 

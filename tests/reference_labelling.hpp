@@ -1,4 +1,4 @@
-// A deliberately simple reference for connected-component labelling and the sweep (THEORY.md section 3):
+// A deliberately simple reference for connected-component labelling and the sweep (docs/theory.md section 3):
 // breadth-first flood fill over the grid graph that a Topology defines. No union-find, no stripes, no
 // decision tree: each foreground point not yet reached starts a new component, visited in raster order,
 // so component ids also come out in raster order of each component's first point.
@@ -9,9 +9,9 @@
 #include <deque>
 #include <vector>
 
-#include "core/labelling.hpp"
-#include "core/topology.hpp"
-#include "core/types.hpp"
+#include "contactbench/core/labelling.hpp"
+#include "contactbench/core/topology.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench::reference {
 

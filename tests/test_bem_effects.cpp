@@ -17,13 +17,13 @@
 
 #include <sys/wait.h>
 
-#include "bem/convolution.hpp"
-#include "bem/half_space.hpp"
-#include "bem/polonsky_keer.hpp"
-#include "core/error.hpp"
-#include "core/generation.hpp"
-#include "core/topography_io.hpp"
-#include "tests/contact_shapes.hpp"
+#include "contact_shapes.hpp"
+#include "contactbench/bem/convolution.hpp"
+#include "contactbench/bem/half_space.hpp"
+#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/generation.hpp"
+#include "contactbench/core/topography_io.hpp"
 
 namespace contactbench {
 namespace {

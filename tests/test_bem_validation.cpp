@@ -1,5 +1,5 @@
 // Validation of the Polonsky-Keer solver beyond the single-load analytic checks of test_polonsky_keer.cpp
-// (THEORY.md section 6): the bi-sinusoid's two asymptotes (Johnson, Greenwood and Higginson 1985),
+// (docs/theory.md section 6): the bi-sinusoid's two asymptotes (Johnson, Greenwood and Higginson 1985),
 // reciprocity and energy of solutions, convergence under grid refinement, and hard cases (a single spike,
 // contact fractions of 1e-4 and 0.99, height ranges of 1e6, non-square grids, random surfaces).
 // Every tolerance says where its size comes from; "measured" values are from a Release build.
@@ -10,13 +10,13 @@
 #include <random>
 #include <vector>
 
-#include "bem/contact_statistics.hpp"
-#include "bem/half_space.hpp"
-#include "bem/polonsky_keer.hpp"
-#include "core/generation.hpp"
-#include "core/spectrum.hpp"
-#include "tests/contact_shapes.hpp"
-#include "tests/tolerances.hpp"
+#include "contact_shapes.hpp"
+#include "contactbench/bem/contact_statistics.hpp"
+#include "contactbench/bem/half_space.hpp"
+#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/core/generation.hpp"
+#include "contactbench/core/spectrum.hpp"
+#include "tolerances.hpp"
 
 namespace contactbench {
 namespace {
@@ -51,14 +51,14 @@ Surface wavy(Index n, Index m, bool along_y, Real lambda, Real amplitude) {
   return Surface(grid, h);
 }
 
-// Surface A of the paper (THEORY.md section 2: sigma = 0.5 um, H = 0.5, qr = 3.14e4 1/m, qs at Nyquist) on
-// an n x n grid over 200 um, with a fixed seed.
+// Surface A of the paper (docs/theory.md section 2: sigma = 0.5 um, H = 0.5, qr = 3.14e4 1/m, qs at Nyquist)
+// on an n x n grid over 200 um, with a fixed seed.
 Surface surface_a(Index n, std::uint64_t seed) {
   const Grid grid{.nx = n, .ny = n, .lx = 200e-6, .ly = 200e-6, .periodic = true};
   return generate_surface(grid, paper::surface_a(), seed);
 }
 
-// The areal rms gradient gbar (THEORY.md section 0), from the spectral moments.
+// The areal rms gradient gbar (docs/theory.md section 0), from the spectral moments.
 Real rms_gradient(const Surface& surface) {
   return spectral_moments(surface).rms_gradient();
 }
@@ -88,8 +88,8 @@ Real node_fraction(const ContactSolution& s) {
 
 // ---------------------------------------------------------------------------------------------------------
 // The bi-sinusoid z = D cos(2 pi x/lambda) cos(2 pi y/lambda) (Johnson, Greenwood, Higginson, Int. J. Mech.
-// Sci. 27, 383-396, 1985; THEORY.md section 6): full contact at p* = sqrt2 pi E* D/lambda. One wavelength
-// on 128 x 128 points.
+// Sci. 27, 383-396, 1985; docs/theory.md section 6): full contact at p* = sqrt2 pi E* D/lambda. One
+// wavelength on 128 x 128 points.
 
 constexpr Index kBisinusoidPoints = 128;
 constexpr Real kLambda = 100e-6, kAmplitude = 1e-6;
@@ -272,8 +272,8 @@ TEST(BemValidation, WorkOfTheLoadIsTheElasticEnergy) {
 
 TEST(BemValidation, HertzConvergesUnderGridRefinement) {
   // One Hertz problem (R = 1 mm, a = 16 um) on grids of 32, 64, 128 points over 4a: 8, 16, 32 pixels per
-  // contact radius. Errors against Hertz (THEORY.md section 6) of the pressure field (relative L2), the peak
-  // pressure p0 and the approach delta = a^2/R.
+  // contact radius. Errors against Hertz (docs/theory.md section 6) of the pressure field (relative L2), the
+  // peak pressure p0 and the approach delta = a^2/R.
   const Real radius = 1e-3, a = 16e-6, load = 4 * kModulus * a * a * a / (3 * radius);
   const Real p0 = 3 * load / (2 * pi * a * a), delta = a * a / radius;
   std::vector<Real> field, peak, approach;
@@ -340,7 +340,8 @@ TEST(BemValidation, ASingleSpikeCarriesTheWholeLoad) {
   for (const bool periodic : {true, false}) {
     const Surface surface = spike_on_a_flat(periodic);
     const Real compliance = spike_compliance(surface);
-    if (!periodic) {  // Love's centre of a square (THEORY.md section 6): 1.122200 dx/E*, 7 printed digits
+    if (!periodic) {  // Love's centre of a square (docs/theory.md section 6): 1.122200 dx/E*, 7 printed
+                      // digits
       EXPECT_NEAR(compliance * kModulus / surface.grid().dx(), 1.122200, 5e-7);
     }
     const Real touching = kSpikeHeight / compliance;  // the spike's pressure that brings it to the flat
@@ -436,9 +437,9 @@ TEST(BemValidation, AContactFractionOf099OnARandomSurface) {
   expect_admissible(s, solver.surface(), "A/A0 ~ 0.99");
   EXPECT_GT(node_fraction(s), 0.98);
   EXPECT_LT(node_fraction(s), 0.997);
-  // Persson's theory (THEORY.md section 5) gives erf(sqrt2 1.2) = 0.984 at this load; the BEM is known to
-  // lie close to it near full contact (measured 0.992). A stiffness wrong by a factor 2 would act like half
-  // or twice the load: A/A0 about 0.85 or 1.000 (measured on another seed).
+  // Persson's theory (docs/theory.md section 5) gives erf(sqrt2 1.2) = 0.984 at this load; the BEM is known
+  // to lie close to it near full contact (measured 0.992). A stiffness wrong by a factor 2 would act like
+  // half or twice the load: A/A0 about 0.85 or 1.000 (measured on another seed).
   EXPECT_NEAR(node_fraction(s), std::erf(std::sqrt(2.0) * 1.2), 0.02);
   EXPECT_LT(s.residual, 1e-9);
 }
@@ -512,8 +513,8 @@ TEST(BemValidation, WestergaardOnATransposedGridIsTheTransposedAnswer) {
   // Westergaard's wavy surface on 64 x 8 points (waves along x) and 8 x 64 (waves along y), periodic: the
   // problems are transposes of each other, so are the answers, to round-off and solver tolerance
   // (tolerance::solver_consistency of the peak; measured 7e-15). The contact width is Westergaard's
-  // (THEORY.md section 6): pbar/p* = sin^2(pi a/lambda), right to half a pixel at each edge (allow 1.5 pixels
-  // of 64).
+  // (docs/theory.md section 6): pbar/p* = sin^2(pi a/lambda), right to half a pixel at each edge (allow 1.5
+  // pixels of 64).
   const Real lambda = 64e-6, amplitude = 1e-6, p_star = pi * kModulus * amplitude / lambda;
   PolonskyKeer along_x(wavy(64, 8, false, lambda, amplitude), kModulus, {.tolerance = 1e-12});
   PolonskyKeer along_y(wavy(64, 8, true, lambda, amplitude), kModulus, {.tolerance = 1e-12});

@@ -11,19 +11,19 @@
 #include <string>
 #include <vector>
 
-#include "core/error.hpp"
-#include "core/generation.hpp"
-#include "core/spectrum.hpp"
-#include "theories/bush_gibson_thomas.hpp"
-#include "theories/elliptic_integrals.hpp"
-#include "theories/load_solver.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/generation.hpp"
+#include "contactbench/core/spectrum.hpp"
+#include "contactbench/theories/bush_gibson_thomas.hpp"
+#include "contactbench/theories/elliptic_integrals.hpp"
+#include "contactbench/theories/load_solver.hpp"
 
 namespace contactbench {
 namespace {
 
 constexpr Real pi = std::numbers::pi;
 
-// Named tolerances, each with its reason (ARCHITECTURE.md).
+// Named tolerances, each with its reason (docs/architecture.md).
 // Carlson's duplication against 17-digit known values and series: a few ulps (observed <= 2e-16).
 constexpr Real kEllipticKnown = 1e-15;
 // Against the long double AGM: both are accurate to a few ulps of double.
@@ -37,7 +37,7 @@ constexpr Real kEllipticContact = 1e-10;
 constexpr Real kJohnsonApproximation = 1e-2;
 // The model's quadrature against Nayak's closed forms (issue: 1e-8; observed ~1e-15).
 constexpr Real kNayak = 1e-8;
-// A direct 3-D grid (step 0.08 sqrt(m4)) over THEORY.md's summit density: the integrand has a kink where
+// A direct 3-D grid (step 0.08 sqrt(m4)) over docs/theory.md's summit density: the integrand has a kink where
 // det H = 0, so the grid errs by O(h^2), observed 9e-5.
 constexpr Real kDirectGrid = 1e-3;
 // Doubling the quadrature nodes (issue: 1e-6 relative; observed <= 3e-13).
@@ -197,7 +197,7 @@ TEST(BushGibsonThomas, SummitDensityAndMeanHeightAreNayaks) {
   }
 }
 
-// THEORY.md's n(z, H) = (2 pi m2)^-1 g(z, H) |det H| [H neg. def.] integrated over z (which leaves the
+// docs/theory.md's n(z, H) = (2 pi m2)^-1 g(z, H) |det H| [H neg. def.] integrated over z (which leaves the
 // Hessian's Gaussian density) on a direct grid in (hxx, hyy, hxy), m2 = m4 = 1: Nayak's density, and the mean
 // height E[z | H] = -(3 m2/(2 m4)) (hxx + hyy)/2 averaged over the summits: 4 m2/sqrt(pi m4). This checks the
 // factor 2 pi r of the model's reduced density independently of its (u, v, w) algebra.
@@ -289,7 +289,7 @@ TEST(BushGibsonThomas, ApproachesTheLinearLawAtVanishingLoad) {
   }
 }
 
-// THEORY.md section 5: at realistic loads the full model is about a factor two below the linear law.
+// docs/theory.md section 5: at realistic loads the full model is about a factor two below the linear law.
 // Surface A (generate_surface(paper::grid(), paper::surface_a(), 1, 1), alpha = 92.4), measured ratios
 // A/A0 over sqrt(pi) P/(E* A0 sqrt(m2)) at P/(E* A0) = 1e-3, 2e-3, 5e-3, 1e-2: 0.484, 0.468, 0.444, 0.424.
 TEST(BushGibsonThomas, SurfaceAIsAboutAFactorTwoBelowTheLinearLaw) {

@@ -87,7 +87,7 @@ TEST_F(Cli, RefineWritesTheSameRealisationOnAFinerGrid) {
 }
 
 TEST_F(Cli, StatsOfAMeasuredFileWithItsOwnSizes) {
-  const CommandResult stats = run(std::string("stats ") + CB_MEASURED_DIR + "/matrix-4.txt");
+  const CommandResult stats = run(std::string("stats ") + CB_DATA_DIR + "/measured/matrix-4.txt");
   ASSERT_EQ(stats.status, 0) << stats.err;
   EXPECT_EQ(json_value(stats.out, "nx"), 75);
   EXPECT_EQ(json_value(stats.out, "ny"), 305);

@@ -7,8 +7,8 @@
 #include <thread>
 #include <vector>
 
-#include "core/fft.hpp"
-#include "tests/tolerances.hpp"
+#include "contactbench/core/fft.hpp"
+#include "tolerances.hpp"
 
 namespace contactbench {
 namespace {

@@ -1,13 +1,13 @@
-// The paper's generator (THEORY.md section 2): Table 2, refinement, reproducibility, anisotropy.
+// The paper's generator (docs/theory.md section 2): Table 2, refinement, reproducibility, anisotropy.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/error.hpp"
-#include "core/fft.hpp"
-#include "core/generation.hpp"
-#include "core/spectrum.hpp"
-#include "tests/tolerances.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/fft.hpp"
+#include "contactbench/core/generation.hpp"
+#include "contactbench/core/spectrum.hpp"
+#include "tolerances.hpp"
 
 namespace contactbench {
 namespace {
@@ -43,7 +43,7 @@ TEST(PaperSurfaces, SurfaceBWithQsAtNyquistReproducesTable2) {
 
 TEST(PaperSurfaces, SurfaceBWithThePrintedQsDoesNotReproduceTable2) {
   // Table 1 prints qs = 3.00e6 1/m for surface B; that cut gives m2 = 0.0337 and m4 = 0.0492 um^-2
-  // (THEORY.md section 2), not Table 2's 0.0391 and 0.0992. This records the paper's inconsistency.
+  // (docs/theory.md section 2), not Table 2's 0.0391 and 0.0992. This records the paper's inconsistency.
   const Surface b = generate_surface(paper::grid(), paper::surface_b_printed_qs(), 1, 2);
   const SpectralMoments m = spectral_moments(b);
   EXPECT_NEAR(m.m0 / (um * um), 1.00, tolerance::table2);

@@ -1,15 +1,15 @@
-// The elastic half-space operators (THEORY.md section 6), checked before any solver relies on them: Love's
-// kernel against its closed-form values, the non-periodic operator against a direct sum of kernels, the
-// periodic operator against single Fourier modes, and reciprocity (a symmetric, positive operator).
+// The elastic half-space operators (docs/theory.md section 6), checked before any solver relies on them:
+// Love's kernel against its closed-form values, the non-periodic operator against a direct sum of kernels,
+// the periodic operator against single Fourier modes, and reciprocity (a symmetric, positive operator).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <random>
 
-#include "bem/half_space.hpp"
-#include "bem/love_kernel.hpp"
-#include "core/error.hpp"
+#include "contactbench/bem/half_space.hpp"
+#include "contactbench/bem/love_kernel.hpp"
+#include "contactbench/core/error.hpp"
 
 namespace contactbench {
 namespace {
@@ -27,7 +27,7 @@ HeightMap random_pressure(Index nx, Index ny, unsigned seed) {
 }
 
 TEST(LoveKernel, CentreOfASquareIsTheClosedForm) {
-  // THEORY.md: centre of a square of side s: u = (4 ln(1 + sqrt2)/pi) p s/E* = 1.122200 p s/E*.
+  // docs/theory.md: centre of a square of side s: u = (4 ln(1 + sqrt2)/pi) p s/E* = 1.122200 p s/E*.
   const Real s = 2e-6;
   const Real expected = 4 * std::log(1 + std::sqrt(2.0)) / pi * s;
   EXPECT_NEAR(love_displacement(0, 0, s / 2, s / 2), expected, 1e-14 * expected);  // round-off of 8 logs

@@ -1,4 +1,4 @@
-// Connected-component labelling (core/labelling.hpp, THEORY.md section 3): against a breadth-first flood
+// Connected-component labelling (core/labelling.hpp, docs/theory.md section 3): against a breadth-first flood
 // fill on random maps for every topology and thread count, then hard cases with counts reasoned by hand.
 #include <gtest/gtest.h>
 
@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "core/labelling.hpp"
-#include "core/topology.hpp"
-#include "tests/reference_labelling.hpp"
+#include "contactbench/core/labelling.hpp"
+#include "contactbench/core/topology.hpp"
+#include "reference_labelling.hpp"
 
 namespace contactbench {
 namespace {

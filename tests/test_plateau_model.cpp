@@ -1,5 +1,5 @@
-// The multi-plateaus model (theories/plateau_model.hpp, THEORY.md section 4): the sum it promises, Sneddon's
-// flat punch exactly, sqrt(2) x Hertz on a lattice paraboloid, monotonicity and the paper's levels.
+// The multi-plateaus model (theories/plateau_model.hpp, docs/theory.md section 4): the sum it promises,
+// Sneddon's flat punch exactly, sqrt(2) x Hertz on a lattice paraboloid, monotonicity and the paper's levels.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "core/error.hpp"
-#include "core/generation.hpp"
-#include "core/sweep.hpp"
-#include "theories/plateau_model.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/generation.hpp"
+#include "contactbench/core/sweep.hpp"
+#include "contactbench/theories/plateau_model.hpp"
 
 namespace contactbench {
 namespace {
@@ -28,8 +28,8 @@ Surface random_surface(Index n, std::uint64_t seed) {
   return generate_surface(grid, psd, seed);
 }
 
-// THEORY.md eq. 3 as the header spells it out: P/(E* A0) summed over levels with the value of sqrt(A_c N)
-// reported at the lower level of each step (right endpoint), A_c = area_fraction A0.
+// docs/theory.md eq. 3 as the header spells it out: P/(E* A0) summed over levels with the value of sqrt(A_c
+// N) reported at the lower level of each step (right endpoint), A_c = area_fraction A0.
 std::vector<Real> expected_load(const SweepCurve& c) {
   std::vector<Real> load(c.z.size(), 0.0);
   for (std::size_t j = 1; j < c.z.size(); ++j) {
@@ -81,7 +81,7 @@ TEST(PlateauModel, LoadIsTheRightEndpointSumOfTheSweep) {
 }
 
 TEST(PlateauModel, ParametersSayWhichTopologyWasUsed) {
-  // THEORY.md section 3: every output says which connectivity and wrap were used.
+  // docs/theory.md section 3: every output says which connectivity and wrap were used.
   const Surface s = random_surface(16, 3);
   for (const Topology t :
        {Topology{Connectivity::four, true, true}, Topology{Connectivity::eight, true, false},

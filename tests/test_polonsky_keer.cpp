@@ -1,14 +1,14 @@
-// The Polonsky-Keer solver against analytic contacts (THEORY.md section 6): Hertz (non-periodic) and
+// The Polonsky-Keer solver against analytic contacts (docs/theory.md section 6): Hertz (non-periodic) and
 // Westergaard's wavy surface (periodic). Grid tolerances are argued from the pixel size at each check.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "bem/contact_statistics.hpp"
-#include "bem/polonsky_keer.hpp"
-#include "core/error.hpp"
-#include "tests/contact_shapes.hpp"
+#include "contact_shapes.hpp"
+#include "contactbench/bem/contact_statistics.hpp"
+#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/core/error.hpp"
 
 namespace contactbench {
 namespace {

@@ -1,7 +1,7 @@
 // Scene files: a full scene round-trips through to_toml, defaults are filled in, relative paths resolve
 // against the scene's folder, and every kind of invalid input is reported with its key path and reason,
 // all problems of a scene in one error.
-#include "app/scene.hpp"
+#include "contactbench/app/scene.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -14,14 +14,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "core/material.hpp"
+#include "contactbench/core/material.hpp"
 
 namespace contactbench {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path measured_folder{CB_MEASURED_DIR};
+const fs::path measured_folder{CB_DATA_DIR "/measured"};
 
 // A valid scene in blocks; each test replaces the block it is about.
 struct Blocks {

@@ -10,14 +10,14 @@
 #include <string>
 #include <vector>
 
-#include "app/comparison.hpp"
-#include "app/provenance.hpp"
-#include "app/report_writers.hpp"
-#include "app/scene.hpp"
-#include "app/scene_plan.hpp"
-#include "app/scene_run.hpp"
-#include "core/error.hpp"
-#include "core/topography_io.hpp"
+#include "contactbench/app/comparison.hpp"
+#include "contactbench/app/provenance.hpp"
+#include "contactbench/app/report_writers.hpp"
+#include "contactbench/app/scene.hpp"
+#include "contactbench/app/scene_plan.hpp"
+#include "contactbench/app/scene_run.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/topography_io.hpp"
 
 namespace contactbench {
 namespace {
@@ -147,7 +147,7 @@ hardness = 2e9
 TEST(ScenePlan, RefusesToRefineANonPeriodicSurface) {
   const Scene scene = parse_scene(R"(name = "measured"
 [surface]
-file = ")" + (std::filesystem::path(CB_MEASURED_DIR) / "matrix-3.txt").string() +
+file = ")" + (std::filesystem::path(CB_DATA_DIR "/measured") / "matrix-3.txt").string() +
                                       R"("
 [material]
 estar = 1e11
@@ -212,14 +212,13 @@ TEST(ShippedScenes, SurfaceBRunsEndToEndOnASmallGrid) {
 TEST(ShippedScenes, MeasuredRunsEndToEndOnACorner) {
   const std::filesystem::path folder = std::filesystem::temp_directory_path() / "contactbench_scene_measured";
   std::filesystem::create_directories(folder);
-  const Surface full = read_topography(std::filesystem::path(CB_MEASURED_DIR) / "matrix-2.txt");
+  const Surface full = read_topography(std::filesystem::path(CB_DATA_DIR "/measured") / "matrix-2.txt");
   const Index n = 48;
   const Grid corner{
       .nx = n, .ny = n, .lx = full.grid().dx() * n, .ly = full.grid().dy() * n, .periodic = false};
   write_surface(folder / "corner.txt", Surface(corner, full.heights().topLeftCorner(n, n)));
-  const std::string text =
-      replace_all(slurp(kSource / "scenes" / "paper" / "measured.toml"),
-                  "../../../shared/data/measured/matrix-2.txt", (folder / "corner.txt").string());
+  const std::string text = replace_all(slurp(kSource / "scenes" / "paper" / "measured.toml"),
+                                       "../../data/measured/matrix-2.txt", (folder / "corner.txt").string());
   expect_complete_run(text, folder / "out");
   std::filesystem::remove_all(folder);
 }

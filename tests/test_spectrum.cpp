@@ -1,4 +1,5 @@
-// Spectra and moments (THEORY.md section 1): conventions checked on fields whose moments are known exactly.
+// Spectra and moments (docs/theory.md section 1): conventions checked on fields whose moments are known
+// exactly.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,8 +7,8 @@
 #include <numeric>
 #include <random>
 
-#include "core/spectrum.hpp"
-#include "tests/tolerances.hpp"
+#include "contactbench/core/spectrum.hpp"
+#include "tolerances.hpp"
 
 namespace contactbench {
 namespace {

@@ -5,9 +5,9 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "core/atomic_file.hpp"
-#include "core/error.hpp"
-#include "core/surface.hpp"
+#include "contactbench/core/atomic_file.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/surface.hpp"
 
 namespace contactbench {
 namespace {

@@ -1,5 +1,5 @@
-// The geometric sweep (core/sweep.hpp, THEORY.md section 3): A_c(z) and N(z) of {h > z} at every reported
-// level against thresholding and flood-filling that level from scratch; level placement; hard cases.
+// The geometric sweep (core/sweep.hpp, docs/theory.md section 3): A_c(z) and N(z) of {h > z} at every
+// reported level against thresholding and flood-filling that level from scratch; level placement; hard cases.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "core/generation.hpp"
-#include "core/sweep.hpp"
-#include "tests/reference_labelling.hpp"
+#include "contactbench/core/generation.hpp"
+#include "contactbench/core/sweep.hpp"
+#include "reference_labelling.hpp"
 
 namespace contactbench {
 namespace {

@@ -1,6 +1,6 @@
 // Reading and writing topography files: the measured instrument exports, the project's lossless format,
 // plain matrices, and one test per kind of bad input.
-#include "core/topography_io.hpp"
+#include "contactbench/core/topography_io.hpp"
 
 #include <bit>
 #include <cmath>
@@ -15,8 +15,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "core/error.hpp"
-#include "tests/tolerances.hpp"
+#include "contactbench/core/error.hpp"
+#include "tolerances.hpp"
 
 namespace contactbench {
 namespace {
@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 // The measured files and their Sq values come from SurfaceTopography's test data
 // (ContactEngineering/SurfaceTopography, test/file_format_examples, commit
 // 119cb66ade8917a0a62a878c82d459f959566760, MIT licence); see data/measured/README.md.
-const fs::path measured_folder{CB_MEASURED_DIR};
+const fs::path measured_folder{CB_DATA_DIR "/measured"};
 
 // The one rounding of a unit conversion (10.00 times 1e-6, say) against a decimal literal: a few ulp.
 constexpr double unit_conversion_rounding = 1e-15;

@@ -1,4 +1,4 @@
-// Named tolerances for numerical tests, each with the reason for its size (ARCHITECTURE.md conventions).
+// Named tolerances for numerical tests, each with the reason for its size (docs/architecture.md conventions).
 #pragma once
 
 namespace contactbench::tolerance {

@@ -1,4 +1,4 @@
-#include "theories/bgt_linear.hpp"
+#include "contactbench/theories/bgt_linear.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -6,11 +6,12 @@
 #include <limits>
 #include <numbers>
 
-#include "theories/load_solver.hpp"
+#include "contactbench/theories/load_solver.hpp"
 
 namespace contactbench {
 
-// Bush, Gibson & Thomas (1975), small-load limit, THEORY.md section 5: A/A0 = sqrt(pi) P/(E* A0 sqrt(m2)).
+// Bush, Gibson & Thomas (1975), small-load limit, docs/theory.md section 5: A/A0 = sqrt(pi) P/(E* A0
+// sqrt(m2)).
 Real bgt_linear_area_fraction(Real load, Real m2) {
   return std::sqrt(std::numbers::pi / m2) * load;
 }

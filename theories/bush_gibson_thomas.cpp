@@ -1,4 +1,4 @@
-#include "theories/bush_gibson_thomas.hpp"
+#include "contactbench/theories/bush_gibson_thomas.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,9 +7,9 @@
 #include <numbers>
 #include <string>
 
-#include "core/error.hpp"
-#include "theories/elliptic_integrals.hpp"
-#include "theories/gaussian_tail_integrals.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/theories/elliptic_integrals.hpp"
+#include "contactbench/theories/gaussian_tail_integrals.hpp"
 
 namespace contactbench {
 namespace {
@@ -101,7 +101,7 @@ BushGibsonThomas::BushGibsonThomas(const IsotropicMoments& m, BgtQuadrature quad
         "bgt: Nayak's bandwidth alpha = m0 m4/m2^2 = " + format_number(alpha_) +
         " must exceed 1.5, or the variance m0 (1 - 3/(2 alpha)) of the summit heights at given curvature "
         "is not positive");
-  // THEORY.md section 5: z given u is N(mu, s^2), mu = -(3 m2/(2 m4)) u, s^2 = m0 (1 - 3/(2 alpha)).
+  // docs/theory.md section 5: z given u is N(mu, s^2), mu = -(3 m2/(2 m4)) u, s^2 = m0 (1 - 3/(2 alpha)).
   const Real sigma = std::sqrt(1 - 1.5 / alpha_);  // s/sqrt(m0)
   s_ = std::sqrt(m.m0) * sigma;
   const Real slope = 1.5 / std::sqrt(alpha_);  // mu/sqrt(m0) = slope * x

@@ -1,10 +1,11 @@
-// The full Bush-Gibson-Thomas model (A. W. Bush, R. D. Gibson and T. R. Thomas, Wear 35, 87, 1975; THEORY.md
-// section 5): the summits of an isotropic Gaussian surface are elliptic paraboloids with Nayak's joint
-// distribution of height and principal curvatures (P. R. Nayak, J. Lubr. Technol. 93, 398, 1971), each an
-// independent elliptic Hertz contact with the rigid flat (K. L. Johnson, Contact Mechanics, 1985, sec. 4.2).
+// The full Bush-Gibson-Thomas model (A. W. Bush, R. D. Gibson and T. R. Thomas, Wear 35, 87, 1975;
+// docs/theory.md section 5): the summits of an isotropic Gaussian surface are elliptic paraboloids with
+// Nayak's joint distribution of height and principal curvatures (P. R. Nayak, J. Lubr. Technol. 93, 398,
+// 1971), each an independent elliptic Hertz contact with the rigid flat (K. L. Johnson, Contact Mechanics,
+// 1985, sec. 4.2).
 //
-// Summit density (THEORY.md section 5, Kac-Rice form): n(z, H) = (2 pi m2)^-1 g(z, H) |det H| [H neg. def.].
-// With u = (hxx + hyy)/2 ~ N(0, 2 m4/3), v = (hxx - hyy)/2, w = hxy ~ N(0, m4/3), all independent, the
+// Summit density (docs/theory.md section 5, Kac-Rice form): n(z, H) = (2 pi m2)^-1 g(z, H) |det H| [H neg.
+// def.]. With u = (hxx + hyy)/2 ~ N(0, 2 m4/3), v = (hxx - hyy)/2, w = hxy ~ N(0, m4/3), all independent, the
 // principal curvatures of a summit are kbar -+ r with kbar = -u > r = sqrt(v^2 + w^2) >= 0, and its height
 // is N(mu, s^2) given kbar, mu = (3 m2/(2 m4)) kbar, s^2 = m0 (1 - 3/(2 alpha)), alpha = m0 m4/m2^2.
 // Per unit area, with N(kbar; 0, 2 m4/3) the normal density,
@@ -31,10 +32,10 @@
 #include <span>
 #include <vector>
 
-#include "core/load_area_curve.hpp"
-#include "core/spectrum.hpp"
-#include "core/types.hpp"
-#include "theories/load_solver.hpp"
+#include "contactbench/core/load_area_curve.hpp"
+#include "contactbench/core/spectrum.hpp"
+#include "contactbench/core/types.hpp"
+#include "contactbench/theories/load_solver.hpp"
 
 namespace contactbench {
 

@@ -1,4 +1,4 @@
-#include "theories/elliptic_integrals.hpp"
+#include "contactbench/theories/elliptic_integrals.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <numbers>
 #include <string>
 
-#include "core/error.hpp"
-#include "theories/load_solver.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/theories/load_solver.hpp"
 
 namespace contactbench {
 namespace {

@@ -12,7 +12,7 @@
 // cancellation as m -> 0, and stay finite and accurate as m -> 1 (K grows like ln(4/sqrt(1 - m))).
 #pragma once
 
-#include "core/types.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench {
 

@@ -1,4 +1,4 @@
-#include "theories/gaussian_tail_integrals.hpp"
+#include "contactbench/theories/gaussian_tail_integrals.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/error.hpp"
+#include "contactbench/core/error.hpp"
 
 namespace contactbench {
 namespace {
@@ -145,8 +145,8 @@ Real log_gaussian_tail_integral(Real n, Real t) {
   if (!(std::isfinite(n) && n >= 0))
     throw Error("gaussian tail integral F_n(t): n must be finite and >= 0, got " + str(n));
   if (!std::isfinite(t)) throw Error("gaussian tail integral F_n(t): t must be finite, got " + str(t));
-  // Closed forms (THEORY.md section 5) where they are well conditioned: erfc keeps full relative accuracy in
-  // this range, and phi - t F_0 loses at most a factor 3 (at t = 1) to cancellation.
+  // Closed forms (docs/theory.md section 5) where they are well conditioned: erfc keeps full relative
+  // accuracy in this range, and phi - t F_0 loses at most a factor 3 (at t = 1) to cancellation.
   if (n == 0 && t <= 2) return std::log(0.5 * std::erfc(t / std::numbers::sqrt2));
   if (n == 1 && t <= 1) {
     const Real f0 = 0.5 * std::erfc(t / std::numbers::sqrt2);

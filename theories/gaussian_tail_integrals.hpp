@@ -1,5 +1,5 @@
 // The Gaussian tail integrals of Greenwood-Williamson theory with a Gaussian summit height density
-// (THEORY.md section 5; Greenwood & Williamson, Proc. R. Soc. A 295, 1966):
+// (docs/theory.md section 5; Greenwood & Williamson, Proc. R. Soc. A 295, 1966):
 //   F_n(t) = (2 pi)^(-1/2) int_t^inf (s - t)^n exp(-s^2/2) ds,   real n >= 0.
 //
 // Method. With s = t + u, F_n(t) = phi(t) I_n(t), phi(t) = exp(-t^2/2)/sqrt(2 pi) and
@@ -14,10 +14,10 @@
 // are well conditioned; elsewhere (F_1 at large t loses all digits to cancellation) the integral is used.
 //
 // Accuracy: better than 1e-12 relative over t in [-10, 40] (tested against an independent long double
-// quadrature to 1e-9 and THEORY.md's check values); any finite t and n >= 0 are accepted.
+// quadrature to 1e-9 and docs/theory.md's check values); any finite t and n >= 0 are accepted.
 #pragma once
 
-#include "core/types.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench {
 

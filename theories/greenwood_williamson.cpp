@@ -1,4 +1,4 @@
-#include "theories/greenwood_williamson.hpp"
+#include "contactbench/theories/greenwood_williamson.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,8 +7,8 @@
 #include <numbers>
 #include <string>
 
-#include "core/error.hpp"
-#include "theories/gaussian_tail_integrals.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/theories/gaussian_tail_integrals.hpp"
 
 namespace contactbench {
 namespace {
@@ -21,7 +21,7 @@ constexpr Real kLogLoadTolerance = 1e-13;
 // Absolute floor of the bracket width in t (the relative floor 4 eps |t| comes first except near t = 0).
 constexpr Real kSeparationTolerance = 1e-15;
 
-// ln of the prefactors of A/A0 and P/(E* A0) (Greenwood & Williamson 1966, THEORY.md section 5).
+// ln of the prefactors of A/A0 and P/(E* A0) (Greenwood & Williamson 1966, docs/theory.md section 5).
 Real log_area_prefactor(const GwParameters& gw) {
   return std::log(pi * gw.eta * gw.beta * gw.sigma_s);
 }
@@ -111,7 +111,7 @@ Real gw_separation(const GwParameters& gw, Real t) {
   return gw.ys + t * gw.sigma_s;
 }
 
-// Greenwood & Williamson (1966), THEORY.md section 5: N/A0 = eta F_0(t).
+// Greenwood & Williamson (1966), docs/theory.md section 5: N/A0 = eta F_0(t).
 Real gw_spot_density(const GwParameters& gw, Real t) {
   return gw.eta * gaussian_tail_integral(0, t);
 }

@@ -1,6 +1,6 @@
 // Greenwood-Williamson theory with Gaussian summit heights (Greenwood & Williamson, Proc. R. Soc. A 295,
-// 1966; THEORY.md section 5) and McCool's parameters from the profile moments (McCool, Wear 107, 1986, using
-// Nayak's random-process results, Nayak, J. Lubr. Technol. 93, 1971).
+// 1966; docs/theory.md section 5) and McCool's parameters from the profile moments (McCool, Wear 107, 1986,
+// using Nayak's random-process results, Nayak, J. Lubr. Technol. 93, 1971).
 //
 // Summits of density eta, radius beta and Gaussian heights (mean ys above the mean plane of the surface,
 // standard deviation sigma_s) each make an independent Hertz contact with the flat at separation d (measured
@@ -14,10 +14,10 @@
 #include <optional>
 #include <span>
 
-#include "core/load_area_curve.hpp"
-#include "core/spectrum.hpp"
-#include "core/types.hpp"
-#include "theories/load_solver.hpp"
+#include "contactbench/core/load_area_curve.hpp"
+#include "contactbench/core/spectrum.hpp"
+#include "contactbench/core/types.hpp"
+#include "contactbench/theories/load_solver.hpp"
 
 namespace contactbench {
 

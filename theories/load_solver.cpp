@@ -1,10 +1,10 @@
-#include "theories/load_solver.hpp"
+#include "contactbench/theories/load_solver.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include "core/error.hpp"
+#include "contactbench/core/error.hpp"
 
 namespace contactbench {
 namespace {

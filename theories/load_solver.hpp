@@ -3,8 +3,8 @@
 //
 // - The theories are written for isotropic surfaces with one profile moment of each order. The moments used
 // are
-//   the means of the x and y profile moments (THEORY.md sections 0 and 1: profile, not areal, moments), and a
-//   surface whose x and y moments differ by more than kMaxAnisotropy is refused rather than silently
+//   the means of the x and y profile moments (docs/theory.md sections 0 and 1: profile, not areal, moments),
+//   and a surface whose x and y moments differ by more than kMaxAnisotropy is refused rather than silently
 //   averaged.
 // - Requested loads P/(E* A0) must be finite, positive and ascending.
 // - A theory whose load is a monotone function of a separation is solved for the separation that gives each
@@ -16,8 +16,8 @@
 #include <string>
 #include <string_view>
 
-#include "core/spectrum.hpp"
-#include "core/types.hpp"
+#include "contactbench/core/spectrum.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench {
 

@@ -1,16 +1,16 @@
-#include "theories/persson.hpp"
+#include "contactbench/theories/persson.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
-#include "core/error.hpp"
-#include "theories/load_solver.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/theories/load_solver.hpp"
 
 namespace contactbench {
 
-// Persson (2001), THEORY.md section 5: A/A0 = erf(p/(E* sqrt(m2))).
+// Persson (2001), docs/theory.md section 5: A/A0 = erf(p/(E* sqrt(m2))).
 Real persson_area_fraction(Real load, Real m2) {
   return std::erf(load / std::sqrt(m2));
 }

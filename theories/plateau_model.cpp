@@ -1,11 +1,11 @@
-#include "theories/plateau_model.hpp"
+#include "contactbench/theories/plateau_model.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 
-#include "theories/load_solver.hpp"
+#include "contactbench/theories/load_solver.hpp"
 
 namespace contactbench {
 

@@ -1,4 +1,4 @@
-// The multi-plateaus contact model of G. F. Wang, X. M. Liang and D. Yan (THEORY.md section 4).
+// The multi-plateaus contact model of G. F. Wang, X. M. Liang and D. Yan (docs/theory.md section 4).
 //
 // At separation z the contact is N(z) flat-ended cylinders of radius R = sqrt(A_c/(pi N)) (eq. 1); lowering
 // the flat by dz adds dP = 2 E* R N dz by Sneddon's solution (eq. 2), so (eq. 3)
@@ -8,8 +8,8 @@
 
 #include <span>
 
-#include "core/load_area_curve.hpp"
-#include "core/sweep.hpp"
+#include "contactbench/core/load_area_curve.hpp"
+#include "contactbench/core/sweep.hpp"
 
 namespace contactbench {
 
