@@ -5,6 +5,7 @@
 
 #include <omp.h>
 
+#include "contactbench/app/provenance.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench {
@@ -19,6 +20,7 @@ int run_cli(int argc, char** argv) {
   CLI::App app{
       "contactbench: how well cheap models of rough-surface contact predict the real contact area, and what "
       "each answer costs in time."};
+  app.set_version_flag("--version", version_line());
   app.require_subcommand(1);
   add_generate_command(app);
   add_stats_command(app);

@@ -95,6 +95,17 @@ TEST_F(Cli, StatsOfAMeasuredFileWithItsOwnSizes) {
   EXPECT_NE(stats.out.find("\"window\": \"hann\""), std::string::npos);
 }
 
+// --version names the release and the commit built from: a 0.1.0-style version and a 12-digit commit (with
+// "-dirty" when the tree had changes), or "unknown" when the sources were not a git checkout.
+TEST_F(Cli, VersionNamesTheReleaseAndTheCommit) {
+  const CommandResult version = run("--version");
+  ASSERT_EQ(version.status, 0) << version.err;
+  EXPECT_TRUE(std::regex_search(
+      version.out,
+      std::regex(R"(^contactbench [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{12}(-dirty)?|unknown)\)\n$)")))
+      << version.out;
+}
+
 TEST_F(Cli, EveryCommandHasHelp) {
   for (const char* command : {"--help", "generate --help", "stats --help", "sweep --help", "bem --help"}) {
     const CommandResult help = run(command);
