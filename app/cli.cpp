@@ -5,6 +5,7 @@
 
 #include <omp.h>
 
+#include "contactbench/app/output.hpp"
 #include "contactbench/app/provenance.hpp"
 #include "contactbench/core/error.hpp"
 
@@ -29,6 +30,7 @@ int run_cli(int argc, char** argv) {
   add_run_command(app);
   try {
     app.parse(argc, argv);
+    check_standard_output();  // a command whose output was lost must not exit 0
   } catch (const CLI::ParseError& e) {
     return app.exit(e);  // --help lands here with status 0; a usage error prints its reason
   } catch (const std::exception& e) {

@@ -270,9 +270,14 @@ values = [1e-3, 1e-2]
     EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
   EXPECT_FALSE(std::filesystem::exists(out / "load_area.png"));  // --no-plots
   EXPECT_NE(result.out.find("| plateau |"), std::string::npos) << result.out;
-  // Nothing half-written is left behind: no temporary files beside the results.
+  // Nothing half-written is left behind: no temporary files in the folder (only the mark that a run wrote
+  // it) and no staging folder beside it.
   for (const auto& entry : std::filesystem::directory_iterator(out))
-    EXPECT_NE(entry.path().filename().string().front(), '.') << entry.path();
+    if (entry.path().filename() != ".contactbench-run") {
+      EXPECT_NE(entry.path().filename().string().front(), '.') << entry.path();
+    }
+  for (const auto& entry : std::filesystem::directory_iterator(folder_))
+    EXPECT_EQ(entry.path().filename().string().rfind(".out.", 0), std::string::npos) << entry.path();
 }
 
 // A scene that names a missing file (and other problems) fails before any work: one error lists every
