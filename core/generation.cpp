@@ -58,6 +58,9 @@ void validate(const SelfAffinePsd& psd, const Grid& grid) {
     throw Error("qs must lie in (0, " + str(grid.nyquist()) +
                 "] 1/m (the grid's Nyquist wavevector pi/dx), got " + str(qs) +
                 ": refine the grid or lower qs");
+  if (psd.qr >= qs)
+    throw Error("qr = " + str(psd.qr) + " 1/m must lie below qs = " + str(qs) +
+                " 1/m: the roll-off comes before the cut-off (docs/theory.md section 2)");
   if (qs < std::min(grid.dqx(), grid.dqy()))
     throw Error("qs = " + str(qs) + " 1/m lies below the smallest wavevector of the lattice (" +
                 str(std::min(grid.dqx(), grid.dqy())) + " 1/m): no mode would carry height");

@@ -137,6 +137,25 @@ TEST_F(Cli, BadParametersFailNamingTheParameter) {
   EXPECT_NE(plain.status, 0);
 }
 
+// A seed is read as written: CLI11 alone would wrap -1 to 2^64 - 1 and clamp 2^64 to the same seed. A
+// roll-off at or above the cut-off (here above Nyquist too) is refused, not generated as something else.
+TEST_F(Cli, SeedsAndWavevectorsOutsideTheirRangeAreRefused) {
+  const std::string base =
+      "generate --sigma 1e-6 --hurst 0.8 --size 32e-6 --grid 16 --out " + (folder_ / "x.txt").string();
+  for (const char* seed : {"-1", "18446744073709551616", "1.5", "abc"}) {
+    const CommandResult bad = run(base + " --qr 2e5 --seed " + seed);
+    EXPECT_NE(bad.status, 0) << seed;
+    EXPECT_NE(bad.err.find("--seed"), std::string::npos) << bad.err;
+  }
+  EXPECT_EQ(run(base + " --qr 2e5 --seed 18446744073709551615").status, 0);
+  // qs defaults to Nyquist, pi/dx = pi/2e-6 = 1.57e6 1/m.
+  for (const char* wavevectors : {"--qr 1e6 --qs 1e6", "--qr 1.2e6 --qs 1e6", "--qr 2e7"}) {
+    const CommandResult bad = run(base + " " + wavevectors);
+    EXPECT_NE(bad.status, 0) << wavevectors;
+    EXPECT_NE(bad.err.find("qr"), std::string::npos) << bad.err;
+  }
+}
+
 TEST_F(Cli, APlainMatrixNeedsItsSize) {
   const auto file = folder_ / "plain.txt";
   std::ofstream(file) << "1e-9 2e-9 3e-9\n4e-9 5e-9 6e-9\n";
