@@ -61,7 +61,10 @@ Surface make_surface(const SurfaceSpec& spec, int threads) {
     return generate_surface(grid, psd, g->seed, threads);
   }
   const auto& file = std::get<FileSurfaceSpec>(spec.source);
-  return read_topography(file.path, {.lx = file.size_x, .ly = file.size_y, .periodic = file.periodic});
+  // Heights from the mean plane (docs/theory.md section 0), as generated surfaces have them: every method's
+  // separation is then measured from the same plane (the BEM and the theories use that plane already).
+  return read_topography(file.path, {.lx = file.size_x, .ly = file.size_y, .periodic = file.periodic})
+      .centred();
 }
 
 // What one BEM stage leaves for the methods that share it: per load, the solver's scalars and the contact
