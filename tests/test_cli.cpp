@@ -156,6 +156,19 @@ TEST_F(Cli, SeedsAndWavevectorsOutsideTheirRangeAreRefused) {
   }
 }
 
+// Inputs are regular files: a device is never read without end (stats /dev/zero used to grow until killed), a
+// folder is named as one.
+TEST_F(Cli, DevicesAndFoldersAreRefusedAsInputs) {
+  for (const std::string command : {"stats", "run", "sweep"}) {
+    const CommandResult device = run(command + " /dev/zero");
+    EXPECT_NE(device.status, 0) << command;
+    EXPECT_NE(device.err.find("is a device, not a file"), std::string::npos) << command << ": " << device.err;
+    const CommandResult folder = run(command + " " + folder_.string());
+    EXPECT_NE(folder.status, 0) << command;
+    EXPECT_NE(folder.err.find("is a folder"), std::string::npos) << command << ": " << folder.err;
+  }
+}
+
 TEST_F(Cli, APlainMatrixNeedsItsSize) {
   const auto file = folder_ / "plain.txt";
   std::ofstream(file) << "1e-9 2e-9 3e-9\n4e-9 5e-9 6e-9\n";
