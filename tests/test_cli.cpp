@@ -169,6 +169,27 @@ TEST_F(Cli, DevicesAndFoldersAreRefusedAsInputs) {
   }
 }
 
+// Requests that cannot fit in memory are refused from their parameters, before anything is allocated (each
+// of these grew until the kernel killed it): the message gives the estimate and what the machine has.
+TEST_F(Cli, OversizedRequestsAreRefusedWithTheirEstimate) {
+  const auto surface = folder_ / "s.txt";
+  ASSERT_EQ(run("generate --sigma 1e-6 --hurst 0.8 --qr 2e5 --size 32e-6 --grid 16 --out " + surface.string())
+                .status,
+            0);
+  for (const std::string& command :
+       {"sweep " + surface.string() + " --levels 1000000000",
+        "generate --sigma 1e-6 --hurst 0.8 --qr 2e5 --size 32e-6 --grid 65536 --out " +
+            (folder_ / "big.txt").string(),
+        "generate --sigma 1e-6 --hurst 0.8 --qr 2e5 --size 32e-6 --grid 64 --refine 65536 --out " +
+            (folder_ / "big.txt").string()}) {
+    const CommandResult refused = run(command);
+    EXPECT_NE(refused.status, 0) << command;
+    EXPECT_NE(refused.err.find("needs about"), std::string::npos) << command << ": " << refused.err;
+    EXPECT_NE(refused.err.find("available"), std::string::npos) << refused.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(folder_ / "big.txt"));
+}
+
 TEST_F(Cli, APlainMatrixNeedsItsSize) {
   const auto file = folder_ / "plain.txt";
   std::ofstream(file) << "1e-9 2e-9 3e-9\n4e-9 5e-9 6e-9\n";
