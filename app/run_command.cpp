@@ -32,8 +32,9 @@ void run_command(const RunCommandOptions& o) {
   if (!o.out.empty()) command += " --out " + o.out;
   if (!o.plots) command += " --no-plots";
 
+  const RunObserver observer = terminal_observer("contactbench run");
   const SceneReport report =
-      run_scene(scene, {.threads = o.threads, .progress = o.quiet ? nullptr : &std::cerr});
+      run_scene(scene, {.threads = o.threads, .observer = o.quiet ? nullptr : &observer});
   const Comparison comparison = compare(report);
   const Provenance provenance = current_provenance(o.threads, command);
   write_report(folder, report, comparison, provenance);

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -48,6 +49,30 @@ class Cli : public ::testing::Test {
 
   std::filesystem::path folder_;
 };
+
+// A CSV without its comment lines, each row by column name (the header row maps each name to itself).
+using CsvRow = std::map<std::string, std::string>;
+std::vector<CsvRow> csv_rows(const std::string& text) {
+  std::istringstream lines(text);
+  std::string line;
+  std::vector<std::string> header;
+  std::vector<CsvRow> rows;
+  while (std::getline(lines, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> cells;
+    std::istringstream fields(line);
+    std::string cell;
+    while (std::getline(fields, cell, ','))
+      cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();
+    if (header.empty()) header = cells;
+    CsvRow row;
+    for (std::size_t i = 0; i < header.size(); ++i)
+      row[header[i]] = i < cells.size() ? cells[i] : "";
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
 
 // The number after "key": in a JSON text.
 double json_value(const std::string& json, const std::string& key) {
@@ -152,7 +177,7 @@ TEST_F(Cli, SweepWritesTheCurveAsCsv) {
   EXPECT_EQ(line.rfind("# contactbench sweep of ", 0), 0u) << line;
   EXPECT_NE(line.find("4-connectivity, periodic in x and y"), std::string::npos) << line;
   std::getline(lines, line);
-  EXPECT_EQ(line, "z,area_fraction,spots");
+  EXPECT_EQ(line, "z,area_fraction_nodes,spots");
   std::vector<double> area;
   while (std::getline(lines, line)) {
     std::istringstream fields(line);
@@ -197,29 +222,49 @@ TEST_F(Cli, BemWritesALoadAreaCurve) {
   // Unordered on purpose: the loads are solved in increasing order.
   const CommandResult bem = run("bem " + surface.string() + " --loads 0.01,0.001 --out " + csv.string());
   ASSERT_EQ(bem.status, 0) << bem.err;
-  std::istringstream lines(slurp(csv));
-  std::string line;
-  std::getline(lines, line);
-  EXPECT_NE(line.find("periodic half-space"), std::string::npos) << line;
-  std::getline(lines, line);
-  EXPECT_EQ(line.rfind("load,area_fraction,area_fraction_corrected,spots,mean_gap", 0), 0u) << line;
-  std::vector<double> load, area, corrected;
-  while (std::getline(lines, line)) {
-    std::istringstream fields(line);
-    std::string value;
-    std::vector<std::string> row;
-    while (std::getline(fields, value, ','))
-      row.push_back(value);
-    ASSERT_EQ(row.size(), 11u) << line;
-    load.push_back(std::stod(row[0]));
-    area.push_back(std::stod(row[1]));
-    corrected.push_back(std::stod(row[2]));
-    EXPECT_EQ(row[9], "1") << "not converged: " << line;
+  const std::vector<CsvRow> rows = csv_rows(slurp(csv));
+  ASSERT_EQ(rows.size(), 3u);  // the header and two loads
+  EXPECT_EQ(rows[0].at("method"), "method");
+  for (const char* column : {"area_fraction", "area_fraction_nodes", "area_fraction_corrected", "separation",
+                             "spots", "iterations", "converged"})
+    EXPECT_TRUE(rows[0].count(column)) << "no column " << column;
+  const auto number = [&](std::size_t row, const char* column) { return std::stod(rows[row].at(column)); };
+  EXPECT_LT(number(1, "load"), number(2, "load"));  // solved in increasing order
+  for (std::size_t row : {1u, 2u}) {
+    EXPECT_EQ(rows[row].at("converged"), "1");
+    // The compared area is the corrected one, and the perimeter correction only removes area.
+    EXPECT_EQ(rows[row].at("area_fraction"), rows[row].at("area_fraction_corrected"));
+    EXPECT_LT(number(row, "area_fraction_corrected"), number(row, "area_fraction_nodes"));
   }
-  ASSERT_EQ(load.size(), 2u);
-  EXPECT_LT(load[0], load[1]);
-  EXPECT_LT(area[0], area[1]);       // more load, more contact
-  EXPECT_LT(corrected[0], area[0]);  // the perimeter correction only removes area
+  EXPECT_LT(number(1, "area_fraction"), number(2, "area_fraction"));  // more load, more contact
+}
+
+// contactbench bem is a one-method scene: on the same file, with the same options, `bem` and `run` write the
+// same columns and the same numbers (every digit; only the solver's wall time differs).
+TEST_F(Cli, BemAndAOneMethodSceneGiveTheSameCurve) {
+  const auto surface = folder_ / "s.txt", csv = folder_ / "bem.csv", scene = folder_ / "one.toml";
+  ASSERT_EQ(run("generate --sigma 0.5e-6 --hurst 0.5 --qr 3.14e4 --size 200e-6 --grid 64 --seed 5 --out " +
+                surface.string())
+                .status,
+            0);
+  const CommandResult bem =
+      run("bem " + surface.string() +
+          " --loads 0.002,0.02 --tolerance 1e-9 --connectivity 8 --threads 1 --out " + csv.string());
+  ASSERT_EQ(bem.status, 0) << bem.err;
+  std::ofstream(scene) << "name = \"one\"\n[surface]\nfile = \"" << surface.string()
+                       << "\"\n[material]\nE = 100e9\nnu = 0.3\n[loads]\nvalues = [0.002, 0.02]\n"
+                          "[methods.bem]\ntolerance = 1e-9\nconnectivity = 8\n";
+  const auto out = folder_ / "out";
+  const CommandResult scene_run =
+      run("run " + scene.string() + " --out " + out.string() + " --no-plots --quiet --threads 1");
+  ASSERT_EQ(scene_run.status, 0) << scene_run.err;
+  std::vector<CsvRow> from_bem = csv_rows(slurp(csv)), from_run = csv_rows(slurp(out / "curves.csv"));
+  ASSERT_EQ(from_bem.size(), 3u);
+  ASSERT_EQ(from_run.size(), 3u);
+  for (auto* rows : {&from_bem, &from_run})
+    for (CsvRow& row : *rows)
+      row.erase("solve_seconds");  // wall time: the one column that may differ
+  EXPECT_EQ(from_bem, from_run);
 }
 
 TEST_F(Cli, BemRefusesBadLoadsAndContradictoryFlags) {
