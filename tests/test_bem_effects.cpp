@@ -25,6 +25,7 @@
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/topography_io.hpp"
+#include "reference_solutions.hpp"
 
 namespace contactbench {
 namespace {
@@ -178,8 +179,8 @@ TEST(Hardness, SphereBelowItsHertzPeakIsCappedAndWider) {
   // the contact is wider than Hertz's, and at least P/H in area (p <= H everywhere).
   const Index n = 128;
   const Real dx = 1e-6, radius = 1e-3, a = 32 * dx;
-  const Real load = 4 * kModulus * a * a * a / (3 * radius);
-  const Real p0 = 3 * load / (2 * pi * a * a), hardness = 0.7 * p0;
+  const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
+  const Real load = hertz.load_of_contact_radius(a), hardness = 0.7 * hertz.peak_pressure(load);
   const Surface surface = sphere(n, dx, radius);
   const Real area = surface.grid().nominal_area();
   PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness});
@@ -245,9 +246,10 @@ TEST(Separation, HertzLoadOfAnApproach) {
   const Surface surface = sphere(n, dx, radius);
   PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
   const Real apex = solver.surface().heights().maxCoeff();
-  const ContactSolution& s = solver.solve_for_separation(apex - a * a / radius);
+  const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
+  const Real load = hertz.load_of_contact_radius(a);
+  const ContactSolution& s = solver.solve_for_separation(apex - hertz.approach(load));
   ASSERT_TRUE(s.converged) << s.iterations;
-  const Real load = 4 * kModulus * a * a * a / (3 * radius);
   EXPECT_NEAR(s.mean_pressure * surface.grid().nominal_area(), load, 3e-3 * load);
   const Real radius_from_nodes = std::sqrt(static_cast<Real>(s.contact_points) * dx * dx / pi);
   EXPECT_NEAR(radius_from_nodes, a, 0.016 * a);  // the edge to half a pixel, as under load control
@@ -260,8 +262,8 @@ TEST(Separation, WithHardnessGivesBackTheCappedLoad) {
   // 7e-14).
   const Index n = 128;
   const Real dx = 1e-6, radius = 1e-3, a = 32 * dx;
-  const Real load = 4 * kModulus * a * a * a / (3 * radius);
-  const Real hardness = 0.7 * 3 * load / (2 * pi * a * a);
+  const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
+  const Real load = hertz.load_of_contact_radius(a), hardness = 0.7 * hertz.peak_pressure(load);
   const Surface surface = sphere(n, dx, radius);
   const Real mean = load / surface.grid().nominal_area();
   PolonskyKeer by_load(surface, kModulus, {.tolerance = 1e-12, .hardness = hardness});
@@ -330,8 +332,8 @@ TEST(SinglePrecision, CappedAndSeparationControlledToo) {
   // the Hertz approach (as Separation.HertzLoadOfAnApproach), at float's tolerance.
   const Index n = 128;
   const Real dx = 1e-6, radius = 1e-3, a = 32 * dx;
-  const Real load = 4 * kModulus * a * a * a / (3 * radius);
-  const Real hardness = 0.7 * 3 * load / (2 * pi * a * a);
+  const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
+  const Real load = hertz.load_of_contact_radius(a), hardness = 0.7 * hertz.peak_pressure(load);
   const Surface surface = sphere(n, dx, radius);
   const Real area = surface.grid().nominal_area();
   PolonskyKeer capped(
@@ -344,7 +346,7 @@ TEST(SinglePrecision, CappedAndSeparationControlledToo) {
   EXPECT_NEAR(s.pressure.mean() * area, load, 1e-5 * load);
   PolonskyKeer elastic(surface, kModulus, {.tolerance = kSinglePrecisionTolerance, .single_precision = true});
   const Real apex = elastic.surface().heights().maxCoeff();
-  const ContactSolution& e = elastic.solve_for_separation(apex - a * a / radius);
+  const ContactSolution& e = elastic.solve_for_separation(apex - hertz.approach(load));
   ASSERT_TRUE(e.converged);
   EXPECT_NEAR(e.mean_pressure * area, load, 3e-3 * load);
 }
