@@ -115,7 +115,8 @@ std::optional<std::vector<Real>> parse_loads(const Section& root, Problems& prob
 
 // The methods in the order the file lists them (toml++ keeps a table's keys sorted, not in file order).
 std::vector<MethodSpec> parse_methods(const Section& root, const std::optional<SurfaceSpec>& surface,
-                                      std::vector<std::string>& labels, Problems& problems) {
+                                      const fs::path& folder, std::vector<std::string>& labels,
+                                      Problems& problems) {
   const MethodRegistry& registry = MethodRegistry::global();
   const std::string known = registry.names_text();
   const std::string accepted = "tables [methods.<label>] with method = one of " + known;
@@ -132,7 +133,8 @@ std::vector<MethodSpec> parse_methods(const Section& root, const std::optional<S
     return std::pair(pa.line, pa.column) < std::pair(pb.line, pb.column);
   });
   const SceneContext context{.surface_points = surface ? points_a_side(*surface) : std::nullopt,
-                             .surface_periodic = true};  // not known before the file is read; unused here
+                             .surface_periodic = true,  // not known before the file is read; unused here
+                             .folder = folder};
   std::vector<MethodSpec> result;
   for (const auto& [key, node] : entries) {
     const std::string label(key->str());
@@ -220,7 +222,7 @@ Scene parse_scene_table(const toml::table& document, const std::filesystem::path
   const auto material = parse_material(root, problems);
   const auto loads = parse_loads(root, problems);
   std::vector<std::string> labels;  // every label in the file, also those with problems
-  scene.methods = parse_methods(root, surface, labels, problems);
+  scene.methods = parse_methods(root, surface, folder, labels, problems);
   if (const auto reference = root.string("reference", false, "a method label")) {
     if (!reference->empty() && std::find(labels.begin(), labels.end(), *reference) == labels.end())
       root.problem(

@@ -51,8 +51,12 @@ class BemMethod final : public Method {
             .value_or(solve_.max_iterations));
     periodic_ = s.boolean("periodic");
     solve_.hardness = s.number("hardness", false, positive("[Pa]"));
-    solve_.fields = s.string("fields", false, "a path prefix for the per-load pressure and gap files")
-                        .value_or(solve_.fields);
+    // Relative to the scene file's folder, as the surface file is; stored resolved.
+    if (const auto fields =
+            s.string("fields", false,
+                     "a path prefix for the per-load pressure and gap files (relative: to the "
+                     "scene file's folder)"))
+      solve_.fields = (context.folder / *fields).lexically_normal().string();
     connectivity_ = static_cast<int>(
         s.integer("connectivity", false, {[](std::int64_t v) { return v == 4 || v == 8; }, "4, 8"})
             .value_or(connectivity_));

@@ -10,6 +10,7 @@
 // (scenes/README.md, "Adding a method").
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -32,6 +33,8 @@ struct SceneKeys;
 struct SceneContext {
   std::optional<Index> surface_points;  // points a side, when known
   bool surface_periodic = true;
+  std::filesystem::path folder =
+      {};  // the scene file's folder: relative paths of its keys resolve against it
 };
 
 // The stages one method needs; the planner unites them over the scene (app/scene_plan.hpp).
