@@ -25,6 +25,7 @@
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/topography_io.hpp"
+#include "csv_rows.hpp"
 #include "reference_solutions.hpp"
 
 namespace contactbench {
@@ -386,29 +387,11 @@ class BemCommand : public ::testing::Test {
 
   // The CSV's rows by column name (the curves.csv of a one-method scene, app/report_writers.hpp); the
   // column names in `header`.
-  std::vector<std::map<std::string, std::string>> rows(const std::filesystem::path& csv,
-                                                       std::vector<std::string>& header) {
+  std::vector<CsvRow> rows(const std::filesystem::path& csv, std::vector<std::string>& header) {
     std::ifstream in(csv);
-    std::string line;
-    std::vector<std::map<std::string, std::string>> table;
-    header.clear();
-    while (std::getline(in, line)) {
-      if (line.empty() || line[0] == '#') continue;
-      std::vector<std::string> cells;
-      std::stringstream fields(line);
-      std::string value;
-      while (std::getline(fields, value, ','))
-        cells.push_back(value);
-      if (header.empty()) {
-        header = cells;
-        continue;
-      }
-      std::map<std::string, std::string> row;
-      for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i)
-        row[header[i]] = cells[i];
-      table.push_back(row);
-    }
-    return table;
+    std::stringstream text;
+    text << in.rdbuf();
+    return csv_rows(text.str(), header);
   }
 
   std::filesystem::path folder_, surface_;

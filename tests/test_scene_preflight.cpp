@@ -18,17 +18,12 @@
 #include "contactbench/app/scene_run.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/topography_io.hpp"
+#include "small_scene.hpp"
 
 namespace contactbench {
 namespace {
 
-const std::string kSurface = R"(
-[surface]
-generate = { sigma = 0.5e-6, hurst = 0.5, qr = 3.14e4, size = 200e-6, grid = 32, seed = 2 }
-[material]
-E = 100e9
-nu = 0.3
-)";
+const std::string& kSurface = kSmallSurfaceAndMaterial;
 
 struct Refusal {
   std::vector<std::string> problems;

@@ -19,6 +19,7 @@
 #include "contactbench/app/scene_run.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/topography_io.hpp"
+#include "small_scene.hpp"
 
 namespace contactbench {
 namespace {
@@ -53,15 +54,7 @@ bool ran(const SceneReport& report, const std::string& prefix) {
                      [&](const StageRecord& s) { return s.name.rfind(prefix, 0) == 0; });
 }
 
-const std::string kSmallSurface = R"(
-[surface]
-generate = { sigma = 0.5e-6, hurst = 0.5, qr = 3.14e4, size = 200e-6, grid = 32, seed = 2 }
-[material]
-E = 100e9
-nu = 0.3
-[loads]
-values = [1e-3, 1e-2]
-)";
+const std::string kSmallSurface = kSmallSurfaceAndMaterial + "[loads]\nvalues = [1e-3, 1e-2]\n";
 
 SceneReport run_text(const std::string& text) {
   return run_scene(parse_scene(text, "test.toml"), {.threads = 1, .observer = nullptr});
