@@ -17,6 +17,19 @@ void add_threads_option(CLI::App& command, int& threads) {
       ->check(CLI::Range(1, 1024));
 }
 
+RunObserver terminal_observer(const std::string& command) {
+  RunObserver observer;
+  observer.stage_finished = [command](const std::string& stage, double seconds) {
+    if (seconds > kProgressAfterSeconds)
+      std::cerr << command << ": " << stage << ": done in " << seconds << " s\n";
+  };
+  observer.progress = [command](const std::string& text) { std::cerr << command << ": " << text << '\n'; };
+  observer.warning = [command](const std::string& text) {
+    std::cerr << command << ": warning: " << text << '\n';
+  };
+  return observer;
+}
+
 int run_cli(int argc, char** argv) {
   CLI::App app{
       "contactbench: how well cheap models of rough-surface contact predict the real contact area, and what "

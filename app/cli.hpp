@@ -1,7 +1,11 @@
 // The contactbench command line: subcommands, their options, and how errors reach the user.
 #pragma once
 
+#include <string>
+
 #include <CLI/CLI.hpp>
+
+#include "contactbench/app/run_observer.hpp"
 
 namespace contactbench {
 
@@ -15,6 +19,10 @@ void add_stats_command(CLI::App& parent);
 void add_sweep_command(CLI::App& parent);
 void add_bem_command(CLI::App& parent);
 void add_run_command(CLI::App& parent);
+
+// The observer of a command's run on the terminal: stages longer than kProgressAfterSeconds, progress of
+// long stages and warnings, one line each on stderr, prefixed by the command ("contactbench run").
+RunObserver terminal_observer(const std::string& command);
 
 // Threads for a command: --threads if given, else what OpenMP would use (the machine's cores).
 void add_threads_option(CLI::App& command, int& threads);

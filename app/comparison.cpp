@@ -9,7 +9,7 @@ Comparison compare(const SceneReport& report) {
   Comparison comparison;
   comparison.reference = report.scene.reference;
   comparison.rms_gradient = report.moments.rms_gradient();
-  const std::vector<Real>& loads = report.scene.loads;
+  const std::vector<Real>& loads = report.loads();
   comparison.kappa_load = loads.empty() ? 0 : loads.front();
   const Real nan = std::numeric_limits<Real>::quiet_NaN();
   const MethodResult* reference = nullptr;
@@ -24,7 +24,7 @@ Comparison compare(const SceneReport& report) {
     MethodComparison c;
     c.label = m.label;
     c.kappa = m.curve.area_fraction.empty() ? nan : kappa(m.curve.area_fraction.front());
-    for (const auto& [name, values] : m.columns)
+    for (const auto& [name, values] : m.curve.columns)
       if (name == "area_fraction_nodes" && !values.empty()) c.kappa_nodes = kappa(values.front());
     if (reference) {
       Real sum_squares = 0, largest = 0;

@@ -13,7 +13,8 @@ namespace contactbench {
 
 struct MethodComparison {
   std::string label;
-  // A/A0 / (A/A0 of the reference) - 1 at each scene load; NaN where either has no answer. Empty when the
+  // A/A0 / (A/A0 of the reference) - 1 at each of the report's loads, each method's compared area
+  // (MethodResult::compared_area); NaN where either has no answer. Empty when the
   // scene has no reference.
   std::vector<Real> relative_error;
   Real max_abs_relative_error = 0;  // over the loads where both answer (NaN if none)

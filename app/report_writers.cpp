@@ -17,7 +17,7 @@ namespace {
 std::vector<std::string> extra_columns(const SceneReport& report) {
   std::vector<std::string> names;
   for (const MethodResult& m : report.methods)
-    for (const auto& column : m.columns)
+    for (const auto& column : m.curve.columns)
       if (std::find(names.begin(), names.end(), column.first) == names.end()) names.push_back(column.first);
   return names;
 }
@@ -59,19 +59,22 @@ void write_curves_csv(std::ostream& out, const SceneReport& report, const Proven
   const std::vector<std::string> extras = extra_columns(report);
   out << "# contactbench run of scene " << report.scene.name << " (" << stamp(provenance)
       << "): " << provenance.command
-      << "\n# load = P/(E* A0); separation [m]; empty cells: the method has no such value\n";
+      << "\n# load = P/(E* A0); separation [m] of the flat from the mean plane of the heights; area_fraction "
+         "= A/A0 "
+         "as compared (the BEM's is area_fraction_corrected, the plateau model's area_fraction_nodes); empty "
+         "cells: the method has no such value\n";
   out << "method,separation,load,area_fraction,spots";
   for (const std::string& name : extras)
     out << ',' << name;
   out << '\n';
+  const std::vector<Real>& loads = report.loads();
   for (const MethodResult& m : report.methods)
-    for (std::size_t k = 0; k < m.curve.load.size(); ++k) {
-      out << m.label << ',' << csv_number(m.curve.separation.empty() ? NAN : m.curve.separation[k]) << ','
-          << csv_number(m.curve.load[k]) << ',' << csv_number(m.curve.area_fraction[k]) << ','
-          << csv_number(m.curve.spots.empty() ? NAN : m.curve.spots[k]);
+    for (std::size_t k = 0; k < loads.size(); ++k) {
+      out << m.label << ',' << csv_number(m.curve.separation[k]) << ',' << csv_number(loads[k]) << ','
+          << csv_number(m.curve.area_fraction[k]) << ',' << csv_number(m.curve.spots[k]);
       for (const std::string& name : extras) {
         out << ',';
-        for (const auto& [column, values] : m.columns)
+        for (const auto& [column, values] : m.curve.columns)
           if (column == name) out << csv_number(values[k]);
       }
       out << '\n';
@@ -100,13 +103,14 @@ void write_summary_json(std::ostream& out, const SceneReport& report, const Comp
   root.add("stages", std::move(stages));
   root.add("reference", comparison.reference);
   root.add("kappa_load", comparison.kappa_load);
-  root.add("loads", std::span<const double>(report.scene.loads));
+  root.add("loads", std::span<const double>(report.loads()));
   std::vector<JsonObject> methods;
   for (std::size_t m = 0; m < report.methods.size(); ++m) {
     const MethodResult& r = report.methods[m];
     const MethodComparison& c = comparison.methods[m];
     JsonObject o;
-    o.add("label", r.label).add("method", to_string(r.kind)).add("parameters", r.curve.parameters);
+    o.add("label", r.label).add("method", r.method).add("parameters", r.curve.parameters);
+    o.add("compared_area", r.compared_area);
     o.add("seconds", r.seconds).add("kappa", c.kappa);
     if (c.kappa_nodes) o.add("kappa_nodes", *c.kappa_nodes);
     o.add("area_fraction", std::span<const double>(r.curve.area_fraction));
@@ -152,8 +156,8 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
   for (std::size_t m = 0; m < report.methods.size(); ++m)
     out << "---:|";
   out << '\n';
-  for (std::size_t k = 0; k < report.scene.loads.size(); ++k) {
-    out << "| " << table_number(report.scene.loads[k], "%.3g") << " |";
+  for (std::size_t k = 0; k < report.loads().size(); ++k) {
+    out << "| " << table_number(report.loads()[k], "%.3g") << " |";
     for (std::size_t m = 0; m < report.methods.size(); ++m) {
       const MethodResult& r = report.methods[m];
       out << ' ' << table_number(r.curve.area_fraction[k]);
@@ -163,9 +167,9 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
     }
     out << '\n';
   }
-  out << "\nMethods as run:\n\n";
+  out << "\nMethods as run, and the area each is compared by:\n\n";
   for (const MethodResult& r : report.methods)
-    out << "- " << r.label << ": " << r.curve.parameters << '\n';
+    out << "- " << r.label << ": " << r.curve.parameters << "; compared area: " << r.compared_area << '\n';
   out << "\nStages that ran:";
   for (const StageRecord& s : report.stages)
     out << ' ' << s.name << " " << table_number(s.seconds, "%.3g") << " s;";

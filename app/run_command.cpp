@@ -35,8 +35,9 @@ void run_command(const RunCommandOptions& o) {
   if (!o.plots) command += " --no-plots";
 
   check_replaceable_folder(folder);  // before any work, and again when the output is moved into place
+  const RunObserver observer = terminal_observer("contactbench run");
   const SceneReport report =
-      run_scene(scene, {.threads = o.threads, .progress = o.quiet ? nullptr : &std::cerr});
+      run_scene(scene, {.threads = o.threads, .observer = o.quiet ? nullptr : &observer});
   const Comparison comparison = compare(report);
   const Provenance provenance = current_provenance(o.threads, command);
   write_folder_atomically(folder, [&](const std::filesystem::path& staging) {

@@ -1,48 +1,41 @@
-// The planner (docs/architecture.md, data flow): from a scene's methods, the stages that must run, each once.
-// Analytic theories need the spectral moments only; the plateau model one sweep per (topology, levels);
-// the BEM one load-stepped solve per (grid, boundary, solver options). Nothing else runs: a scene of theories
-// never sorts a height nor solves a contact, a scene without the BEM never runs it, and an effect that no
+// The planner (docs/architecture.md, data flow): from a scene's methods, the stages that must run, each
+// once: the union of every method's needs (app/methods/method.hpp). Analytic theories need the spectral
+// moments only; the plateau model one sweep per (topology, levels); the BEM one load-stepped solve per
+// (grid, boundary, solver options), labelled once for every connectivity its methods count spots with.
+// Nothing else runs: a scene of theories never sorts a height nor solves a contact, and an effect that no
 // method asks for (a pressure cap, a refined grid) is not in the plan.
 #pragma once
 
-#include <optional>
-#include <string>
+#include <set>
 #include <vector>
 
+#include "contactbench/app/methods/method.hpp"
 #include "contactbench/app/scene.hpp"
-#include "contactbench/core/topology.hpp"
+#include "contactbench/app/stages.hpp"
+#include "contactbench/core/grid.hpp"
 
 namespace contactbench {
 
-struct SweepStage {
-  Topology topology;
-  SweepLevels levels;
-  std::string name() const;  // e.g. "sweep (exact levels, 4-connectivity, periodic in x and y)"
-};
-
-// One BEM solve of every scene load, warm-started in increasing order. Methods that differ only in the
-// connectivity of their spot count share it (labelling the contact map is not part of the solve).
-struct BemStage {
-  Index refine = 0;  // points a side after Fourier refinement; 0 = the scene's surface as it is
-  bool periodic = true;
-  Real tolerance = 0;
-  Index max_iterations = 0;
-  std::optional<Real> hardness;
-  std::string name() const;  // e.g. "bem (512 x 512, periodic, tolerance 1e-08)"
+struct PlannedBem {
+  BemStage stage;
+  std::set<int> connectivities;  // of the methods that share it
 };
 
 struct ScenePlan {
-  bool surface_periodic = true;  // what the scene's surface is: generated surfaces are periodic
+  SceneContext context;  // what the scene's surface is (periodic, points a side when known)
+  // The moments: needed by the theories, and always by the report (its areal kappa reads gbar).
+  bool moments = true;
   std::vector<SweepStage> sweeps;
-  std::vector<BemStage> bems;
-  // For each method of the scene (same order): the index of its sweep or BEM stage, -1 for the theories.
-  std::vector<int> stage_of_method;
-  bool needs_theories() const;
+  std::vector<PlannedBem> bems;
+  struct Stages {
+    int sweep = -1;  // index into sweeps, -1: none
+    int bem = -1;    // index into bems, -1: none
+  };
+  std::vector<Stages> of_method;  // for each method of the scene, in its order
 };
 
-// Refuses (Error naming the method's key) what cannot be planned: a refinement of a non-periodic surface.
-ScenePlan plan_scene(const Scene& scene);
-
-bool is_periodic(const SurfaceSpec& surface);
+// Pure: reads the methods' needs for the scene's surface (made already: its grid says whether it is
+// periodic), runs nothing, refuses nothing (the preflight does, app/scene_run.hpp).
+ScenePlan plan_scene(const Scene& scene, const Grid& surface);
 
 }  // namespace contactbench

@@ -1,15 +1,17 @@
-// Running a scene: make the surface, run each planned stage once (app/scene_plan.hpp), and turn the stages'
-// products into one load-area curve per method at the scene's loads, each with the wall time it cost.
+// Running a scene (docs/architecture.md, data flow): make the surface (heights from the mean plane), plan
+// the stages (app/scene_plan.hpp), compute the moments; with the surface and its moments, the inputs every
+// method is checked against, run EVERY
+// method's preflight and refuse the scene with every problem, each at its key path, before any stage runs;
+// then run each planned stage once and turn the products into each method's answer at the scene's loads.
 #pragma once
 
-#include <ostream>
 #include <string>
-#include <utility>
 #include <vector>
 
+#include "contactbench/app/methods/method.hpp"
+#include "contactbench/app/run_observer.hpp"
 #include "contactbench/app/scene.hpp"
-#include "contactbench/app/scene_plan.hpp"
-#include "contactbench/core/load_area_curve.hpp"
+#include "contactbench/core/grid.hpp"
 #include "contactbench/core/spectrum.hpp"
 
 namespace contactbench {
@@ -21,32 +23,31 @@ struct StageRecord {
 
 struct MethodResult {
   std::string label;
-  MethodKind kind = MethodKind::bem;
-  // At the scene's loads. For the BEM, area_fraction is the perimeter-corrected area (docs/theory.md section
-  // 6): the best estimate of the real area a grid gives; the node count is the column area_fraction_nodes.
-  LoadAreaCurve curve;
-  // The method's own columns beside load, area_fraction, separation and spots (e.g. iterations for the BEM).
-  std::vector<std::pair<std::string, std::vector<Real>>> columns;
+  std::string method;         // the registry name
+  std::string compared_area;  // which area curve.area_fraction is (Method::compared_area)
+  MethodCurve curve;          // at the report's loads, report.scene.loads
   // Wall time of the stages the method needed (shared stages are charged in full to each method that needs
   // them) plus its own evaluation; making the scene's surface is charged to no method.
   double seconds = 0;
 };
 
 struct SceneReport {
-  Scene scene;
+  Scene scene;                        // as run: its loads are the loads of every curve, held once
   Grid grid;                          // of the scene's surface (before any refinement a method asks for)
   SpectralMoments moments;            // of the scene's surface (profile moments, docs/theory.md section 1)
   std::vector<StageRecord> stages;    // every stage that ran, in order
   std::vector<MethodResult> methods;  // in the scene's order
   int threads = 1;
   double seconds = 0;  // the whole run
+  const std::vector<Real>& loads() const { return scene.loads; }
 };
 
 struct RunOptions {
   int threads = 1;
-  std::ostream* progress = nullptr;  // progress of long stages (stderr for the CLI); null: quiet
+  const RunObserver* observer = nullptr;  // stages, progress and warnings; null: quiet
 };
 
+// Throws SceneError listing every problem the preflights found (then no sweep, solve or theory has run).
 SceneReport run_scene(const Scene& scene, const RunOptions& options);
 
 }  // namespace contactbench

@@ -1,15 +1,18 @@
 // contactbench sweep: bearing area and contact-spot count of {h > z} at many levels (docs/theory.md section
-// 3).
+// 3). A front end over the scene pipeline: the surface is read as a scene's [surface] is (heights from the
+// mean plane), the levels and connectivity as a plateau method's keys, and the sweep is the plateau model's
+// stage (app/stages.hpp).
 #include <charconv>
 #include <iostream>
 #include <string>
 
 #include "contactbench/app/cli.hpp"
+#include "contactbench/app/flag_scene.hpp"
 #include "contactbench/app/json_writer.hpp"
+#include "contactbench/app/methods/registry.hpp"
 #include "contactbench/app/output.hpp"
-#include "contactbench/app/topography_options.hpp"
-#include "contactbench/core/error.hpp"
-#include "contactbench/core/sweep.hpp"
+#include "contactbench/app/scene_toml.hpp"
+#include "contactbench/app/stages.hpp"
 
 namespace contactbench {
 
@@ -18,38 +21,59 @@ namespace {
 struct SweepOptions {
   TopographyOptions topography;
   std::string levels = "exact";
-  int connectivity = 4;
+  std::optional<int> connectivity;
   std::string out;
   int threads = 1;
 };
 
-SweepLevels parse_levels(const std::string& text) {
-  if (text == "exact") return SweepLevels::exact();
-  if (text == "paper") return SweepLevels::paper();
-  Index count = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), count);
-  if (error != std::errc() || end != text.data() + text.size() || count < 1)
-    throw Error("--levels: expected 'exact', 'paper' or a whole number of levels >= 1, got '" + text + "'");
-  return SweepLevels::uniform(count);
-}
+const FlagNames kFlags = {{"surface.file", "FILE"},
+                          {"surface.size", "--size"},
+                          {"methods.sweep.levels", "--levels"},
+                          {"methods.sweep.connectivity", "--connectivity"}};
 
 void write_csv(std::ostream& out, const SweepCurve& curve, const std::string& file) {
   out << "# contactbench sweep of " << file << ": " << describe(curve.topology)
-      << "; row j: the set {h > z}\n";
-  out << "z,area_fraction,spots\n";
+      << "; row j: the set {h > z}, z from the mean plane [m]; area_fraction_nodes = nodes in the set / "
+         "all\n";
+  out << "z,area_fraction_nodes,spots\n";
   for (std::size_t j = 0; j < curve.z.size(); ++j)
     out << json_number(curve.z[j]) << ',' << json_number(curve.area_fraction[j]) << ',' << curve.spots[j]
         << '\n';
 }
 
 void run_sweep(const SweepOptions& o) {
-  const SweepLevels levels = parse_levels(o.levels);
+  const std::string command = "contactbench sweep";
+  // --levels K is an integer key, "exact" and "paper" strings, as in a scene.
+  toml::table plateau{{"method", "plateau"}};
+  std::int64_t count = 0;
+  const auto [end, error] = std::from_chars(o.levels.data(), o.levels.data() + o.levels.size(), count);
+  if (error == std::errc() && end == o.levels.data() + o.levels.size())
+    plateau.insert("levels", count);
+  else
+    plateau.insert("levels", o.levels);
+  if (o.connectivity) plateau.insert("connectivity", *o.connectivity);
+  const toml::table document{{"surface", surface_keys(o.topography)},
+                             {"methods", toml::table{{"sweep", plateau}}}};
+
   if (!o.out.empty()) check_output_file(o.out, o.topography.file, "--out");
-  const Surface surface = o.topography.read().centred();
-  const Topology topology = Topology::for_surface(
-      o.connectivity == 8 ? Connectivity::eight : Connectivity::four, surface.grid().periodic);
-  const SweepCurve curve = sweep(surface, levels, topology, o.threads);
-  write_output(o.out, [&](std::ostream& out) { write_csv(out, curve, o.topography.file); });
+  Problems problems(command);
+  const Section root(document, "", problems, true);
+  const auto surface = read_surface_keys(root, std::filesystem::current_path());
+  std::unique_ptr<Method> method = MethodRegistry::global().make("plateau");
+  method->read(Section(*document["methods"]["sweep"].as_table(), "methods.sweep", problems), {});
+  try {
+    problems.throw_if_any();
+  } catch (const SceneError& e) {
+    rethrow_with_flags(e, command, kFlags);
+  }
+  const Surface heights = make_surface(*surface, o.threads);
+  const SceneContext context{.surface_points = heights.grid().nx,
+                             .surface_periodic = heights.grid().periodic};
+  const SweepStage stage = *method->needs(context).sweep;
+  const RunObserver observer = terminal_observer(command);
+  const SweepProducts products =
+      run_sweep_stage(stage, heights, {.threads = o.threads, .observer = &observer});
+  write_output(o.out, [&](std::ostream& out) { write_csv(out, products.sweep, o.topography.file); });
 }
 
 }  // namespace
@@ -59,13 +83,14 @@ void add_sweep_command(CLI::App& parent) {
   CLI::App* command = parent.add_subcommand(
       "sweep",
       "Cut a surface with planes: bearing area fraction A_c(z)/A0 and number of contact spots N(z) of "
-      "{h > z}, heights measured from the mean plane, written as CSV (z, area_fraction, spots).");
+      "{h > z}, heights measured from the mean plane, written as CSV (z, area_fraction_nodes, spots): the "
+      "sweep a plateau method of a scene runs (scenes/README.md), with the same keys and defaults.");
   options->topography.add_to(*command, "spots wrap around in x and y");
   command->add_option("--levels", options->levels,
                       "'exact' (every distinct height, the default), K (K+1 equally spaced levels from the "
                       "highest to the lowest height) or 'paper' (500 steps of 0.002 h_max down to the mean "
                       "plane)");
-  command->add_option("--connectivity", options->connectivity, "4 or 8")->check(CLI::IsMember({4, 8}));
+  command->add_option("--connectivity", options->connectivity, "4 or 8");
   command->add_option("--out", options->out, "CSV file (default: standard output)")
       ->check(refuse_empty_output_name);
   add_threads_option(*command, options->threads);

@@ -202,7 +202,7 @@ Convolution<T>::Convolution(Index nx, Index ny, bool padded, int threads)
   if (nx < 1 || ny < 1)
     throw Error("convolution: the grid must be at least 1 x 1, got " + std::to_string(nx) + " x " +
                 std::to_string(ny));
-  threads_ = lx_ * ly_ >= kMinPointsForThreads ? std::max(threads, 1) : 1;
+  threads_ = team_size(lx_ * ly_, threads);
   Impl& m = *impl_;
   using F = typename Impl::F;
   using FCx = typename F::Cx;

@@ -4,8 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <iostream>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -587,10 +587,14 @@ namespace {
 PolonskyKeer::Engine::Outcome solve_capped(PolonskyKeer::Engine& engine, const HeightMap& heights,
                                            const PolonskyKeerOptions& options, Real mean_pressure);
 
-void warn_not_converged(const char* what, Real value, const ContactSolution& s, Real tolerance) {
-  std::cerr << "contactbench: WARNING: Polonsky-Keer did not converge at " << what << " = " << value << " in "
-            << s.iterations << " iterations (relative pressure change " << s.change << ", tolerance "
-            << tolerance << "); the result is marked converged = false\n";
+void warn_not_converged(const char* what, Real value, const ContactSolution& s,
+                        const PolonskyKeerOptions& options) {
+  if (!options.warning) return;
+  std::ostringstream text;
+  text << "Polonsky-Keer did not converge at " << what << " = " << value << " in " << s.iterations
+       << " iterations (relative pressure change " << s.change << ", tolerance " << options.tolerance
+       << "); the result is marked converged = false";
+  options.warning(text.str());
 }
 
 }  // namespace
@@ -634,7 +638,7 @@ const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
   solution_.change = change;
   solution_.converged = converged;
   solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!converged) warn_not_converged("P/A0", mean_pressure, solution_, options_.tolerance);
+  if (!converged) warn_not_converged("P/A0", mean_pressure, solution_, options_);
   return solution_;
 }
 
@@ -667,7 +671,7 @@ const ContactSolution& PolonskyKeer::solve_for_separation(Real separation) {
   solution_.change = outcome.change;
   solution_.converged = outcome.converged;
   solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!outcome.converged) warn_not_converged("separation [m]", separation, solution_, options_.tolerance);
+  if (!outcome.converged) warn_not_converged("separation [m]", separation, solution_, options_);
   return solution_;
 }
 

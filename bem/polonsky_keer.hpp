@@ -11,7 +11,7 @@
 //   sum |p_new - p_old| / sum p_new < tolerance,
 // checked together with the complementarity residual reported as `residual`: the largest |g| on the contact
 // set relative to the surface's height range. A solve that reaches the iteration cap is marked
-// converged = false and says so on stderr; it is never passed off as converged.
+// converged = false and says so through the options' warning sink; it is never passed off as converged.
 //
 // Hardness (optional): a perfectly plastic cap, p <= H. Nodes at p = H are plastic: their gap may be negative
 // (the surface there flowed; the overlap is the plastic indentation) and they leave the conjugate-gradient
@@ -38,8 +38,10 @@
 // load-controlled solve reported gives that load back (tests/test_bem_effects.cpp).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "contactbench/bem/half_space.hpp"
 #include "contactbench/core/surface.hpp"
@@ -60,6 +62,9 @@ struct PolonskyKeerOptions {
   // to float's accuracy (e.g. the area fraction to 1e-3 relative, the mean gap to 1e-4;
   // tests/test_bem_effects.cpp).
   bool single_precision = false;
+  // Where a warning goes (a solve that reached the iteration cap): the application's sink; none, silent (the
+  // solution still says converged = false). The library never writes to a stream itself.
+  std::function<void(const std::string&)> warning = nullptr;
 };
 
 // The smallest tolerance single precision accepts: ten times float's epsilon (1.2e-7), with room for the

@@ -151,7 +151,7 @@ void ReproducibleInverseFft2d::backward(const SpectrumMap& in, HeightMap& out, i
   auto* work = reinterpret_cast<fftw_complex*>(work_.data());
   const Index column_chunks = (nxh + kLinesPerChunk - 1) / kLinesPerChunk;
   const Index row_chunks = (ny_ + kLinesPerChunk - 1) / kLinesPerChunk;
-#pragma omp parallel num_threads(std::max(threads, 1)) if (nx_ * ny_ >= kMinPointsForThreads)
+#pragma omp parallel num_threads(team_size(nx_* ny_, threads)) if (team_size(nx_ * ny_, threads) > 1)
   {
 #pragma omp for schedule(static)
     for (Index chunk = 0; chunk < column_chunks; ++chunk) {

@@ -380,7 +380,7 @@ const Labelling& Labeller::label(const BinaryMap& map) {
 
   // Stripes follow the thread count (so the result and the seams are the same for any size); only maps
   // large enough to pay for a parallel region get one.
-  const int team = nx * ny >= kMinPointsForThreads ? static_cast<int>(stripe_count) : 1;
+  const int team = team_size(nx * ny, static_cast<int>(stripe_count));
 #pragma omp parallel for num_threads(team) schedule(static, 1)
   for (Index s = 0; s < stripe_count; ++s) {
     if (topology_.connectivity == Connectivity::four)

@@ -216,7 +216,7 @@ void merge_exact_levels(std::vector<StripeComponents>& stripes, const std::vecto
   for (auto& stripe : stripes)
     if (!stripe.records().empty() && (split == kNever || stripe.records().size() * 2 > bound))
       split = stripe.records()[stripe.records().size() / 2].time;
-  const int parts = team > 1 && bound > static_cast<std::size_t>(kMinPointsForThreads) ? 2 : 1;
+  const int parts = team_size(static_cast<Index>(bound), team) > 1 ? 2 : 1;
   // Each part: where it starts in every stripe's records and in the output.
   std::vector<std::vector<std::size_t>> start(parts + 1, std::vector<std::size_t>(stripe_count, 0));
   for (std::size_t s = 0; s < stripe_count; ++s) {
@@ -327,7 +327,7 @@ SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topolo
                                                    : " at " + std::to_string(levels.count) + " levels"));
   const bool exact = levels.kind == SweepLevels::Kind::exact;
   const std::vector<Real> fixed_z = exact ? std::vector<Real>{} : fixed_levels(heights, levels);
-  const int team = n >= kMinPointsForThreads ? std::max(threads, 1) : 1;
+  const int team = team_size(n, threads);
 
   // When a point joins {h > z}: its height's descending key (exact) or its level index (kNever: never).
   const Real* h = heights.data();

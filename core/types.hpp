@@ -20,8 +20,19 @@ using HeightMap = Eigen::Array<Real, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowM
 // ny rows (ky) by nx/2 + 1 columns (kx >= 0); the other half follows from Hermitian symmetry.
 using SpectrumMap = Eigen::Array<Complex, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-// Below this many points a loop runs on the calling thread alone: opening an OpenMP region costs tens of
-// microseconds on these machines, more than the work, and oversubscribed spinning threads cost far more.
+// The thread policy, in one place: below this many points a loop runs on the calling thread alone (opening
+// an OpenMP region costs tens of microseconds on these machines, more than the work, and oversubscribed
+// spinning threads cost far more); from it on, on every thread asked for.
 inline constexpr Index kMinPointsForThreads = Index{1} << 16;
+
+// Whether work over `points` points is worth a parallel region.
+constexpr bool worth_threads(Index points) {
+  return points >= kMinPointsForThreads;
+}
+
+// The threads a loop over `points` points runs on, of `threads` asked for (at least one).
+constexpr int team_size(Index points, int threads) {
+  return worth_threads(points) && threads > 1 ? threads : 1;
+}
 
 }  // namespace contactbench

@@ -83,7 +83,7 @@ def write_atomically(path, text):
 
 
 def read_curve(path):
-    """The rows of a contactbench bem CSV (comment lines start with '#')."""
+    """The rows of a contactbench bem CSV, a one-method scene's curves.csv (comment lines start with '#')."""
     with open(path, encoding="utf-8") as f:
         return list(csv.DictReader(line for line in f if not line.startswith("#")))
 
@@ -134,19 +134,19 @@ def main():
                     "pressure": pressure,
                     "gbar": gbar,
                     "load": float(row["load"]),
-                    "area_fraction": float(row["area_fraction"]),
+                    "area_fraction_nodes": float(row["area_fraction_nodes"]),
                     "area_fraction_corrected": float(row["area_fraction_corrected"]),
-                    "kappa_nodes": float(row["area_fraction"]) / pressure,
+                    "kappa_nodes": float(row["area_fraction_nodes"]) / pressure,
                     "kappa_corrected": float(row["area_fraction_corrected"]) / pressure,
                     "spots": int(row["spots"]),
                     "iterations": int(row["iterations"]),
                     "residual": float(row["residual"]),
-                    "seconds": float(row["seconds"]),
+                    "seconds": float(row["solve_seconds"]),
                     "wall_seconds": wall,
                 })
                 print(f"n = {n}, p/(E* gbar) = {pressure}: kappa {rows[-1]['kappa_nodes']:.4f} (nodes), "
                       f"{rows[-1]['kappa_corrected']:.4f} (corrected), {row['iterations']} iterations, "
-                      f"{float(row['seconds']):.2f} s", file=sys.stderr, flush=True)
+                      f"{float(row['solve_seconds']):.2f} s", file=sys.stderr, flush=True)
 
     header = "".join(f"# {key}: {value}\n" for key, value in stamp.items())
     about = ("# surface A (docs/theory.md section 2, Table 1), seed " + args.seed + ", generated on 256 x 256 and "
@@ -154,7 +154,7 @@ def main():
              args.tolerance + " on the relative pressure change, each load cold-started; "
              "kappa = (A/A0)/(p/(E* gbar)), areal gbar (docs/theory.md section 0); seconds = solver time of that "
              "solve, wall_seconds = the whole bem command (reading the file included)\n")
-    columns = ["n", "pressure", "gbar", "load", "area_fraction", "area_fraction_corrected", "kappa_nodes",
+    columns = ["n", "pressure", "gbar", "load", "area_fraction_nodes", "area_fraction_corrected", "kappa_nodes",
                "kappa_corrected", "spots", "iterations", "residual", "seconds", "wall_seconds"]
     table = io.StringIO()
     writer = csv.DictWriter(table, fieldnames=columns, lineterminator="\n")

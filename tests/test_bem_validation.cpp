@@ -16,6 +16,7 @@
 #include "contactbench/bem/polonsky_keer.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
+#include "reference_solutions.hpp"
 #include "tolerances.hpp"
 
 namespace contactbench {
@@ -93,18 +94,10 @@ Real node_fraction(const ContactSolution& s) {
 
 constexpr Index kBisinusoidPoints = 128;
 constexpr Real kLambda = 100e-6, kAmplitude = 1e-6;
-const Real kFullContact = std::sqrt(2.0) * pi * kModulus * kAmplitude / kLambda;  // p*
-
-// JGH's small-load asymptote A/A0 ~ pi (3/(8 pi))^(2/3) (pbar/p*)^(2/3): two Hertz contacts per cell, the
-// peaks at (0, 0) and (lambda/2, lambda/2), of radius of curvature lambda^2/(4 pi^2 D).
-Real small_load_area(Real load_ratio) {
-  return pi * std::pow(3 / (8 * pi), 2.0 / 3) * std::pow(load_ratio, 2.0 / 3);
-}
-// JGH's near-full-contact asymptote 1 - A/A0 ~ (3/(2 pi)) (1 - pbar/p*): two non-contact islands around the
-// troughs at (lambda/2, 0) and (0, lambda/2).
-Real near_full_gap_area(Real load_ratio) {
-  return 3 / (2 * pi) * (1 - load_ratio);
-}
+// p* and JGH's two asymptotes: tests/reference_solutions.hpp (two Hertz contacts a cell at small loads, the
+// crests at (0, 0) and (lambda/2, lambda/2); two non-contact islands around the saddles near full contact).
+const reference::Bisinusoid kBisinusoid{.amplitude = kAmplitude, .wavelength = kLambda, .modulus = kModulus};
+const Real kFullContact = kBisinusoid.full_contact_pressure();  // p*
 
 TEST(BemValidation, BisinusoidAtSmallLoadIsTwoHertzContacts) {
   PolonskyKeer solver(bisinusoid(kBisinusoidPoints, kLambda, kAmplitude), kModulus,
@@ -116,7 +109,7 @@ TEST(BemValidation, BisinusoidAtSmallLoadIsTwoHertzContacts) {
     expect_admissible(s, solver.surface(), "pbar/p* = " + std::to_string(ratio));
     const ContactStatistics st = contact_statistics(s, labeller);
     EXPECT_EQ(st.spots, 2) << ratio;
-    const Real expected = small_load_area(ratio);
+    const Real expected = reference::Bisinusoid::small_load_area_fraction(ratio);
     deviation.push_back(st.area_fraction_corrected / expected - 1);
     if (ratio > 0.02) continue;
     // In the asymptote's range (pbar/p* <= 0.01: contact radius a <= 0.076 lambda, 9.7 pixels) two errors
@@ -144,7 +137,7 @@ TEST(BemValidation, BisinusoidNearFullContactLeavesTwoShrinkingIslands) {
     expect_admissible(s, solver.surface(), "pbar/p* = " + std::to_string(ratio));
     const ContactStatistics st = contact_statistics(s, labeller);
     EXPECT_EQ(st.spots, 1) << ratio;  // one connected contact region with two holes
-    const Real expected = near_full_gap_area(ratio);
+    const Real expected = reference::Bisinusoid::near_full_gap_fraction(ratio);
     deviation.push_back((1 - st.area_fraction_corrected) / expected - 1);
     if (ratio < 0.85) continue;
     // The islands' area at pbar/p* = 0.9 and 0.95 is 4.8 % and 2.4 % of the cell (radius 11 and 8 pixels).
@@ -239,7 +232,7 @@ TEST(BemValidation, WorkOfTheLoadIsTheElasticEnergy) {
   std::vector<Real> load, approach, energy;
   for (Index k = 0; k <= intervals; ++k) {
     const Real delta = delta_max * (0.25 + 0.75 * static_cast<Real>(k) / static_cast<Real>(intervals));
-    const Real force = 4.0 / 3.0 * kModulus * std::sqrt(radius) * std::pow(delta, 1.5);  // Hertz P(delta)
+    const Real force = reference::HertzSphere{.radius = radius, .modulus = kModulus}.load_of_approach(delta);
     const ContactSolution& s = solver.solve(force / grid.nominal_area());
     expect_admissible(s, solver.surface(), "load " + std::to_string(k));
     HeightMap u;
@@ -274,8 +267,9 @@ TEST(BemValidation, HertzConvergesUnderGridRefinement) {
   // One Hertz problem (R = 1 mm, a = 16 um) on grids of 32, 64, 128 points over 4a: 8, 16, 32 pixels per
   // contact radius. Errors against Hertz (docs/theory.md section 7) of the pressure field (relative L2), the
   // peak pressure p0 and the approach delta = a^2/R.
-  const Real radius = 1e-3, a = 16e-6, load = 4 * kModulus * a * a * a / (3 * radius);
-  const Real p0 = 3 * load / (2 * pi * a * a), delta = a * a / radius;
+  const reference::HertzSphere hertz{.radius = 1e-3, .modulus = kModulus};
+  const Real radius = hertz.radius, a = 16e-6, load = hertz.load_of_contact_radius(a);
+  const Real p0 = hertz.peak_pressure(load), delta = hertz.approach(load);
   std::vector<Real> field, peak, approach;
   for (const Index n : {32, 64, 128}) {
     const Real dx = 4 * a / static_cast<Real>(n);
@@ -286,8 +280,8 @@ TEST(BemValidation, HertzConvergesUnderGridRefinement) {
     Real error = 0, norm = 0;
     for (Index iy = 0; iy < n; ++iy)
       for (Index ix = 0; ix < n; ++ix) {
-        const Real x = (ix - n / 2) * dx, y = (iy - n / 2) * dx, rr = (x * x + y * y) / (a * a);
-        const Real exact = rr < 1 ? p0 * std::sqrt(1 - rr) : 0;
+        const Real x = (ix - n / 2) * dx, y = (iy - n / 2) * dx;
+        const Real exact = hertz.pressure(std::hypot(x, y), load);
         error += std::pow(s.pressure(iy, ix) - exact, 2);
         norm += exact * exact;
       }
@@ -536,7 +530,9 @@ TEST(BemValidation, HertzOnARectangularGridEqualsTheSquareOne) {
   // sphere on 96 x 48 points and on 96 x 96 (contact radius 12 pixels, well inside both) must give the same
   // contact set and pressure to solver tolerance (solver_consistency of the peak; measured 3e-12), and both
   // Hertz's peak pressure to O((dx/a)^2) (allow 1 %; the 32-pixel value above is right to 5e-5).
-  const Real dx = 1e-6, radius = 1e-3, a = 12 * dx, load = 4 * kModulus * a * a * a / (3 * radius);
+  const Real dx = 1e-6, radius = 1e-3, a = 12 * dx;
+  const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
+  const Real load = hertz.load_of_contact_radius(a);
   const Surface rectangle = sphere_cap(96, 48, dx, radius), square = sphere_cap(96, 96, dx, radius);
   PolonskyKeer on_rectangle(rectangle, kModulus, {.tolerance = 1e-12});
   PolonskyKeer on_square(square, kModulus, {.tolerance = 1e-12});
@@ -548,7 +544,7 @@ TEST(BemValidation, HertzOnARectangularGridEqualsTheSquareOne) {
   // The rectangle's rows 0..47 are the square's rows 24..71 (the sphere is centred on row ny/2 of each).
   EXPECT_LT((r.pressure - s.pressure.middleRows(24, 48)).abs().maxCoeff(),
             tolerance::solver_consistency * s.pressure.maxCoeff());
-  const Real p0 = 3 * load / (2 * pi * a * a);
+  const Real p0 = hertz.peak_pressure(load);
   EXPECT_NEAR(r.pressure.maxCoeff(), p0, 0.01 * p0);
   // The approaches agree too: the flat's height is measured from each grid's mean height, so compare the
   // approach from the apex.

@@ -16,7 +16,7 @@
 #include "contactbench/core/spectrum.hpp"
 #include "contactbench/theories/bush_gibson_thomas.hpp"
 #include "contactbench/theories/elliptic_integrals.hpp"
-#include "contactbench/theories/load_solver.hpp"
+#include "contactbench/theories/isotropic_moments.hpp"
 
 namespace contactbench {
 namespace {

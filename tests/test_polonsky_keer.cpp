@@ -9,6 +9,7 @@
 #include "contactbench/bem/contact_statistics.hpp"
 #include "contactbench/bem/polonsky_keer.hpp"
 #include "contactbench/core/error.hpp"
+#include "reference_solutions.hpp"
 
 namespace contactbench {
 namespace {
@@ -31,7 +32,8 @@ TEST(PolonskyKeer, HertzContactOfASphere) {
   // radius a = (3 P R/(4 E*))^(1/3) is 32 pixels.
   const Index n = 128;
   const Real dx = 1e-6, radius = 1e-3, a = 32 * dx;
-  const Real load = 4 * kModulus * a * a * a / (3 * radius);
+  const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
+  const Real load = hertz.load_of_contact_radius(a);
   const Surface surface = sphere(n, dx, radius);
   const Grid& grid = surface.grid();
   PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
@@ -45,11 +47,11 @@ TEST(PolonskyKeer, HertzContactOfASphere) {
   EXPECT_NEAR(radius_from_nodes, a, 0.016 * a);
   // Peak pressure p0 = 3P/(2 pi a^2) and approach delta = a^2/R: integral quantities of a smooth field
   // sampled 32 pixels across, whose discretisation error is of order (dx/a)^2 ~ 1e-3 (measured: below 1e-4).
-  const Real p0 = 3 * load / (2 * pi * a * a);
+  const Real p0 = hertz.peak_pressure(load), delta = hertz.approach(load);
   EXPECT_NEAR(s.pressure.maxCoeff(), p0, 2e-3 * p0);
   // The surface was centred, so the apex is the largest height; the approach is the apex less the flat.
   const Real apex = solver.surface().heights().maxCoeff();
-  EXPECT_NEAR(apex - s.separation, a * a / radius, 2e-3 * a * a / radius);
+  EXPECT_NEAR(apex - s.separation, delta, 2e-3 * delta);
   // The load is imposed exactly (a projection at every iteration).
   EXPECT_NEAR(s.pressure.mean(), load / grid.nominal_area(), 1e-12 * load / grid.nominal_area());
 }
@@ -61,26 +63,25 @@ TEST(PolonskyKeer, WestergaardWavySurface) {
   const Index nx = 256, ny = 4;
   const Real lambda = 100e-6, amplitude = 1e-6;
   const Surface surface = cosine_strip(nx, ny, lambda, amplitude);
-  const Real p_star = pi * kModulus * amplitude / lambda;
+  const reference::WavySurface wavy{.amplitude = amplitude, .wavelength = lambda, .modulus = kModulus};
+  const Real p_star = wavy.full_contact_pressure();
   PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
   for (const Real fraction : {0.1, 0.3, 0.6}) {  // increasing loads, warm-started
     const ContactSolution& s = solver.solve(fraction * p_star);
     ASSERT_TRUE(s.converged) << fraction;
-    const Real a = lambda * std::asin(std::sqrt(fraction)) / pi;
+    const Real a = wavy.contact_half_width(fraction * p_star);
     // Contact fraction from the node count: each edge of the strip is resolved to half a pixel, so the
     // width is right to about one pixel in 256: allow 1.5 pixels (measured: 0.6 pixel at all three loads).
     const Real measured = static_cast<Real>(s.contact_points) / static_cast<Real>(nx * ny);
     EXPECT_NEAR(measured, 2 * a / lambda, 1.5 / nx) << fraction;
     // Pressure profile inside the strip (away from its edges, where the square-root singularity of the
     // slope lives): within 1 % of the peak (the peak itself is measured to 1e-4).
-    const Real s2 = std::pow(std::sin(pi * a / lambda), 2);
-    const Real peak = 2 * fraction * p_star / s2 * std::sqrt(s2);
+    const Real peak = wavy.pressure(0, fraction * p_star);
     for (Index ix = 0; ix < nx; ++ix) {
       const Real x = (ix <= nx / 2 ? ix : ix - nx) * lambda / nx;
       if (std::abs(x) > 0.8 * a) continue;
-      const Real expected = 2 * fraction * p_star * std::cos(pi * x / lambda) / s2 *
-                            std::sqrt(s2 - std::pow(std::sin(pi * x / lambda), 2));
-      EXPECT_NEAR(s.pressure(1, ix), expected, 0.01 * peak) << fraction << " at x = " << x;
+      EXPECT_NEAR(s.pressure(1, ix), wavy.pressure(x, fraction * p_star), 0.01 * peak)
+          << fraction << " at x = " << x;
     }
   }
 }
@@ -108,14 +109,14 @@ TEST(PolonskyKeer, BeyondFullContactThePressureFollowsTheSurface) {
   const Index nx = 64, ny = 2;
   const Real lambda = 64e-6, amplitude = 0.5e-6;
   const Surface surface = cosine_strip(nx, ny, lambda, amplitude);
-  const Real p_star = pi * kModulus * amplitude / lambda, pbar = 1.5 * p_star;
+  const reference::WavySurface wavy{.amplitude = amplitude, .wavelength = lambda, .modulus = kModulus};
+  const Real pbar = 1.5 * wavy.full_contact_pressure();
   PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
   const ContactSolution& s = solver.solve(pbar);
   ASSERT_TRUE(s.converged);
   EXPECT_EQ(s.contact_points, nx * ny);
   for (Index ix = 0; ix < nx; ++ix)
-    EXPECT_NEAR(s.pressure(0, ix), pbar + p_star * std::cos(2 * pi * ix / static_cast<Real>(nx)),
-                1e-9 * pbar);
+    EXPECT_NEAR(s.pressure(0, ix), wavy.pressure(ix * lambda / static_cast<Real>(nx), pbar), 1e-9 * pbar);
 }
 
 TEST(PolonskyKeer, AFlatSurfaceIsInFullContact) {
@@ -174,7 +175,7 @@ TEST(ContactStatistics, CorrectedAreaOfHertzIsCloserThanTheNodeCount) {
   // Hertz as above but with a contact radius of 16 pixels, where the node count overestimates more.
   const Index n = 96;
   const Real dx = 1e-6, radius = 1e-3, a = 16 * dx;
-  const Real load = 4 * kModulus * a * a * a / (3 * radius);
+  const Real load = reference::HertzSphere{.radius = radius, .modulus = kModulus}.load_of_contact_radius(a);
   const Surface surface = sphere(n, dx, radius);
   const Grid& grid = surface.grid();
   PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
@@ -209,7 +210,8 @@ TEST(PolonskyKeer, FlatPunchStiffnessIsTwiceEStarA) {
   ASSERT_TRUE(s.converged) << s.iterations;
   EXPECT_EQ(s.contact_points, disc);  // the whole face and nothing else
   const Real delta = solver.surface().heights().maxCoeff() - s.separation;
-  EXPECT_NEAR(load / delta, 2 * kModulus * a, 0.015 * 2 * kModulus * a);
+  const Real stiffness = reference::FlatPunch{.radius = a, .modulus = kModulus}.stiffness();
+  EXPECT_NEAR(load / delta, stiffness, 0.015 * stiffness);
 }
 
 }  // namespace

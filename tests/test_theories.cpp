@@ -13,9 +13,11 @@
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "contactbench/theories/bgt_linear.hpp"
+#include "contactbench/theories/brent_root.hpp"
 #include "contactbench/theories/gaussian_tail_integrals.hpp"
 #include "contactbench/theories/greenwood_williamson.hpp"
-#include "contactbench/theories/load_solver.hpp"
+#include "contactbench/theories/isotropic_moments.hpp"
+#include "contactbench/theories/number_text.hpp"
 #include "contactbench/theories/persson.hpp"
 
 namespace contactbench {

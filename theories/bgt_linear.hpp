@@ -1,9 +1,9 @@
 // The BGT linear law: the small-load limit of the Bush-Gibson-Thomas model (A. W. Bush, R. D. Gibson and
 // T. R. Thomas, Wear 35, 87, 1975; docs/theory.md section 5), under its own name, never "BGT":
 //   A/A0 = sqrt(pi) P/(E* A0 sqrt(m2)) = sqrt(2 pi) p/(E* gbar)   (areal kappa sqrt(2 pi) = 2.507),
-// with m2 the isotropic profile moment (mean of m2x and m2y; anisotropy above 5 % refused, load_solver.hpp)
-// and gbar = sqrt(2 m2). At realistic loads the full BGT model lies about a factor two below this law. The
-// law is linear without bound; curves cap A/A0 at 1 and say so.
+// with m2 the isotropic profile moment (mean of m2x and m2y; anisotropy above 5 % refused,
+// isotropic_moments.hpp) and gbar = sqrt(2 m2). At realistic loads the full BGT model lies about a factor two
+// below this law. The law is linear without bound; curves cap A/A0 at 1 and say so.
 #pragma once
 
 #include <span>

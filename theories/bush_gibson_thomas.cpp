@@ -8,8 +8,11 @@
 #include <string>
 
 #include "contactbench/core/error.hpp"
+#include "contactbench/theories/brent_root.hpp"
 #include "contactbench/theories/elliptic_integrals.hpp"
 #include "contactbench/theories/gaussian_tail_integrals.hpp"
+#include "contactbench/theories/number_text.hpp"
+#include "contactbench/theories/requested_loads.hpp"
 
 namespace contactbench {
 namespace {

@@ -35,7 +35,7 @@
 #include "contactbench/core/load_area_curve.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/types.hpp"
-#include "contactbench/theories/load_solver.hpp"
+#include "contactbench/theories/isotropic_moments.hpp"
 
 namespace contactbench {
 

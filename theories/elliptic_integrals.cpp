@@ -7,7 +7,7 @@
 #include <string>
 
 #include "contactbench/core/error.hpp"
-#include "contactbench/theories/load_solver.hpp"
+#include "contactbench/theories/number_text.hpp"
 
 namespace contactbench {
 namespace {

@@ -6,7 +6,9 @@
 #include <numbers>
 
 #include "contactbench/core/error.hpp"
-#include "contactbench/theories/load_solver.hpp"
+#include "contactbench/theories/isotropic_moments.hpp"
+#include "contactbench/theories/number_text.hpp"
+#include "contactbench/theories/requested_loads.hpp"
 
 namespace contactbench {
 

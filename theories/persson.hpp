@@ -8,7 +8,7 @@
 // Both written forms are given; loads are dimensionless, load = P/(E* A0) = p/E*, so E* drops out.
 //
 // Moments: the isotropic m2 is the mean of the x and y profile moments, (m2x + m2y)/2 = <|grad h|^2>/2; a
-// surface whose m2x/m2y differs from 1 by more than 5 % is refused (load_solver.hpp).
+// surface whose m2x/m2y differs from 1 by more than 5 % is refused (isotropic_moments.hpp).
 #pragma once
 
 #include <span>

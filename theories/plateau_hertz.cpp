@@ -5,8 +5,9 @@
 #include <numbers>
 #include <vector>
 
-#include "contactbench/theories/load_solver.hpp"
+#include "contactbench/theories/number_text.hpp"
 #include "contactbench/theories/plateau_model.hpp"
+#include "contactbench/theories/requested_loads.hpp"
 
 namespace contactbench {
 

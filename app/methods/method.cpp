@@ -1,0 +1,35 @@
+#include "contactbench/app/methods/method.hpp"
+
+#include <cmath>
+
+#include "contactbench/app/scene_toml.hpp"
+#include "contactbench/core/error.hpp"
+
+namespace contactbench {
+
+void MethodCheck::problem(std::string_view key_suffix, std::string_view reason,
+                          std::string_view accepted) const {
+  problems.add(0, key_suffix.empty() ? key : key + "." + std::string(key_suffix), reason, accepted);
+}
+
+MethodCurve MethodCurve::from(const LoadAreaCurve& curve, const std::vector<Real>& loads) {
+  // The library solves each load to 1e-12 relative (e.g. theories/greenwood_williamson.hpp); a curve at other
+  // loads is a bug, never something to line up silently.
+  constexpr Real kSameLoad = 1e-9;
+  bool same = curve.load.size() == loads.size() && curve.area_fraction.size() == loads.size();
+  for (std::size_t k = 0; same && k < loads.size(); ++k)
+    same = std::abs(curve.load[k] - loads[k]) <= kSameLoad * loads[k];
+  if (!same)
+    throw Error("internal: the " + curve.method + " curve is not at the scene's " +
+                std::to_string(loads.size()) + " loads");
+  const auto per_load = [&](const std::vector<Real>& values) {
+    return values.empty() ? std::vector<Real>(loads.size(), std::nan("")) : values;
+  };
+  return {.area_fraction = curve.area_fraction,
+          .separation = per_load(curve.separation),
+          .spots = per_load(curve.spots),
+          .parameters = curve.parameters,
+          .columns = {}};
+}
+
+}  // namespace contactbench

@@ -1,0 +1,100 @@
+// A method of the comparison (docs/architecture.md, "methods are objects"): one object per
+// [methods.<label>] table, made by the registry (app/methods/registry.hpp) from the name in `method`. It
+//   - reads its own keys (read) and writes them back with defaults filled in (write),
+//   - declares the stages it needs (needs): the spectral moments, a sweep of one topology and levels, a BEM
+//     solve of one grid, boundary, tolerance and effects; the planner runs the union of all needs, each once,
+//   - checks itself against the surface, the material and the loads before any stage runs (preflight),
+//     reporting every problem with the key path a user would change,
+//   - and turns the stages' products into its answer at the scene's loads (evaluate).
+// Adding a method: one file holding a class derived from Method, and one line in app/methods/registry.cpp
+// (scenes/README.md, "Adding a method").
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "contactbench/app/scene.hpp"
+#include "contactbench/app/stages.hpp"
+#include "contactbench/core/load_area_curve.hpp"
+#include "contactbench/core/spectrum.hpp"
+
+namespace contactbench {
+
+class Problems;
+class Section;
+struct SceneKeys;
+
+// What a scene knows about its surface: while its methods read their keys (before any file is read) the
+// points a side when a generated surface says so; once the surface is made (planning), its periodicity.
+struct SceneContext {
+  std::optional<Index> surface_points;  // points a side, when known
+  bool surface_periodic = true;
+  std::filesystem::path folder =
+      {};  // the scene file's folder: relative paths of its keys resolve against it
+};
+
+// The stages one method needs; the planner unites them over the scene (app/scene_plan.hpp).
+struct MethodNeeds {
+  bool moments = false;
+  std::optional<SweepStage> sweep = std::nullopt;
+  std::optional<BemStage> bem = std::nullopt;
+  int bem_connectivity = 4;  // the spot count this method reads from the BEM stage's contact maps
+};
+
+// What a preflight sees: everything known before the first stage (the surface and its moments are the
+// scene's inputs), and where to report (each problem with its key path).
+struct MethodCheck {
+  const Scene& scene;
+  const Surface& surface;  // heights from the mean plane
+  const SpectralMoments& moments;
+  std::string key;  // "methods.<label>"
+  Problems& problems;
+  void problem(std::string_view key_suffix, std::string_view reason, std::string_view accepted = {}) const;
+};
+
+// What evaluate sees: the inputs and the products of the stages this method declared.
+struct MethodInputs {
+  const Scene& scene;
+  const Surface& surface;
+  const SpectralMoments& moments;
+  const SweepProducts* sweep = nullptr;  // when needs().sweep
+  const BemProducts* bem = nullptr;      // when needs().bem
+};
+
+// A method's answer at the scene's loads (the loads themselves live once, in the scene of the report).
+struct MethodCurve {
+  std::vector<Real> area_fraction;  // A/A0: the area the comparison uses (compared_area() says which)
+  std::vector<Real> separation;     // [m] from the mean plane of the heights; NaN where the method has none
+  std::vector<Real> spots;          // NaN where the method counts none
+  std::string parameters;           // the method as run, for the report
+  // The method's own columns beside those above (e.g. the BEM's iterations), one value per load.
+  std::vector<std::pair<std::string, std::vector<Real>>> columns;
+
+  // From a library's curve: checks that it answers at `loads` (Error otherwise) and drops its copy of them.
+  static MethodCurve from(const LoadAreaCurve& curve, const std::vector<Real>& loads);
+};
+
+class Method {
+ public:
+  virtual ~Method() = default;
+
+  virtual std::string_view name() const = 0;  // the registry name, `method = "..."`
+  // Which area its A/A0 is, as the tables say (e.g. "area_fraction_corrected: perimeter-corrected nodes").
+  virtual std::string compared_area() const = 0;
+
+  // Reads the keys of [methods.<label>] other than `method`; every unknown key and bad value is a problem.
+  virtual void read(const Section& keys, const SceneContext& context) = 0;
+  // Its keys, defaults filled in, as read() accepts them again.
+  virtual void write(SceneKeys& keys) const = 0;
+
+  virtual MethodNeeds needs(const SceneContext& context) const = 0;
+  // Every reason it cannot answer this scene, each a problem at a key path; nothing when it can.
+  virtual void preflight(const MethodCheck& check) const = 0;
+  virtual MethodCurve evaluate(const MethodInputs& inputs) const = 0;
+};
+
+}  // namespace contactbench

@@ -1,0 +1,60 @@
+#include "contactbench/app/methods/registry.hpp"
+
+#include <algorithm>
+
+#include "contactbench/app/scene_toml.hpp"
+#include "contactbench/core/error.hpp"
+
+namespace contactbench {
+
+// The built-in methods, each made by the one function its file defines (app/methods/<name>_method.cpp).
+std::unique_ptr<Method> make_bem_method();
+std::unique_ptr<Method> make_plateau_method();
+std::unique_ptr<Method> make_gw_mccool_method();
+std::unique_ptr<Method> make_bgt_method();
+std::unique_ptr<Method> make_bgt_linear_method();
+std::unique_ptr<Method> make_persson_method();
+
+MethodRegistry& MethodRegistry::global() {
+  static MethodRegistry registry = [] {
+    MethodRegistry built_in;
+    built_in.add("bem", make_bem_method);
+    built_in.add("plateau", make_plateau_method);
+    built_in.add("gw_mccool", make_gw_mccool_method);
+    built_in.add("bgt", make_bgt_method);
+    built_in.add("bgt_linear", make_bgt_linear_method);
+    built_in.add("persson", make_persson_method);
+    return built_in;
+  }();
+  return registry;
+}
+
+void MethodRegistry::add(std::string name, MethodFactory factory) {
+  if (!portable_name(name, false))
+    throw Error("method registry: \"" + name + "\" is not a method name (letters, digits, '_', '-')");
+  if (make(name)) throw Error("method registry: a method named \"" + name + "\" exists already");
+  entries_.push_back({std::move(name), std::move(factory)});
+}
+
+void MethodRegistry::remove(std::string_view name) {
+  std::erase_if(entries_, [&](const Entry& entry) { return entry.name == name; });
+}
+
+std::unique_ptr<Method> MethodRegistry::make(std::string_view name) const {
+  for (const Entry& entry : entries_)
+    if (entry.name == name) return entry.factory();
+  return nullptr;
+}
+
+std::vector<std::string> MethodRegistry::names() const {
+  std::vector<std::string> names;
+  for (const Entry& entry : entries_)
+    names.push_back(entry.name);
+  return names;
+}
+
+std::string MethodRegistry::names_text() const {
+  return join(names());
+}
+
+}  // namespace contactbench

@@ -1,0 +1,71 @@
+#include "contactbench/app/methods/theory_method.hpp"
+
+#include <algorithm>
+
+#include "contactbench/app/scene_keys.hpp"
+#include "contactbench/app/scene_toml.hpp"
+#include "contactbench/theories/isotropic_moments.hpp"
+
+namespace contactbench {
+
+void AnalyticTheoryMethod::read(const Section& s, const SceneContext&) {
+  s.reject_unknown({"method", "anisotropy"});
+  average_anisotropy_ = s.choice("anisotropy", {"refuse", "average"}) == "average";
+}
+
+void AnalyticTheoryMethod::write(SceneKeys& keys) const {
+  keys.put("anisotropy", average_anisotropy_ ? "average" : "refuse");
+}
+
+MethodNeeds AnalyticTheoryMethod::needs(const SceneContext&) const {
+  return {.moments = true, .sweep = std::nullopt, .bem = std::nullopt, .bem_connectivity = 4};
+}
+
+SpectralMoments AnalyticTheoryMethod::seen(const SpectralMoments& m) const {
+  if (!average_anisotropy_) return m;
+  const Real m2 = 0.5 * (m.m2x + m.m2y), m4 = 0.5 * (m.m4x + m.m4y);
+  return {.m0 = m.m0, .m2x = m2, .m4x = m4, .m2y = m2, .m4y = m4};
+}
+
+void AnalyticTheoryMethod::preflight(const MethodCheck& check) const {
+  const SpectralMoments moments = seen(check.moments);
+  try {
+    if (uses_m4_)
+      isotropic_moments(moments, name_);
+    else
+      isotropic_m2(moments, name_);
+  } catch (const Error& error) {
+    check.problem("anisotropy", error.what(),
+                  "anisotropy = \"average\" (the theory sees the surface's equivalent isotropic surface), or "
+                  "leave this method out");
+    return;
+  }
+  // Each load on its own, so that every load the theory refuses is named; a reason that is not about a load
+  // (the same for all of them) is given once.
+  std::vector<std::string> reasons;
+  const Real area = check.surface.grid().nominal_area();
+  for (const Real load : check.scene.loads) {
+    try {
+      curve_(moments, std::span<const Real>(&load, 1), area);
+    } catch (const Error& error) {
+      if (std::find(reasons.begin(), reasons.end(), error.what()) == reasons.end())
+        reasons.push_back(error.what());
+    }
+  }
+  for (const std::string& reason : reasons)
+    check.problem("", reason,
+                  "loads the theory reaches (loads.values or loads.range), or leave this method out");
+}
+
+MethodCurve AnalyticTheoryMethod::evaluate(const MethodInputs& in) const {
+  const SpectralMoments moments = seen(in.moments);
+  MethodCurve curve =
+      MethodCurve::from(curve_(moments, in.scene.loads, in.surface.grid().nominal_area()), in.scene.loads);
+  if (average_anisotropy_)
+    curve.parameters += "; anisotropy averaged: the equivalent isotropic surface of m2x/m2y = " +
+                        std::to_string(in.moments.m2x / in.moments.m2y) +
+                        ", m4x/m4y = " + std::to_string(in.moments.m4x / in.moments.m4y);
+  return curve;
+}
+
+}  // namespace contactbench

@@ -1,0 +1,266 @@
+// The scene's schema: the keys of the top level, [material], [loads] and [methods.<label>] (each method
+// reads its own keys, app/methods/), [surface] in app/surface_source.cpp. Docs: scenes/README.md.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "contactbench/app/methods/registry.hpp"
+#include "contactbench/app/scene.hpp"
+#include "contactbench/app/scene_toml.hpp"
+#include "contactbench/core/bounded_read.hpp"
+#include "contactbench/core/material.hpp"
+
+namespace contactbench {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::optional<MaterialSpec> parse_material(const Section& root, Problems& problems) {
+  constexpr std::string_view forms = "E with nu (optionally E2 with nu2), or estar alone";
+  const toml::table* table = root.subtable("material", true, forms);
+  if (!table) return std::nullopt;
+  const std::size_t before = problems.count();
+  const Section m(*table, "material", problems);
+  m.reject_unknown({"E", "nu", "estar", "E2", "nu2"});
+  const auto poisson = open_interval(-1, 0.5, "a number in (-1, 0.5)");
+  const auto e1 = m.number("E", false, positive("[Pa]"));
+  const auto nu1 = m.number("nu", false, poisson);
+  const auto estar = m.number("estar", false, positive("[Pa]"));
+  const auto e2 = m.number("E2", false, positive("[Pa]"));
+  const auto nu2 = m.number("nu2", false, poisson);
+  const bool has_e = m.has("E"), has_nu = m.has("nu"), has_estar = m.has("estar");
+  const bool has_e2 = m.has("E2"), has_nu2 = m.has("nu2");
+  if (has_e && has_estar) m.problem("estar", "E and estar both given", forms);
+  if (!has_e && !has_estar) m.missing("E", forms);
+  if (has_e && !has_nu) m.missing("nu", "a number in (-1, 0.5), required with E");
+  if (has_nu && !has_e) m.problem("nu", "given without E", forms);
+  if (has_e2 && !has_nu2) m.missing("nu2", "a number in (-1, 0.5), required with E2");
+  if (has_nu2 && !has_e2) m.problem("nu2", "given without E2", forms);
+  if ((has_e2 || has_nu2) && !has_e)
+    m.problem(has_e2 ? "E2" : "nu2", "a second body needs E and nu of the first (not estar)", forms);
+  if (problems.count() != before) return std::nullopt;
+  MaterialSpec spec;
+  if (estar) {
+    spec.estar = *estar;
+  } else {
+    spec.youngs_modulus = e1;
+    spec.poisson_ratio = nu1;
+    spec.youngs_modulus_2 = e2;
+    spec.poisson_ratio_2 = nu2;
+    spec.estar = e2 ? composite_modulus(*e1, *nu1, *e2, *nu2) : contact_modulus(*e1, *nu1);
+  }
+  return spec;
+}
+
+std::optional<std::vector<Real>> parse_loads(const Section& root, Problems& problems) {
+  constexpr std::string_view forms = "values = [ ... ] or range = { from, to, count, spacing }";
+  const toml::table* table = root.subtable("loads", true, forms);
+  if (!table) return std::nullopt;
+  const std::size_t before = problems.count();
+  const Section l(*table, "loads", problems);
+  l.reject_unknown({"values", "range"});
+  const auto load = positive("(P/(E* A0))");
+  std::vector<Real> loads;
+  if (l.has("values") && l.has("range")) l.problem("range", "values and range both given", forms);
+  if (!l.has("values") && !l.has("range")) l.missing("values", forms);
+  if (const toml::node* node = l.find("values")) {
+    if (const auto* array = node->as_array()) {
+      if (array->empty()) l.problem("values", "empty array", "at least one " + load.accepted);
+      for (std::size_t i = 0; i < array->size(); ++i) {
+        const toml::node& element = *array->get(i);
+        const std::string path = "loads.values[" + std::to_string(i) + "]";
+        const auto value = Section::as_real(element);
+        if (!value)
+          problems.add(line_of(element), path,
+                       "wrong type: expected a number, got " + std::string(type_name(element)),
+                       load.accepted);
+        else if (!load.ok(*value))
+          problems.add(line_of(element), path, "out of range: got " + exact_number(*value), load.accepted);
+        else
+          loads.push_back(*value);
+      }
+    } else {
+      l.wrong_type("values", "an array of numbers", forms);
+    }
+  }
+  if (l.has("range") && !l.has("values")) {
+    if (const toml::table* range_table = l.subtable("range", true, forms)) {
+      const Section r(*range_table, "loads.range", problems);
+      r.reject_unknown({"from", "to", "count", "spacing"});
+      const auto from = r.number("from", true, load);
+      const auto to = r.number("to", true, load);
+      const auto count = r.integer("count", true, int_range(1, 1000000));
+      const auto spacing = r.string("spacing", false, "\"log\", \"linear\"");
+      if (spacing && *spacing != "log" && *spacing != "linear")
+        r.problem("spacing", "unknown spacing \"" + *spacing + "\"", "\"log\", \"linear\"");
+      if (from && to && !(*from < *to))
+        r.problem("to", "must exceed from = " + exact_number(*from) + ": got " + exact_number(*to),
+                  "a number > from");
+      if (problems.count() == before) {
+        const bool linear = spacing && *spacing == "linear";
+        for (std::int64_t i = 0; i < *count; ++i) {
+          const Real t = *count == 1 ? 0.0 : static_cast<Real>(i) / static_cast<Real>(*count - 1);
+          loads.push_back(linear ? *from + t * (*to - *from) : *from * std::pow(*to / *from, t));
+        }
+        if (*count > 1) loads.back() = *to;  // the end point exactly, without the round-off of pow
+      }
+    }
+  }
+  if (problems.count() != before) return std::nullopt;
+  std::sort(loads.begin(), loads.end());
+  loads.erase(std::unique(loads.begin(), loads.end()), loads.end());
+  return loads;
+}
+
+// The methods in the order the file lists them (toml++ keeps a table's keys sorted, not in file order).
+std::vector<MethodSpec> parse_methods(const Section& root, const std::optional<SurfaceSpec>& surface,
+                                      const fs::path& folder, std::vector<std::string>& labels,
+                                      Problems& problems) {
+  const MethodRegistry& registry = MethodRegistry::global();
+  const std::string known = registry.names_text();
+  const std::string accepted = "tables [methods.<label>] with method = one of " + known;
+  const toml::table* table = root.subtable("methods", true, accepted);
+  if (!table) return {};
+  const Section methods(*table, "methods", problems);
+  if (table->empty())
+    problems.add(methods.line(), "methods", "no methods: at least one is required", accepted);
+  std::vector<std::pair<const toml::key*, const toml::node*>> entries;
+  for (auto&& [key, node] : *table)
+    entries.emplace_back(&key, &node);
+  std::stable_sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+    const auto &pa = a.first->source().begin, &pb = b.first->source().begin;
+    return std::pair(pa.line, pa.column) < std::pair(pb.line, pb.column);
+  });
+  const SceneContext context{.surface_points = surface ? points_a_side(*surface) : std::nullopt,
+                             .surface_periodic = true,  // not known before the file is read; unused here
+                             .folder = folder};
+  std::vector<MethodSpec> result;
+  for (const auto& [key, node] : entries) {
+    const std::string label(key->str());
+    labels.push_back(label);
+    if (!portable_name(label, false))
+      methods.problem(label, "invalid label", "letters, digits, '_' and '-' (the label names outputs)");
+    const auto* method_table = node->as_table();
+    if (!method_table) {
+      methods.wrong_type(label, "a table", accepted);
+      continue;
+    }
+    const Section s(*method_table, "methods." + label, problems);
+    const bool label_is_a_name = registry.make(label) != nullptr;
+    std::string name = label_is_a_name ? label : "";
+    if (const auto given = s.string("method", false, known)) {
+      if (!registry.make(*given)) {
+        s.problem("method", "unknown method \"" + *given + "\"", known);
+        continue;
+      }
+      if (label_is_a_name && *given != label) {
+        s.problem("method", "the label names the method " + label + ", not " + *given,
+                  "method = \"" + label + "\", or another label");
+        continue;
+      }
+      name = *given;
+    } else if (!s.has("method") && !label_is_a_name) {
+      s.missing("method", known + " (required when the label is not a method name)");
+    }
+    if (name.empty()) continue;
+    std::unique_ptr<Method> method = registry.make(name);
+    method->read(s, context);
+    result.push_back({label, std::shared_ptr<const Method>(std::move(method))});
+  }
+  return result;
+}
+
+std::string origin_name(const fs::path& origin) {
+  return origin.empty() ? "<scene>" : origin.string();
+}
+
+}  // namespace
+
+std::string_view MethodSpec::name() const {
+  return method->name();
+}
+
+const MethodSpec& Scene::method(std::string_view label) const {
+  for (const auto& m : methods)
+    if (m.label == label) return m;
+  std::vector<std::string> labels;
+  for (const auto& m : methods)
+    labels.push_back(m.label);
+  throw Error("scene " + name + " has no method labelled \"" + std::string(label) +
+              "\"; labels: " + join(labels));
+}
+
+Scene parse_scene(std::string_view toml_text, const std::filesystem::path& origin) {
+  toml::table document;
+  try {
+    document = toml::parse(toml_text, origin.string());
+  } catch (const toml::parse_error& error) {
+    Problems problems(origin_name(origin));
+    const auto& at = error.source().begin;
+    problems.add_syntax_error(static_cast<long>(at.line), static_cast<long>(at.column), error.description());
+    problems.throw_if_any();
+  }
+  return parse_scene_table(document, origin);
+}
+
+Scene parse_scene_table(const toml::table& document, const std::filesystem::path& origin) {
+  Problems problems(origin_name(origin));
+  const Section root(document, "", problems, true);
+  root.reject_unknown({"name", "description", "reference", "surface", "material", "loads", "methods"});
+
+  Scene scene;
+  const auto name =
+      root.string("name", true, "letters, digits, '_', '-' and '.' (it names the output folder)");
+  if (name && !portable_name(*name, true))
+    root.problem("name", "invalid name \"" + *name + "\"",
+                 "letters, digits, '_', '-' and '.' (it names the output folder)");
+  scene.name = name.value_or("");
+  scene.description = root.string("description", false, "any text").value_or("");
+  const fs::path folder = origin.parent_path();
+  const auto surface = read_surface_keys(root, folder);
+  const auto material = parse_material(root, problems);
+  const auto loads = parse_loads(root, problems);
+  std::vector<std::string> labels;  // every label in the file, also those with problems
+  scene.methods = parse_methods(root, surface, folder, labels, problems);
+  if (const auto reference = root.string("reference", false, "a method label")) {
+    if (!reference->empty() && std::find(labels.begin(), labels.end(), *reference) == labels.end())
+      root.problem(
+          "reference", "no method labelled \"" + *reference + "\"",
+          labels.empty() ? std::string("a label of a [methods.<label>] table") : join(labels) + ", \"\"");
+    scene.reference = *reference;
+  } else if (!root.has("reference")) {
+    // Default: the BEM when it is the only one, else no comparison.
+    const auto bem = std::count_if(scene.methods.begin(), scene.methods.end(),
+                                   [](const MethodSpec& m) { return m.name() == "bem"; });
+    if (bem == 1)
+      scene.reference = std::find_if(scene.methods.begin(), scene.methods.end(), [](const MethodSpec& m) {
+                          return m.name() == "bem";
+                        })->label;
+  }
+  problems.throw_if_any();
+  scene.surface = *surface;
+  scene.material = *material;
+  scene.loads = *loads;
+  return scene;
+}
+
+Scene read_scene(const std::filesystem::path& path) {
+  // A scene is a few kilobytes of TOML: 16 MiB is far beyond any real one and bounds a wrong argument
+  // (a device such as /dev/zero is refused by name, never read without end).
+  constexpr std::uintmax_t max_scene_bytes = std::uintmax_t{16} << 20;
+  std::string text;
+  try {
+    text = read_file_bounded(path, max_scene_bytes, "scene files");
+  } catch (const InputError& e) {
+    Problems problems(origin_name(path));
+    problems.add(0, "file", "cannot open the scene file " + std::string(e.what()));
+    problems.throw_if_any();
+  }
+  Scene scene = parse_scene(text, path);
+  scene.file = path;
+  return scene;
+}
+
+}  // namespace contactbench

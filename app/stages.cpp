@@ -1,0 +1,118 @@
+#include "contactbench/app/stages.hpp"
+
+#include <chrono>
+#include <sstream>
+
+#include "contactbench/core/generation.hpp"
+#include "contactbench/core/labelling.hpp"
+#include "contactbench/core/topography_io.hpp"
+#include "contactbench/theories/plateau_model.hpp"
+
+namespace contactbench {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string describe(const SweepLevels& levels) {
+  switch (levels.kind) {
+    case SweepLevels::Kind::exact:
+      return "exact levels";
+    case SweepLevels::Kind::uniform:
+      return std::to_string(levels.count) + " uniform levels";
+    case SweepLevels::Kind::paper:
+      return "the paper's " + std::to_string(levels.count) + " levels";
+  }
+  return "";
+}
+
+Connectivity connectivity_of(int neighbours) {
+  return neighbours == 8 ? Connectivity::eight : Connectivity::four;
+}
+
+}  // namespace
+
+std::string field_path(const std::string& prefix, std::size_t k, const char* what) {
+  return prefix + "_load" + std::to_string(k) + "_" + what + ".txt";
+}
+
+std::string SweepStage::name() const {
+  return "sweep (" + describe(levels) + ", " + describe(topology) + ")";
+}
+
+bool SweepStage::same_as(const SweepStage& other) const {
+  return topology.connectivity == other.topology.connectivity && topology.wrap_x == other.topology.wrap_x &&
+         topology.wrap_y == other.topology.wrap_y && levels.kind == other.levels.kind &&
+         (levels.kind == SweepLevels::Kind::exact || levels.count == other.levels.count);
+}
+
+std::string BemStage::name() const {
+  std::ostringstream text;
+  text << "bem (";
+  if (refine > 0) text << "refined to " << refine << " x " << refine << ", ";
+  text << (periodic ? "periodic" : "non-periodic") << ", tolerance " << tolerance;
+  if (single_precision) text << ", single precision";
+  if (hardness) text << ", hardness " << *hardness << " Pa";
+  text << ")";
+  return text.str();
+}
+
+SweepProducts run_sweep_stage(const SweepStage& stage, const Surface& surface, const StageContext& context) {
+  const auto start = Clock::now();
+  SweepProducts products;
+  products.sweep = sweep(surface, stage.levels, stage.topology, context.threads);
+  products.model = plateau_model(products.sweep);
+  products.seconds = seconds_since(start);
+  return products;
+}
+
+BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real estar,
+                          const std::vector<Real>& mean_pressures, const std::set<int>& connectivities,
+                          const StageContext& context) {
+  const auto start = Clock::now();
+  const RunObserver quiet;
+  const RunObserver& observer = context.observer ? *context.observer : quiet;
+  BemProducts products;
+  Surface solved = stage.refine > 0 ? refine(surface, stage.refine, stage.refine, context.threads) : surface;
+  if (solved.grid().periodic != stage.periodic) solved = solved.with_periodic(stage.periodic);
+  products.points = solved.grid().points();
+  products.periodic = stage.periodic;
+  const std::string name = stage.name();
+  PolonskyKeerOptions solver_options{.tolerance = stage.tolerance,
+                                     .max_iterations = stage.max_iterations,
+                                     .hardness = stage.hardness,  // absent: purely elastic
+                                     .single_precision = stage.single_precision,
+                                     .warning = [&](const std::string& text) { observer.warn(text); }};
+  PolonskyKeer solver(solved, estar, solver_options, context.threads);
+  std::map<int, Labeller> labellers;
+  for (const int c : connectivities)
+    labellers.emplace(c,
+                      Labeller(Topology::for_surface(connectivity_of(c), stage.periodic), context.threads));
+  for (std::size_t k = 0; k < mean_pressures.size(); ++k) {
+    ContactSolution solution = solver.solve(mean_pressures[k]);
+    for (auto& [c, labeller] : labellers)
+      products.statistics[c].push_back(contact_statistics(solution, labeller));
+    if (!stage.fields.empty()) {  // as each load is solved, so that a long run leaves what it has done
+      write_surface(field_path(stage.fields, k + 1, "pressure"), Surface(solved.grid(), solution.pressure));
+      write_surface(field_path(stage.fields, k + 1, "gap"), Surface(solved.grid(), solution.gap));
+    }
+    solution.pressure.resize(0, 0);
+    solution.gap.resize(0, 0);
+    if (seconds_since(start) > kProgressAfterSeconds) {
+      std::ostringstream line;
+      line << name << ": load " << k + 1 << " of " << mean_pressures.size()
+           << " (P/(E* A0) = " << mean_pressures[k] / estar << "): " << solution.iterations << " iterations, "
+           << solution.seconds << " s";
+      observer.say(line.str());
+    }
+    products.solutions.push_back(std::move(solution));
+  }
+  products.seconds = seconds_since(start);
+  return products;
+}
+
+}  // namespace contactbench

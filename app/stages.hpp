@@ -1,0 +1,76 @@
+// The stages a scene's methods can need (docs/architecture.md, data flow), each identified by what it
+// computes so that methods asking for the same one share it: a sweep of one topology at one set of levels,
+// and a load-stepped BEM solve of one grid, boundary and solver setting. What each leaves for the methods is
+// its products. Running them reports through the run's observer (app/run_observer.hpp) and nothing else.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "contactbench/app/run_observer.hpp"
+#include "contactbench/bem/contact_statistics.hpp"
+#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/core/load_area_curve.hpp"
+#include "contactbench/core/surface.hpp"
+#include "contactbench/core/sweep.hpp"
+#include "contactbench/core/topology.hpp"
+
+namespace contactbench {
+
+struct SweepStage {
+  Topology topology;
+  SweepLevels levels;
+  std::string name() const;  // e.g. "sweep (exact levels, 4-connectivity, periodic in x and y)"
+  bool same_as(const SweepStage& other) const;
+};
+
+struct SweepProducts {
+  SweepCurve sweep;     // A_c(z), N(z) at the stage's levels
+  LoadAreaCurve model;  // the plateau model of the sweep (theories/plateau_model.hpp), at the sweep's levels
+  double seconds = 0;
+};
+
+// One BEM solve of every scene load, warm-started in increasing order. Its defaults are the BEM method's
+// (app/methods/bem_method.cpp reads every key into this struct). Methods that differ only in the
+// connectivity of their spot count share it: labelling is not part of the solve.
+struct BemStage {
+  Index refine = 0;  // points a side after Fourier refinement; 0 = the scene's surface as it is
+  bool periodic = true;
+  Real tolerance = 1e-8;  // relative change of the pressure (bem/polonsky_keer.hpp)
+  Index max_iterations = 20000;
+  std::optional<Real> hardness;   // [Pa]: perfectly plastic pressure cap; absent = purely elastic
+  bool single_precision = false;  // iterate in float (bem/polonsky_keer.hpp)
+  std::string fields;             // prefix of per-load pressure and gap files; empty: none written
+  std::string name() const;       // e.g. "bem (periodic, tolerance 1e-08)"
+  bool operator==(const BemStage& other) const = default;  // methods that ask for equal solves share one
+};
+
+// Per load, the solver's scalars and the contact statistics for each connectivity asked for.
+struct BemProducts {
+  std::vector<ContactSolution> solutions;  // fields dropped (pressure and gap emptied) to keep memory small
+  std::map<int, std::vector<ContactStatistics>> statistics;  // by connectivity
+  double seconds = 0;                                        // refinement + solves + statistics
+  Index points = 0;                                          // nodes of the grid solved on
+  bool periodic = true;                                      // the boundary solved
+};
+
+struct StageContext {
+  int threads = 1;
+  const RunObserver* observer = nullptr;  // may be null: quiet
+};
+
+// The field file of load k (1-based, in the order solved): <prefix>_load<k>_<what>.txt, what = pressure |
+// gap.
+std::string field_path(const std::string& prefix, std::size_t k, const char* what);
+
+SweepProducts run_sweep_stage(const SweepStage& stage, const Surface& surface, const StageContext& context);
+
+// `mean_pressures` [Pa] ascending; `connectivities` the spot counts the methods sharing the stage ask for.
+BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real estar,
+                          const std::vector<Real>& mean_pressures, const std::set<int>& connectivities,
+                          const StageContext& context);
+
+}  // namespace contactbench
