@@ -16,6 +16,11 @@ packages=(
   python3                         # renders benchmark JSON as Markdown tables (scripts/render_bench.py)
 )
 
+# `install-deps.sh fuzz`: also clang with libFuzzer and its OpenMP runtime (the fuzz preset; CI runs it).
+if [[ "${1:-}" == "fuzz" ]]; then
+  packages+=(clang-14 libclang-rt-14-dev libomp-14-dev)
+fi
+
 missing=()
 for package in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$package" 2>/dev/null || true)

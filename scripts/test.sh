@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
-# Builds contactbench and runs every test (unit, validation, end to end, formatting, layering).
-# The README's test command; .ci/run calls it verbatim. Usage: scripts/test.sh [preset: release|debug|asan]
+# Builds contactbench and runs every test (unit, validation, end to end, install and consume, formatting,
+# layering, fuzzing regressions). The README's test command; .ci/run calls it verbatim.
+# Usage: scripts/test.sh [preset: release|debug|asan]
+# With CB_CI=1 (set by .ci/run) it also builds and runs the suite under AddressSanitizer + UBSan (preset asan) and
+# fuzzes each parser for a few seconds (preset fuzz, scripts/fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 preset=${1:-release}
@@ -8,3 +11,15 @@ scripts/install-deps.sh
 cmake --preset "$preset"
 cmake --build --preset "$preset" -j "$(nproc)"
 ctest --preset "$preset" -j "$(nproc)"
+
+if [[ "${CB_CI:-}" == "1" ]]; then
+  if [[ "$preset" != "asan" ]]; then
+    echo "test.sh: CI: the suite under AddressSanitizer + UBSan"
+    cmake --preset asan
+    cmake --build --preset asan -j "$(nproc)"
+    ctest --preset asan -j "$(nproc)"
+  fi
+  echo "test.sh: CI: a short fuzz run of every parser"
+  scripts/install-deps.sh fuzz
+  scripts/fuzz.sh "${CB_FUZZ_SECONDS:-15}"
+fi
