@@ -15,6 +15,7 @@ void add_stats_command(CLI::App& parent);
 void add_sweep_command(CLI::App& parent);
 void add_bem_command(CLI::App& parent);
 void add_run_command(CLI::App& parent);
+void add_convert_command(CLI::App& parent);
 
 // Threads for a command: --threads if given, else what OpenMP would use (the machine's cores).
 void add_threads_option(CLI::App& command, int& threads);

@@ -355,6 +355,28 @@ std::optional<FileSurfaceSpec> parse_file(const Section& s, const fs::path& fold
     }
   }
   spec.periodic = s.boolean("periodic").value_or(false);
+  // channel = "Height" or channel = 1; fill and level as docs/formats.md describes.
+  if (const toml::node* node = s.find("channel")) {
+    if (const auto* name = node->as_string()) {
+      spec.channel = name->get();
+    } else if (const auto* index = node->as_integer(); index && index->get() >= 0) {
+      spec.channel = std::to_string(index->get());
+    } else {
+      s.wrong_type("channel", "a channel name or an index >= 0", "a string or an integer >= 0");
+    }
+  }
+  if (const auto fill = s.string("fill", false, "\"none\", \"harmonic\", \"mean\"")) {
+    if (const auto method = parse_fill_method(*fill))
+      spec.fill = *method;
+    else
+      s.problem("fill", "unknown fill method '" + *fill + "'", "\"none\", \"harmonic\", \"mean\"");
+  }
+  if (const auto level = s.string("level", false, "\"none\", \"mean\", \"plane\"")) {
+    if (const auto levelling = parse_levelling(*level))
+      spec.level = *levelling;
+    else
+      s.problem("level", "unknown levelling '" + *level + "'", "\"none\", \"mean\", \"plane\"");
+  }
   if (file) {
     spec.path = fs::absolute(folder / *file).lexically_normal();
     std::error_code ec;
@@ -365,9 +387,10 @@ std::optional<FileSurfaceSpec> parse_file(const Section& s, const fs::path& fold
     } else {
       try {
         const TopographyFormat format = detect_topography_format(spec.path);
-        if (format == TopographyFormat::plain_matrix && !s.has("size"))
+        if (!format_carries_sizes(format) && !s.has("size"))
           s.missing("size", std::string(kSizeAccepted) + " (required: " + spec.path.filename().string() +
-                                " is a plain matrix, which carries no lateral size)");
+                                " is a " + std::string(to_string(format)) +
+                                ", which carries no lateral size)");
       } catch (const Error& error) {
         s.problem("file", error.what(), "a topography file contactbench reads");
       }
@@ -381,7 +404,7 @@ std::optional<SurfaceSpec> parse_surface(const Section& root, const fs::path& fo
   const toml::table* table = root.subtable("surface", true, "a table [surface] with generate or file");
   if (!table) return std::nullopt;
   const Section s(*table, "surface", problems);
-  s.reject_unknown({"generate", "file", "size", "periodic"});
+  s.reject_unknown({"generate", "file", "size", "periodic", "channel", "fill", "level"});
   const bool generated = s.has("generate"), from_file = s.has("file");
   if (generated && from_file) {
     s.problem("file", "generate and file are mutually exclusive", "generate = { ... } or file = \"...\"");
@@ -393,7 +416,7 @@ std::optional<SurfaceSpec> parse_surface(const Section& root, const fs::path& fo
     return std::nullopt;
   }
   if (generated) {
-    for (std::string_view key : {"size", "periodic"})
+    for (std::string_view key : {"size", "periodic", "channel", "fill", "level"})
       if (s.has(key))
         s.problem(
             key,
@@ -808,6 +831,9 @@ Table surface_table(const SurfaceSpec& surface) {
     else if (f.size_x)
       put(table, "size", {*f.size_x});
     put(table, "periodic", {f.periodic});
+    if (f.channel) put(table, "channel", {*f.channel});
+    if (f.fill != FillMethod::none) put(table, "fill", {std::string(to_string(f.fill))});
+    if (f.level != Levelling::none) put(table, "level", {std::string(to_string(f.level))});
   }
   return table;
 }

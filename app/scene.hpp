@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/formats/surface_repair.hpp"
 #include "contactbench/core/sweep.hpp"
 #include "contactbench/core/types.hpp"
 
@@ -36,6 +37,10 @@ struct FileSurfaceSpec {
   std::optional<Real> size_x;  // [m], required when the file does not state its size
   std::optional<Real> size_y;  // [m]
   bool periodic = false;
+  // docs/formats.md: which channel (name or 0-based index as text), how invalid points are filled, levelling.
+  std::optional<std::string> channel;
+  FillMethod fill = FillMethod::none;
+  Levelling level = Levelling::none;
 };
 
 struct SurfaceSpec {

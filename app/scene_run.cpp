@@ -61,7 +61,14 @@ Surface make_surface(const SurfaceSpec& spec, int threads) {
     return generate_surface(grid, psd, g->seed, threads);
   }
   const auto& file = std::get<FileSurfaceSpec>(spec.source);
-  return read_topography(file.path, {.lx = file.size_x, .ly = file.size_y, .periodic = file.periodic});
+  TopographyReadOptions options;
+  options.lx = file.size_x;
+  options.ly = file.size_y;
+  options.periodic = file.periodic;
+  options.channel = file.channel;
+  options.fill = file.fill;
+  options.level = file.level;
+  return read_topography(file.path, options);
 }
 
 // What one BEM stage leaves for the methods that share it: per load, the solver's scalars and the contact
