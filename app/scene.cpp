@@ -389,7 +389,8 @@ std::optional<FileSurfaceSpec> parse_file(const Section& s, const fs::path& fold
         const TopographyFormat format = detect_topography_format(spec.path);
         if (!format_carries_sizes(format) && !s.has("size"))
           s.missing("size", std::string(kSizeAccepted) + " (required: " + spec.path.filename().string() +
-                                " is a " + std::string(to_string(format)) +
+                                " is a " +
+                                (format == TopographyFormat::npy ? "NumPy array" : "plain matrix") +
                                 ", which carries no lateral size)");
       } catch (const Error& error) {
         s.problem("file", error.what(), "a topography file contactbench reads");
