@@ -52,6 +52,12 @@ std::string read_member(const fs::path& path, zip_t* archive, std::string_view n
     throw InputError(path, 0,
                      "x3p member '" + std::string(name) + "' is " + std::to_string(stat.size) +
                          " bytes, more than the " + std::to_string(limit) + " bytes it can hold");
+  // Deflate cannot shrink data by more than about 1032:1; a member claiming more is corrupt (or a zip bomb),
+  // and must be refused before its claimed size is allocated.
+  if ((stat.valid & ZIP_STAT_COMP_SIZE) && stat.size > 1100 * stat.comp_size + (1u << 20))
+    throw InputError(path, 0,
+                     "x3p member '" + std::string(name) + "' claims " + std::to_string(stat.size) +
+                         " bytes from " + std::to_string(stat.comp_size) + " compressed: corrupt archive");
   std::unique_ptr<zip_file_t, ZipFileCloser> file(
       zip_fopen_index(archive, static_cast<zip_uint64_t>(index), 0));
   if (!file)
