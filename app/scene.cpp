@@ -833,8 +833,9 @@ Table surface_table(const SurfaceSpec& surface) {
       put(table, "size", {*f.size_x});
     put(table, "periodic", {f.periodic});
     if (f.channel) put(table, "channel", {*f.channel});
-    if (f.fill != FillMethod::none) put(table, "fill", {std::string(to_string(f.fill))});
-    if (f.level != Levelling::none) put(table, "level", {std::string(to_string(f.level))});
+    // Always written, defaults included, so that a report records how the measured heights were treated.
+    put(table, "fill", {std::string(to_string(f.fill))});
+    put(table, "level", {std::string(to_string(f.level))});
   }
   return table;
 }

@@ -432,6 +432,66 @@ TEST_F(FormatFiles, X3pEveryDataTypeWithIncrementOffsetAndValidMask) {
   }
 }
 
+TEST_F(FormatFiles, SdfBinaryWithInt16AndTheMissingPointValue) {
+  // No binary sample exists: this one follows ISO 25178-71's packed header (81 bytes, little-endian).
+  std::string header = "bISO-1.0";
+  header += std::string("TEST      ", 10) + std::string(12, '0') + std::string(12, '0');
+  header += encoded(std::vector<std::uint16_t>{3, 2}, false);  // NumPoints (nx), NumProfiles (ny)
+  header +=
+      encoded(std::vector<double>{1e-6, 2e-6, 1e-9, 1e-9}, false);  // Xscale, Yscale, Zscale, Zresolution
+  header += std::string{'\0', '\5', '\0'};  // Compression, DataType 5 (int16), CheckType
+  ASSERT_EQ(header.size(), 81u);
+  const std::string data = encoded(std::vector<std::int16_t>{1, 2, 3, 4, -32768, 6}, false);
+  const fs::path file = write("binary.sdf", header + data);
+  const formats::Channel channel = read_topography_channels(file).channels.at(0);
+  ASSERT_EQ(channel.nx, 3);
+  ASSERT_EQ(channel.ny, 2);
+  EXPECT_DOUBLE_EQ(*channel.lx, 3e-6);
+  EXPECT_DOUBLE_EQ(*channel.ly, 4e-6);
+  EXPECT_DOUBLE_EQ(channel.values[5], 6e-9);
+  EXPECT_TRUE(std::isnan(channel.values[4]));
+  expect_refused(file, "1 of 6 points");
+  expect_refused(write("short.sdf", header + data.substr(0, 10)), "truncated or corrupt: SDF binary data");
+}
+
+TEST_F(FormatFiles, NanoscopeFourByteDataCarrySixteenMoreBitsOfResolution) {
+  // No 4-byte sample exists: a minimal header by hand, 2 x 2 int32 counts, 2 V hard scale, 10 nm/V.
+  const std::string header_text =
+      "\\*File list\r\n\\Data length: 2048\r\n\\*Scanner list\r\n\\@Sens. Zsens: V 10.0 nm/V\r\n"
+      "\\*Ciao image list\r\n\\Data offset: 2048\r\n\\Data length: 16\r\n\\Bytes/pixel: 4\r\n"
+      "\\Samps/line: 2\r\n\\Number of lines: 2\r\n\\Scan Size: 1 1 ~m\r\n"
+      "\\@2:Image Data: S [Height] \"Height\"\r\n\\@2:Z scale: V [Sens. Zsens] (0.0001 V/LSB) 2.0 V\r\n"
+      "\\*File list end\r\n";
+  std::string bytes = header_text + std::string(2048 - header_text.size(), '\0');
+  bytes += encoded(std::vector<std::int32_t>{65536, 131072, -65536, 0}, false);
+  const Surface s = read_topography(write("four.di", bytes));
+  // count * (2 V / 65536) * 10 nm/V / 65536: a count of 65536 is 2 * 10 / 65536 nm.
+  const double unit = 2.0 * 10.0 / 65536.0 * 1e-9;
+  EXPECT_DOUBLE_EQ(s.grid().lx, 1e-6);
+  // The first stored line is the top (y = 1).
+  EXPECT_DOUBLE_EQ(s.heights()(1, 0), unit);
+  EXPECT_DOUBLE_EQ(s.heights()(1, 1), 2 * unit);
+  EXPECT_DOUBLE_EQ(s.heights()(0, 0), -unit);
+  EXPECT_DOUBLE_EQ(s.heights()(0, 1), 0.0);
+}
+
+TEST_F(FormatFiles, DetectionIsByContentNotByExtension) {
+  const std::vector<std::pair<std::string, TopographyFormat>> cases = {
+      {"x3p-2.x3p", TopographyFormat::x3p},          {"metropro-1.dat", TopographyFormat::metropro},
+      {"sdf-1.sdf", TopographyFormat::sdf},          {"example-2d.npy", TopographyFormat::npy},
+      {"di-3.di", TopographyFormat::nanoscope},      {"plu-1.plu", TopographyFormat::sensofar},
+      {"sur-3.sur", TopographyFormat::digital_surf}, {"opd-1.opd", TopographyFormat::wyko},
+      {"nc-1.nc", TopographyFormat::netcdf},
+  };
+  for (const auto& [name, format] : cases) {
+    const fs::path renamed = write("renamed_" + name + ".bin", read_bytes(samples / name));
+    EXPECT_EQ(detect_topography_format(renamed), format) << name;
+  }
+  // A Sensofar file named like a MetroPro file is still read as what it is.
+  const fs::path plu_as_dat = write("plu.dat", read_bytes(samples / "plu-1.plu"));
+  EXPECT_EQ(read_topography(plu_as_dat).nx(), 768);
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // Bad files: each refused with the file's name and what is wrong.
 
