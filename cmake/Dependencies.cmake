@@ -10,7 +10,6 @@ find_package(tomlplusplus 3 REQUIRED)        # libtomlplusplus-dev: scene files 
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(LIBZIP REQUIRED IMPORTED_TARGET libzip)
 find_package(pugixml REQUIRED CONFIG)        # libpugixml-dev: .x3p main.xml (core, private)
-find_package(netCDF REQUIRED CONFIG)         # libnetcdf-dev: .nc topographies (core, private)
 
 include(FFTWTargets)                          # libfftw3-dev: contactbench::fftw
 

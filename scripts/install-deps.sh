@@ -12,7 +12,6 @@ packages=(
   libcli11-dev                    # command line
   libtomlplusplus-dev             # scene files
   libzip-dev libpugixml-dev       # .x3p topographies (zip archive, XML)
-  libnetcdf-dev                   # .nc topographies
   clang-format                    # the formatting check in the test command
   gnuplot-nox                     # load-area and accuracy-vs-time plots
   python3                         # renders benchmark JSON as Markdown tables (scripts/render_bench.py)

@@ -518,6 +518,8 @@ TEST_F(FormatFiles, WrongMagicIsRefused) {
   expect_refused(write("text.sur", "DIGITAL SORF and more"), "wrong magic");
   expect_refused(write("text.opd", "no directory here at all"), "wrong magic");
   expect_refused(write("text.nc", "CDX\x01"), "wrong magic");
+  expect_refused(write("hdf5.nc", std::string("\x89HDF\r\n\x1a\n", 8) + std::string(64, '\0')),
+                 "NetCDF-4 (HDF5)");
   expect_refused(write("text.dat", "\x88\x1b\x03\x10 not metropro"), "wrong magic");
 }
 

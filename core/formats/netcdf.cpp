@@ -1,16 +1,15 @@
-// NetCDF (.nc) as ContactMechanics and Tamaas write a topography, docs/formats.md "netcdf": a variable
-// "heights" with dimensions (x, y) (x the slow index in the file), optional variables "x" and "y" whose
-// attributes give the lateral sizes ("length"), the unit ("unit") and periodicity ("periodic"); the heights'
-// own "unit" attribute must agree with the lateral unit. Read with the NetCDF library, from memory.
+// NetCDF (.nc) as ContactMechanics and Tamaas write a topography, docs/formats.md "netcdf": the classic
+// format (CDF-1, the 64-bit-offset CDF-2 and the 64-bit-data CDF-5), parsed here with bounds checks (the
+// NetCDF library allocates whatever a corrupt header asks for, so it is not used). A variable "heights" with
+// two dimensions (x, y), x the slow index; optional variables "x" and "y" whose attributes give the sizes
+// ("length"), the unit ("unit") and periodicity ("periodic"). NetCDF-4 (HDF5) files are refused with a hint.
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <netcdf.h>
-#include <netcdf_mem.h>
 
 #include "contactbench/core/formats/binary_view.hpp"
 #include "contactbench/core/formats/readers.hpp"
@@ -21,6 +20,150 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Tags and types of the classic format specification.
+constexpr std::uint32_t tag_dimension = 0x0A;
+constexpr std::uint32_t tag_variable = 0x0B;
+constexpr std::uint32_t tag_attribute = 0x0C;
+
+std::optional<std::size_t> type_size(std::uint32_t type) {
+  switch (type) {
+    case 1:  // byte
+    case 2:  // char
+    case 7:  // ubyte
+      return 1;
+    case 3:  // short
+    case 8:  // ushort
+      return 2;
+    case 4:  // int
+    case 5:  // float
+    case 9:  // uint
+      return 4;
+    case 6:   // double
+    case 10:  // int64
+    case 11:  // uint64
+      return 8;
+    default:
+      return std::nullopt;
+  }
+}
+
+double decode_number(const char* source, std::uint32_t type) {
+  constexpr ByteOrder big = ByteOrder::big;
+  switch (type) {
+    case 1:
+      return static_cast<std::int8_t>(*source);
+    case 7:
+      return static_cast<std::uint8_t>(*source);
+    case 3:
+      return BinaryView::decode<std::int16_t>(source, big);
+    case 8:
+      return BinaryView::decode<std::uint16_t>(source, big);
+    case 4:
+      return BinaryView::decode<std::int32_t>(source, big);
+    case 9:
+      return BinaryView::decode<std::uint32_t>(source, big);
+    case 5:
+      return BinaryView::decode<float>(source, big);
+    case 10:
+      return static_cast<double>(BinaryView::decode<std::int64_t>(source, big));
+    case 11:
+      return static_cast<double>(BinaryView::decode<std::uint64_t>(source, big));
+    default:
+      return BinaryView::decode<double>(source, big);
+  }
+}
+
+struct Attribute {
+  std::string text;             // for char attributes
+  std::optional<double> first;  // the first value of a numeric attribute
+};
+using Attributes = std::map<std::string, Attribute>;
+
+struct Variable {
+  std::vector<std::uint64_t> dimensions;  // dimension ids
+  Attributes attributes;
+  std::uint32_t type = 0;
+  std::uint64_t begin = 0;
+};
+
+// Reads the header front to back; every count is checked against the bytes left before anything is sized.
+class Header {
+ public:
+  Header(const BinaryView& view, int version) : view_(view), wide_(version == 5), offset64_(version != 1) {}
+
+  std::uint64_t count(std::string_view what) {
+    const std::uint64_t value = wide_ ? view_.read<std::uint64_t>(at_, ByteOrder::big, what)
+                                      : view_.read<std::uint32_t>(at_, ByteOrder::big, what);
+    at_ += wide_ ? 8 : 4;
+    return value;
+  }
+  std::uint32_t tag(std::string_view what) {
+    const auto value = view_.read<std::uint32_t>(at_, ByteOrder::big, what);
+    at_ += 4;
+    return value;
+  }
+  std::uint64_t offset(std::string_view what) {
+    const std::uint64_t value = offset64_ ? view_.read<std::uint64_t>(at_, ByteOrder::big, what)
+                                          : view_.read<std::uint32_t>(at_, ByteOrder::big, what);
+    at_ += offset64_ ? 8 : 4;
+    return value;
+  }
+  // A list's element count, refused when even the smallest elements (4 bytes each) could not fit.
+  std::uint64_t list_length(std::string_view what) {
+    const std::uint64_t n = count(what);
+    if (n > (view_.size() - std::min<std::uint64_t>(at_, view_.size())) / 4)
+      throw InputError(view_.path(), 0,
+                       "truncated or corrupt: the NetCDF header lists " + std::to_string(n) + " " +
+                           std::string(what) + ", more than the file can hold");
+    return n;
+  }
+  std::string_view padded(std::uint64_t length, std::string_view what) {
+    const std::string_view bytes = view_.slice(at_, length, what);
+    at_ += (length + 3) / 4 * 4;
+    return bytes;
+  }
+  std::string name(std::string_view what) {
+    const std::uint64_t length = count(what);
+    return std::string(padded(length, what));
+  }
+  Attributes attributes() {
+    Attributes result;
+    const std::uint32_t list_tag = tag("attribute list tag");
+    const std::uint64_t n = list_length("attributes");
+    if (list_tag != tag_attribute && !(list_tag == 0 && n == 0))
+      throw InputError(view_.path(), 0, "corrupt NetCDF header: bad attribute list tag");
+    for (std::uint64_t k = 0; k < n; ++k) {
+      const std::string key = name("attribute name");
+      const std::uint32_t type = tag("attribute type");
+      const std::optional<std::size_t> size = type_size(type);
+      if (!size)
+        throw InputError(view_.path(), 0,
+                         "unknown NetCDF data type " + std::to_string(type) + " of attribute '" + key + "'");
+      const std::uint64_t values = count("attribute length");
+      if (values > view_.size() / *size)
+        throw InputError(view_.path(), 0,
+                         "truncated or corrupt: NetCDF attribute '" + key + "' is longer than the file");
+      const std::string_view bytes = padded(values * *size, "attribute '" + key + "'");
+      Attribute attribute;
+      if (type == 2) {
+        attribute.text = std::string(bytes);
+        while (!attribute.text.empty() && attribute.text.back() == '\0')
+          attribute.text.pop_back();
+      } else if (values > 0) {
+        attribute.first = decode_number(bytes.data(), type);
+      }
+      result[key] = std::move(attribute);
+    }
+    return result;
+  }
+
+ private:
+  const BinaryView& view_;
+  bool wide_;
+  bool offset64_;
+  std::uint64_t at_ = 4;
+};
+
 std::optional<Real> length_unit(std::string_view unit) {
   if (unit == "m") return 1.0;
   if (unit == "mm") return 1e-3;
@@ -29,51 +172,6 @@ std::optional<Real> length_unit(std::string_view unit) {
   if (unit == "pm") return 1e-12;
   return std::nullopt;
 }
-
-class NetcdfFile {
- public:
-  NetcdfFile(const fs::path& path, std::string_view bytes) : path_(path), memory_(bytes) {
-    const int status = nc_open_mem(path.string().c_str(), NC_NOWRITE, memory_.size(), memory_.data(), &id_);
-    if (status != NC_NOERR)
-      throw InputError(path, 0, std::string("not a readable NetCDF file: ") + nc_strerror(status));
-  }
-  ~NetcdfFile() { nc_close(id_); }
-  NetcdfFile(const NetcdfFile&) = delete;
-  NetcdfFile& operator=(const NetcdfFile&) = delete;
-
-  int id() const { return id_; }
-  std::optional<int> variable(const char* name) const {
-    int variable_id = 0;
-    if (nc_inq_varid(id_, name, &variable_id) != NC_NOERR) return std::nullopt;
-    return variable_id;
-  }
-  std::optional<std::string> text_attribute(int variable, const char* name) const {
-    nc_type type = 0;
-    std::size_t length = 0;
-    if (nc_inq_att(id_, variable, name, &type, &length) != NC_NOERR || type != NC_CHAR || length > 4096)
-      return std::nullopt;
-    std::string text(length, '\0');
-    if (nc_get_att_text(id_, variable, name, text.data()) != NC_NOERR) return std::nullopt;
-    while (!text.empty() && text.back() == '\0')
-      text.pop_back();
-    return text;
-  }
-  std::optional<Real> number_attribute(int variable, const char* name) const {
-    nc_type type = 0;
-    std::size_t length = 0;
-    if (nc_inq_att(id_, variable, name, &type, &length) != NC_NOERR || length != 1 || type == NC_CHAR ||
-        type == NC_STRING)
-      return std::nullopt;
-    double value = 0;
-    if (nc_get_att_double(id_, variable, name, &value) != NC_NOERR) return std::nullopt;
-    return value;
-  }
-
- private:
-  fs::path path_;
-  std::string memory_;  // nc_open_mem wants writable memory it may keep until nc_close
-  int id_ = -1;
-};
 
 }  // namespace
 
@@ -84,66 +182,118 @@ bool looks_like_netcdf(std::string_view bytes) {
 
 RawTopography read_netcdf(const fs::path& path, std::string_view bytes) {
   if (!looks_like_netcdf(bytes))
-    throw InputError(path, 0, "wrong magic: a NetCDF file begins with 'CDF' or '\\x89HDF'");
-  const NetcdfFile file(path, bytes);
-  const std::optional<int> heights = file.variable("heights");
-  if (!heights) throw InputError(path, 0, "the NetCDF file has no variable 'heights'");
-  int dimensions = 0;
-  if (nc_inq_varndims(file.id(), *heights, &dimensions) != NC_NOERR || dimensions != 2)
-    throw InputError(
-        path, 0, "NetCDF 'heights' has " + std::to_string(dimensions) + " dimensions; a topography needs 2");
-  int dimension_ids[2] = {0, 0};
-  std::size_t extents[2] = {0, 0};
-  if (nc_inq_vardimid(file.id(), *heights, dimension_ids) != NC_NOERR ||
-      nc_inq_dimlen(file.id(), dimension_ids[0], &extents[0]) != NC_NOERR ||
-      nc_inq_dimlen(file.id(), dimension_ids[1], &extents[1]) != NC_NOERR)
-    throw InputError(path, 0, "cannot read the dimensions of NetCDF 'heights'");
-  const auto nx = static_cast<long long>(std::min<std::size_t>(extents[0], std::size_t{1} << 40));
-  const auto ny = static_cast<long long>(std::min<std::size_t>(extents[1], std::size_t{1} << 40));
-  const std::uint64_t size = grid_bytes(path, nx, ny, 8, "NetCDF 'heights'");
-  if (size > static_cast<std::uint64_t>(bytes.size()) * 8 + 4096)
-    throw InputError(path, 0, "NetCDF 'heights' promises more data than the file can hold");
+    throw InputError(path, 0, "wrong magic: a NetCDF file begins with 'CDF' and a version byte 1, 2 or 5");
+  if (bytes.front() != 'C')
+    throw InputError(path, 0,
+                     "a NetCDF-4 (HDF5) file; only the classic formats are read (convert with "
+                     "'nccopy -k nc7 IN OUT')");
+  const BinaryView view(path, bytes);
+  Header header(view, bytes[3]);
 
-  // Unit and sizes from the coordinate variables' attributes.
+  (void)header.count("number of records");
+  std::vector<std::pair<std::string, std::uint64_t>> dimensions;
+  {
+    const std::uint32_t list_tag = header.tag("dimension list tag");
+    const std::uint64_t n = header.list_length("dimensions");
+    if (list_tag != tag_dimension && !(list_tag == 0 && n == 0))
+      throw InputError(path, 0, "corrupt NetCDF header: bad dimension list tag");
+    for (std::uint64_t k = 0; k < n; ++k) {
+      std::string name = header.name("dimension name");
+      dimensions.emplace_back(std::move(name), header.count("dimension length"));
+    }
+  }
+  (void)header.attributes();  // global attributes: nothing needed
+  std::map<std::string, Variable> variables;
+  {
+    const std::uint32_t list_tag = header.tag("variable list tag");
+    const std::uint64_t n = header.list_length("variables");
+    if (list_tag != tag_variable && !(list_tag == 0 && n == 0))
+      throw InputError(path, 0, "corrupt NetCDF header: bad variable list tag");
+    for (std::uint64_t k = 0; k < n; ++k) {
+      const std::string name = header.name("variable name");
+      Variable variable;
+      const std::uint64_t rank = header.list_length("variable dimensions");
+      for (std::uint64_t d = 0; d < rank; ++d)
+        variable.dimensions.push_back(header.count("dimension id"));
+      variable.attributes = header.attributes();
+      variable.type = header.tag("variable type");
+      (void)header.count("variable size");
+      variable.begin = header.offset("variable offset");
+      variables[name] = std::move(variable);
+    }
+  }
+
+  const auto heights = variables.find("heights");
+  if (heights == variables.end()) throw InputError(path, 0, "the NetCDF file has no variable 'heights'");
+  const Variable& h = heights->second;
+  if (h.dimensions.size() != 2)
+    throw InputError(
+        path, 0,
+        "NetCDF 'heights' has " + std::to_string(h.dimensions.size()) + " dimensions; a topography needs 2");
+  for (const std::uint64_t id : h.dimensions)
+    if (id >= dimensions.size())
+      throw InputError(path, 0, "corrupt NetCDF header: 'heights' names a missing dimension");
+  const std::uint64_t nx = dimensions[h.dimensions[0]].second;
+  const std::uint64_t ny = dimensions[h.dimensions[1]].second;
+  if (nx == 0 || ny == 0)
+    throw InputError(path, 0, "NetCDF 'heights' along a record (unlimited) dimension is not read");
+  const std::optional<std::size_t> item = type_size(h.type);
+  if (!item || h.type == 2)
+    throw InputError(path, 0, "NetCDF 'heights' has unknown or non-numeric type " + std::to_string(h.type));
+  const std::uint64_t size =
+      grid_bytes(path, static_cast<long long>(std::min<std::uint64_t>(nx, 1ull << 40)),
+                 static_cast<long long>(std::min<std::uint64_t>(ny, 1ull << 40)), *item, "NetCDF 'heights'");
+  const std::string_view data = view.slice(h.begin, size, "NetCDF 'heights' data");
+
+  // Unit and sizes from the coordinate variables' attributes (the heights' unit must agree).
+  const auto text_of = [](const Attributes& attributes, const char* key) -> std::optional<std::string> {
+    const auto found = attributes.find(key);
+    if (found == attributes.end() || found->second.first) return std::nullopt;
+    return found->second.text;
+  };
+  const auto number_of = [](const Attributes& attributes, const char* key) -> std::optional<double> {
+    const auto found = attributes.find(key);
+    if (found == attributes.end()) return std::nullopt;
+    return found->second.first;
+  };
+  const auto x = variables.find("x");
+  const auto y = variables.find("y");
+  std::optional<std::string> unit_name =
+      x != variables.end() ? text_of(x->second.attributes, "unit") : std::nullopt;
+  const std::optional<std::string> height_unit = text_of(h.attributes, "unit");
+  if (!unit_name) unit_name = height_unit;
   Real unit = 1;
-  std::optional<Real> lx, ly;
-  bool periodic = false;
-  const std::optional<int> x = file.variable("x");
-  const std::optional<int> y = file.variable("y");
-  std::optional<std::string> unit_name = x ? file.text_attribute(*x, "unit") : std::nullopt;
-  if (!unit_name) unit_name = file.text_attribute(*heights, "unit");
   if (unit_name) {
     const std::optional<Real> factor = length_unit(*unit_name);
     if (!factor)
       throw InputError(path, 0, "NetCDF unit '" + *unit_name + "' is not a length unit (m, mm, um, nm, pm)");
     unit = *factor;
   }
-  if (const std::optional<std::string> height_unit = file.text_attribute(*heights, "unit");
-      height_unit && unit_name && *height_unit != *unit_name)
+  if (height_unit && *height_unit != *unit_name)
     throw InputError(path, 0, "NetCDF heights are in '" + *height_unit + "' but x in '" + *unit_name + "'");
-  if (x && y) {
-    const std::optional<Real> length_x = file.number_attribute(*x, "length");
-    const std::optional<Real> length_y = file.number_attribute(*y, "length");
+  std::optional<Real> lx, ly;
+  bool periodic = false;
+  if (x != variables.end() && y != variables.end()) {
+    const std::optional<double> length_x = number_of(x->second.attributes, "length");
+    const std::optional<double> length_y = number_of(y->second.attributes, "length");
     if (length_x && length_y) {
       lx = *length_x * unit;
       ly = *length_y * unit;
     }
-    if (const std::optional<Real> flag = file.number_attribute(*x, "periodic")) periodic = *flag != 0;
+    if (const std::optional<double> flag = number_of(x->second.attributes, "periodic")) periodic = *flag != 0;
   }
+  // Points never written hold the fill value: the variable's _FillValue, else the format's default for
+  // doubles.
+  const double fill_value = number_of(h.attributes, "_FillValue").value_or(9.9692099683868690e+36);
 
-  std::vector<double> stored(static_cast<std::size_t>(nx * ny));
-  const int status = nc_get_var_double(file.id(), *heights, stored.data());
-  if (status != NC_NOERR)
-    throw InputError(path, 0, std::string("cannot read NetCDF 'heights': ") + nc_strerror(status));
-  // Points never written hold the fill value (the variable's _FillValue, else the library's default).
-  const double fill_value = file.number_attribute(*heights, "_FillValue").value_or(NC_FILL_DOUBLE);
-  Channel channel = make_channel("heights", true, unit_name.value_or("m"), nx, ny);
+  Channel channel =
+      make_channel("heights", true, unit_name.value_or("m"), static_cast<Index>(nx), static_cast<Index>(ny));
   channel.lx = lx;
   channel.ly = ly;
-  channel.values.resize(stored.size());
-  for (long long ix = 0; ix < nx; ++ix)
-    for (long long iy = 0; iy < ny; ++iy) {
-      const double value = stored[static_cast<std::size_t>(ix * ny + iy)];
+  channel.values.resize(static_cast<std::size_t>(nx * ny));
+  for (std::uint64_t ix = 0; ix < nx; ++ix)
+    for (std::uint64_t iy = 0; iy < ny; ++iy) {
+      const double value = decode_number(data.data() + (ix * ny + iy) * *item, h.type);
       channel.values[static_cast<std::size_t>(iy * nx + ix)] =
           std::isfinite(value) && value != fill_value ? value * unit : std::numeric_limits<Real>::quiet_NaN();
     }
