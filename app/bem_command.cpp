@@ -99,6 +99,13 @@ void run_bem(BemOptions o) {
                     " Pa) is at or above --hardness " + json_number(*o.hardness) +
                     " Pa: full plastic contact, nothing to solve");
   std::sort(o.loads.begin(), o.loads.end());  // solved in increasing order, each warm-started
+  if (!o.out.empty()) check_output_file(o.out, o.topography.file, "--out");
+  if (!o.fields.empty()) {
+    check_output_prefix(o.fields, "--fields");
+    for (std::size_t k = 0; k < o.loads.size(); ++k)
+      for (const char* field : {"pressure", "gap"})
+        check_output_file(field_path(o.fields, k + 1, field), o.topography.file, "--fields");
+  }
 
   Surface surface = o.topography.read();
   if (o.non_periodic) surface = surface.with_periodic(false);
@@ -155,17 +162,19 @@ void add_bem_command(CLI::App& parent) {
   command->add_flag("--float", options->single_precision,
                     "iterate in single precision: half the memory, faster on large grids; results agree with "
                     "double to float's accuracy (area to 1e-3, mean gap to 1e-4)");
-  command->add_option(
-      "--fields", options->fields,
-      "PREFIX: write the pressure [Pa] and gap [m] of the k-th load solved (k = 1, 2, ... in "
-      "increasing load) to PREFIX_load<k>_pressure.txt and PREFIX_load<k>_gap.txt, in the "
-      "project's surface format (lossless, with the grid; read back by stats and the library's "
-      "read_topography), each written to a temporary file and renamed");
+  command
+      ->add_option("--fields", options->fields,
+                   "PREFIX: write the pressure [Pa] and gap [m] of the k-th load solved (k = 1, 2, ... in "
+                   "increasing load) to PREFIX_load<k>_pressure.txt and PREFIX_load<k>_gap.txt, in the "
+                   "project's surface format (lossless, with the grid; read back by stats and the library's "
+                   "read_topography), each written to a temporary file and renamed")
+      ->check(refuse_empty_output_name);
   command->add_option("--max-iterations", options->max_iterations, "iteration cap per load (default 20000)")
       ->check(CLI::PositiveNumber);
   command->add_option("--connectivity", options->connectivity, "4 or 8, for counting contact spots")
       ->check(CLI::IsMember({4, 8}));
-  command->add_option("--out", options->out, "CSV file (default: standard output)");
+  command->add_option("--out", options->out, "CSV file (default: standard output)")
+      ->check(refuse_empty_output_name);
   add_threads_option(*command, options->threads);
   command->callback([options] { run_bem(*options); });
 }

@@ -5,6 +5,8 @@
 
 #include <omp.h>
 
+#include "contactbench/app/output.hpp"
+#include "contactbench/app/provenance.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench {
@@ -19,6 +21,7 @@ int run_cli(int argc, char** argv) {
   CLI::App app{
       "contactbench: how well cheap models of rough-surface contact predict the real contact area, and what "
       "each answer costs in time."};
+  app.set_version_flag("--version", version_line());
   app.require_subcommand(1);
   add_generate_command(app);
   add_stats_command(app);
@@ -28,6 +31,7 @@ int run_cli(int argc, char** argv) {
   add_convert_command(app);
   try {
     app.parse(argc, argv);
+    check_standard_output();  // a command whose output was lost must not exit 0
   } catch (const CLI::ParseError& e) {
     return app.exit(e);  // --help lands here with status 0; a usage error prints its reason
   } catch (const std::exception& e) {

@@ -1,9 +1,11 @@
 // contactbench generate: the paper's random self-affine surface (docs/theory.md section 2), written to a
 // file.
+#include <charconv>
 #include <cstdint>
 #include <iostream>
 #include <optional>
 #include <string>
+#include <system_error>
 
 #include "contactbench/app/cli.hpp"
 #include "contactbench/core/error.hpp"
@@ -26,6 +28,15 @@ struct GenerateOptions {
   std::string out;
   int threads = 1;
 };
+
+// CLI11 would read "-1" as 2^64 - 1 and clamp 2^64 to it: a seed is taken only as written, digits only.
+std::string whole_number_seed(const std::string& text) {
+  std::uint64_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size())
+    return "a whole number in [0, 18446744073709551615] (2^64 - 1), got '" + text + "'";
+  return "";
+}
 
 void run_generate(const GenerateOptions& o) {
   const Grid grid{.nx = o.grid,
@@ -62,7 +73,8 @@ void add_generate_command(CLI::App& parent) {
   command->add_option("--grid", options->grid, "points along x")->required()->check(CLI::Range(1, 1 << 16));
   command->add_option("--grid-y", options->grid_y, "points along y (default: --grid)")
       ->check(CLI::Range(1, 1 << 16));
-  command->add_option("--seed", options->seed, "random seed (default 1)");
+  command->add_option("--seed", options->seed, "random seed, a whole number in [0, 2^64 - 1] (default 1)")
+      ->check(whole_number_seed);
   command
       ->add_option("--refine", options->refine,
                    "write the same realisation resampled on M x M points (Fourier interpolation)")

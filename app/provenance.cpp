@@ -42,4 +42,8 @@ Provenance current_provenance(int threads, const std::string& command) {
   return p;
 }
 
+std::string version_line() {
+  return std::string("contactbench ") + CB_VERSION + " (commit " + CB_GIT_COMMIT + ")";
+}
+
 }  // namespace contactbench

@@ -15,4 +15,7 @@ struct Provenance {
 
 Provenance current_provenance(int threads, const std::string& command);
 
+// "contactbench <version> (commit <commit>)": what `contactbench --version` prints.
+std::string version_line();
+
 }  // namespace contactbench

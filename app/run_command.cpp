@@ -7,6 +7,8 @@
 #include "contactbench/app/cli.hpp"
 #include "contactbench/app/comparison.hpp"
 #include "contactbench/app/load_area_plots.hpp"
+#include "contactbench/app/output.hpp"
+#include "contactbench/app/output_folder.hpp"
 #include "contactbench/app/provenance.hpp"
 #include "contactbench/app/report_writers.hpp"
 #include "contactbench/app/scene.hpp"
@@ -32,12 +34,15 @@ void run_command(const RunCommandOptions& o) {
   if (!o.out.empty()) command += " --out " + o.out;
   if (!o.plots) command += " --no-plots";
 
+  check_replaceable_folder(folder);  // before any work, and again when the output is moved into place
   const SceneReport report =
       run_scene(scene, {.threads = o.threads, .progress = o.quiet ? nullptr : &std::cerr});
   const Comparison comparison = compare(report);
   const Provenance provenance = current_provenance(o.threads, command);
-  write_report(folder, report, comparison, provenance);
-  if (o.plots) draw_load_area_plots(folder, report, std::cerr);
+  write_folder_atomically(folder, [&](const std::filesystem::path& staging) {
+    write_report(staging, report, comparison, provenance);
+    if (o.plots) draw_load_area_plots(staging, report, std::cerr);
+  });
   if (!o.quiet) {
     write_table_md(std::cout, report, comparison, provenance);
     std::cout << "\nWritten to " << folder.string() << "/ (curves.csv, summary.json, table.md"
@@ -56,8 +61,8 @@ void add_run_command(CLI::App& parent) {
       "curves.csv, "
       "summary.json, table.md and load-area plots.");
   command->add_option("SCENE", options->scene, "scene file (TOML)")->required();
-  command->add_option("--out", options->out,
-                      "output folder (default: runs/<scene name>/, which git ignores)");
+  command->add_option("--out", options->out, "output folder (default: runs/<scene name>/, which git ignores)")
+      ->check(refuse_empty_output_name);
   command->add_flag("!--no-plots", options->plots, "do not draw the plots (no gnuplot run)");
   command->add_flag("--quiet", options->quiet, "no progress and no table on the terminal");
   add_threads_option(*command, options->threads);

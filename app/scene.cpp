@@ -15,6 +15,7 @@
 
 #include <toml++/toml.h>
 
+#include "contactbench/core/bounded_read.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/grid.hpp"
 #include "contactbench/core/material.hpp"
@@ -972,15 +973,17 @@ Scene parse_scene(std::string_view toml_text, const std::filesystem::path& origi
 }
 
 Scene read_scene(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  // A scene is a few kilobytes of TOML: 16 MiB is far beyond any real one and bounds a wrong argument.
+  constexpr std::uintmax_t max_scene_bytes = std::uintmax_t{16} << 20;
+  std::string text;
+  try {
+    text = read_file_bounded(path, max_scene_bytes, "scene files");
+  } catch (const InputError& e) {
     Problems problems(origin_name(path));
-    problems.add(0, "file", "cannot open the scene file " + fs::absolute(path).lexically_normal().string());
+    problems.add(0, "file", "cannot open the scene file " + std::string(e.what()));
     problems.throw_if_any();
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  Scene scene = parse_scene(text.str(), path);
+  Scene scene = parse_scene(text, path);
   scene.file = path;
   return scene;
 }

@@ -68,7 +68,10 @@ Surface make_surface(const SurfaceSpec& spec, int threads) {
   options.channel = file.channel;
   options.fill = file.fill;
   options.level = file.level;
-  return read_topography(file.path, options);
+  // Heights from the mean plane (docs/theory.md section 0), as generated surfaces have them: every method's
+  // separation is then measured from the same plane (the BEM and the theories use that plane already).
+  // Levelling "plane" removes the tilt as well; the mean is removed in any case.
+  return read_topography(file.path, options).centred();
 }
 
 // What one BEM stage leaves for the methods that share it: per load, the solver's scalars and the contact

@@ -44,6 +44,7 @@ void write_csv(std::ostream& out, const SweepCurve& curve, const std::string& fi
 
 void run_sweep(const SweepOptions& o) {
   const SweepLevels levels = parse_levels(o.levels);
+  if (!o.out.empty()) check_output_file(o.out, o.topography.file, "--out");
   const Surface surface = o.topography.read().centred();
   const Topology topology = Topology::for_surface(
       o.connectivity == 8 ? Connectivity::eight : Connectivity::four, surface.grid().periodic);
@@ -65,7 +66,8 @@ void add_sweep_command(CLI::App& parent) {
                       "highest to the lowest height) or 'paper' (500 steps of 0.002 h_max down to the mean "
                       "plane)");
   command->add_option("--connectivity", options->connectivity, "4 or 8")->check(CLI::IsMember({4, 8}));
-  command->add_option("--out", options->out, "CSV file (default: standard output)");
+  command->add_option("--out", options->out, "CSV file (default: standard output)")
+      ->check(refuse_empty_output_name);
   add_threads_option(*command, options->threads);
   command->callback([options] { run_sweep(*options); });
 }

@@ -6,6 +6,7 @@
 
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/fft.hpp"
+#include "contactbench/core/memory_budget.hpp"
 #include "contactbench/core/spectrum.hpp"
 
 namespace contactbench {
@@ -58,6 +59,9 @@ void validate(const SelfAffinePsd& psd, const Grid& grid) {
     throw Error("qs must lie in (0, " + str(grid.nyquist()) +
                 "] 1/m (the grid's Nyquist wavevector pi/dx), got " + str(qs) +
                 ": refine the grid or lower qs");
+  if (psd.qr >= qs)
+    throw Error("qr = " + str(psd.qr) + " 1/m must lie below qs = " + str(qs) +
+                " 1/m: the roll-off comes before the cut-off (docs/theory.md section 2)");
   if (qs < std::min(grid.dqx(), grid.dqy()))
     throw Error("qs = " + str(qs) + " 1/m lies below the smallest wavevector of the lattice (" +
                 str(std::min(grid.dqx(), grid.dqy())) + " 1/m): no mode would carry height");
@@ -65,6 +69,11 @@ void validate(const SelfAffinePsd& psd, const Grid& grid) {
 
 SpectrumMap generate_coefficients(const Grid& grid, const SelfAffinePsd& psd, std::uint64_t seed) {
   validate(psd, grid);
+  // The half spectrum (16 B per value) and its shape (8 B), about half the points each: 12 B per point.
+  check_fits_in_memory(
+      saturating_product(
+          saturating_product(static_cast<std::uintmax_t>(grid.nx), static_cast<std::uintmax_t>(grid.ny)), 12),
+      "the spectrum of a " + std::to_string(grid.nx) + " x " + std::to_string(grid.ny) + " grid");
   const HalfLattice lattice(grid);
   const Real qs = psd.cutoff(grid);
   const Real gx = std::min(1.0, std::sqrt(psd.anisotropy)), gy = std::min(1.0, 1 / std::sqrt(psd.anisotropy));
@@ -104,6 +113,12 @@ Surface synthesize(const Grid& grid, const SpectrumMap& hhat, Index nx, Index ny
   const HalfLattice source(grid);
   if (hhat.rows() != source.rows() || hhat.cols() != source.cols())
     throw Error("synthesis: coefficient array does not match the grid");
+  // The embedded half spectrum (16 B per complex value, half the points) and the heights (8 B), with the
+  // FFT's work in place: about 16 B per point of the output grid.
+  check_fits_in_memory(
+      saturating_product(saturating_product(static_cast<std::uintmax_t>(nx), static_cast<std::uintmax_t>(ny)),
+                         16),
+      "a surface of " + std::to_string(nx) + " x " + std::to_string(ny) + " points");
   const bool split_column = nx > grid.nx, split_row = ny > grid.ny;
 
   // Embed the coefficients in the larger lattice at the same (kx, ky): the same function, sampled finer.

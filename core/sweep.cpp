@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/memory_budget.hpp"
 #include "contactbench/core/stripe_components.hpp"
 #include "contactbench/core/stripe_seams.hpp"
 
@@ -305,11 +306,25 @@ void merge_exact_levels(std::vector<StripeComponents>& stripes, const std::vecto
 
 }  // namespace
 
+std::uintmax_t sweep_memory_bytes(Index points, const SweepLevels& levels, int threads) {
+  const auto n = static_cast<std::uintmax_t>(std::max<Index>(points, 0));
+  if (levels.kind == SweepLevels::Kind::exact) return saturating_product(n, 8 + 16 + 24 + 32);
+  const auto stripes = static_cast<std::uintmax_t>(std::max(threads, 1));
+  const auto count = saturating_sum(static_cast<std::uintmax_t>(std::max<Index>(levels.count, 0)), 2);
+  return saturating_sum(saturating_product(n, 8 + 4),
+                        saturating_product(count, saturating_sum(8 + 32, saturating_product(stripes, 32))));
+}
+
 SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topology& topology, int threads) {
   const HeightMap& heights = surface.heights();
   const Index nx = surface.nx(), ny = surface.ny(), n = heights.size();
   if (n >= SharedForest::kMaxPoints)
     throw Error("sweep: " + std::to_string(n) + " points are more than the sweep's limit of 2^30");
+  check_fits_in_memory(
+      sweep_memory_bytes(n, levels, threads),
+      "the sweep of " + std::to_string(n) + " points" +
+          (levels.kind == SweepLevels::Kind::exact ? std::string(" at every distinct height")
+                                                   : " at " + std::to_string(levels.count) + " levels"));
   const bool exact = levels.kind == SweepLevels::Kind::exact;
   const std::vector<Real> fixed_z = exact ? std::vector<Real>{} : fixed_levels(heights, levels);
   const int team = n >= kMinPointsForThreads ? std::max(threads, 1) : 1;

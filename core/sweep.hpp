@@ -5,6 +5,8 @@
 // exactly afterwards; the result does not depend on the thread count.
 #pragma once
 
+#include <cstdint>
+
 #include <string>
 #include <vector>
 
@@ -43,7 +45,14 @@ struct SweepCurve {
 
 // Topology::for_surface(connectivity, surface.grid().periodic) is what a surface's own periodicity implies.
 // For fixed levels on a surface of constant height the levels coincide (all at that height).
+// Checks first (check_fits_in_memory) that the sweep's work and output fit: see sweep_memory_bytes.
 SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topology& topology,
                  int threads = 1);
+
+// The peak memory of sweep() beyond the heights themselves [bytes], estimated from its parameters: per point
+// the union-find forest (8 B) and, for exact levels, the sorted order (16 B), a record (24 B) and an output
+// row (32 B) per distinct height; for fixed levels the level index (4 B) per point and, per level, the level
+// (8 B), one count, one record per stripe (32 B each) and an output row (32 B). Saturates rather than wraps.
+std::uintmax_t sweep_memory_bytes(Index points, const SweepLevels& levels, int threads);
 
 }  // namespace contactbench

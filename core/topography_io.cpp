@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "contactbench/core/atomic_file.hpp"
+#include "contactbench/core/bounded_read.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/formats/readers.hpp"
 
@@ -202,19 +203,7 @@ void store_entry(const fs::path& path, const Line& line, std::string_view key, s
 }
 
 std::string read_whole_file(const fs::path& path) {
-  std::error_code code;
-  if (!fs::exists(path, code)) throw InputError(path, 0, "no such file");
-  if (fs::is_directory(path, code)) throw InputError(path, 0, "is a folder, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, "cannot open the file for reading");
-  std::string content;
-  std::vector<char> buffer(1 << 16);
-  while (in) {
-    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
-    content.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
-  }
-  if (in.bad()) throw InputError(path, 0, "reading the file failed");
-  return content;
+  return read_file_bounded(path, kMaxTopographyFileBytes, "topographies");
 }
 
 // Splits at LF, CRLF or a lone CR, numbering lines from 1, and keeps the non-blank ones.

@@ -2,7 +2,7 @@
 # The main job, the README's main command: builds contactbench and runs the seed paper's comparison on its
 # default scene, surface A (Table 1): the plateau model (4- and 8-connectivity), GW-McCool, BGT, the BGT
 # linear law and Persson against the boundary-element reference. Prints the comparison table; the curves,
-# summary, table and plots land in results/surface_A/.
+# summary, table and plots land in runs/surface_A/ (untracked; scripts/record-paper.sh rewrites results/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh

@@ -1,4 +1,4 @@
-// Surfaces with analytic contact solutions, shared by the BEM tests (docs/theory.md section 6).
+// Surfaces with analytic contact solutions, shared by the BEM tests (docs/theory.md section 7).
 #pragma once
 
 #include "contactbench/core/surface.hpp"

@@ -1,8 +1,8 @@
 // Validation of the Polonsky-Keer solver beyond the single-load analytic checks of test_polonsky_keer.cpp
-// (docs/theory.md section 6): the bi-sinusoid's two asymptotes (Johnson, Greenwood and Higginson 1985),
-// reciprocity and energy of solutions, convergence under grid refinement, and hard cases (a single spike,
-// contact fractions of 1e-4 and 0.99, height ranges of 1e6, non-square grids, random surfaces).
-// Every tolerance says where its size comes from; "measured" values are from a Release build.
+// (docs/theory.md sections 6 and 7): the bi-sinusoid's two asymptotes (Johnson, Greenwood and Higginson
+// 1985), reciprocity and energy of solutions, convergence under grid refinement, and hard cases (a single
+// spike, contact fractions of 1e-4 and 0.99, height ranges of 1e6, non-square grids, random surfaces). Every
+// tolerance says where its size comes from; "measured" values are from a Release build.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -88,7 +88,7 @@ Real node_fraction(const ContactSolution& s) {
 
 // ---------------------------------------------------------------------------------------------------------
 // The bi-sinusoid z = D cos(2 pi x/lambda) cos(2 pi y/lambda) (Johnson, Greenwood, Higginson, Int. J. Mech.
-// Sci. 27, 383-396, 1985; docs/theory.md section 6): full contact at p* = sqrt2 pi E* D/lambda. One
+// Sci. 27, 383-396, 1985; docs/theory.md section 7): full contact at p* = sqrt2 pi E* D/lambda. One
 // wavelength on 128 x 128 points.
 
 constexpr Index kBisinusoidPoints = 128;
@@ -272,7 +272,7 @@ TEST(BemValidation, WorkOfTheLoadIsTheElasticEnergy) {
 
 TEST(BemValidation, HertzConvergesUnderGridRefinement) {
   // One Hertz problem (R = 1 mm, a = 16 um) on grids of 32, 64, 128 points over 4a: 8, 16, 32 pixels per
-  // contact radius. Errors against Hertz (docs/theory.md section 6) of the pressure field (relative L2), the
+  // contact radius. Errors against Hertz (docs/theory.md section 7) of the pressure field (relative L2), the
   // peak pressure p0 and the approach delta = a^2/R.
   const Real radius = 1e-3, a = 16e-6, load = 4 * kModulus * a * a * a / (3 * radius);
   const Real p0 = 3 * load / (2 * pi * a * a), delta = a * a / radius;
@@ -340,7 +340,7 @@ TEST(BemValidation, ASingleSpikeCarriesTheWholeLoad) {
   for (const bool periodic : {true, false}) {
     const Surface surface = spike_on_a_flat(periodic);
     const Real compliance = spike_compliance(surface);
-    if (!periodic) {  // Love's centre of a square (docs/theory.md section 6): 1.122200 dx/E*, 7 printed
+    if (!periodic) {  // Love's centre of a square (docs/theory.md section 7): 1.122200 dx/E*, 7 printed
                       // digits
       EXPECT_NEAR(compliance * kModulus / surface.grid().dx(), 1.122200, 5e-7);
     }
@@ -513,7 +513,7 @@ TEST(BemValidation, WestergaardOnATransposedGridIsTheTransposedAnswer) {
   // Westergaard's wavy surface on 64 x 8 points (waves along x) and 8 x 64 (waves along y), periodic: the
   // problems are transposes of each other, so are the answers, to round-off and solver tolerance
   // (tolerance::solver_consistency of the peak; measured 7e-15). The contact width is Westergaard's
-  // (docs/theory.md section 6): pbar/p* = sin^2(pi a/lambda), right to half a pixel at each edge (allow 1.5
+  // (docs/theory.md section 7): pbar/p* = sin^2(pi a/lambda), right to half a pixel at each edge (allow 1.5
   // pixels of 64).
   const Real lambda = 64e-6, amplitude = 1e-6, p_star = pi * kModulus * amplitude / lambda;
   PolonskyKeer along_x(wavy(64, 8, false, lambda, amplitude), kModulus, {.tolerance = 1e-12});

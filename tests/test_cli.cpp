@@ -95,6 +95,17 @@ TEST_F(Cli, StatsOfAMeasuredFileWithItsOwnSizes) {
   EXPECT_NE(stats.out.find("\"window\": \"hann\""), std::string::npos);
 }
 
+// --version names the release and the commit built from: a 0.1.0-style version and a 12-digit commit (with
+// "-dirty" when the tree had changes), or "unknown" when the sources were not a git checkout.
+TEST_F(Cli, VersionNamesTheReleaseAndTheCommit) {
+  const CommandResult version = run("--version");
+  ASSERT_EQ(version.status, 0) << version.err;
+  EXPECT_TRUE(std::regex_search(
+      version.out,
+      std::regex(R"(^contactbench [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{12}(-dirty)?|unknown)\)\n$)")))
+      << version.out;
+}
+
 TEST_F(Cli, EveryCommandHasHelp) {
   for (const char* command : {"--help", "generate --help", "stats --help", "sweep --help", "bem --help"}) {
     const CommandResult help = run(command);
@@ -124,6 +135,59 @@ TEST_F(Cli, BadParametersFailNamingTheParameter) {
   EXPECT_NE(unknown.status, 0);
   const CommandResult plain = run("stats " + (folder_ / "plain.txt").string());
   EXPECT_NE(plain.status, 0);
+}
+
+// A seed is read as written: CLI11 alone would wrap -1 to 2^64 - 1 and clamp 2^64 to the same seed. A
+// roll-off at or above the cut-off (here above Nyquist too) is refused, not generated as something else.
+TEST_F(Cli, SeedsAndWavevectorsOutsideTheirRangeAreRefused) {
+  const std::string base =
+      "generate --sigma 1e-6 --hurst 0.8 --size 32e-6 --grid 16 --out " + (folder_ / "x.txt").string();
+  for (const char* seed : {"-1", "18446744073709551616", "1.5", "abc"}) {
+    const CommandResult bad = run(base + " --qr 2e5 --seed " + seed);
+    EXPECT_NE(bad.status, 0) << seed;
+    EXPECT_NE(bad.err.find("--seed"), std::string::npos) << bad.err;
+  }
+  EXPECT_EQ(run(base + " --qr 2e5 --seed 18446744073709551615").status, 0);
+  // qs defaults to Nyquist, pi/dx = pi/2e-6 = 1.57e6 1/m.
+  for (const char* wavevectors : {"--qr 1e6 --qs 1e6", "--qr 1.2e6 --qs 1e6", "--qr 2e7"}) {
+    const CommandResult bad = run(base + " " + wavevectors);
+    EXPECT_NE(bad.status, 0) << wavevectors;
+    EXPECT_NE(bad.err.find("qr"), std::string::npos) << bad.err;
+  }
+}
+
+// Inputs are regular files: a device is never read without end (stats /dev/zero used to grow until killed), a
+// folder is named as one.
+TEST_F(Cli, DevicesAndFoldersAreRefusedAsInputs) {
+  for (const std::string command : {"stats", "run", "sweep"}) {
+    const CommandResult device = run(command + " /dev/zero");
+    EXPECT_NE(device.status, 0) << command;
+    EXPECT_NE(device.err.find("is a device, not a file"), std::string::npos) << command << ": " << device.err;
+    const CommandResult folder = run(command + " " + folder_.string());
+    EXPECT_NE(folder.status, 0) << command;
+    EXPECT_NE(folder.err.find("is a folder"), std::string::npos) << command << ": " << folder.err;
+  }
+}
+
+// Requests that cannot fit in memory are refused from their parameters, before anything is allocated (each
+// of these grew until the kernel killed it): the message gives the estimate and what the machine has.
+TEST_F(Cli, OversizedRequestsAreRefusedWithTheirEstimate) {
+  const auto surface = folder_ / "s.txt";
+  ASSERT_EQ(run("generate --sigma 1e-6 --hurst 0.8 --qr 2e5 --size 32e-6 --grid 16 --out " + surface.string())
+                .status,
+            0);
+  for (const std::string& command :
+       {"sweep " + surface.string() + " --levels 1000000000",
+        "generate --sigma 1e-6 --hurst 0.8 --qr 2e5 --size 32e-6 --grid 65536 --out " +
+            (folder_ / "big.txt").string(),
+        "generate --sigma 1e-6 --hurst 0.8 --qr 2e5 --size 32e-6 --grid 64 --refine 65536 --out " +
+            (folder_ / "big.txt").string()}) {
+    const CommandResult refused = run(command);
+    EXPECT_NE(refused.status, 0) << command;
+    EXPECT_NE(refused.err.find("needs about"), std::string::npos) << command << ": " << refused.err;
+    EXPECT_NE(refused.err.find("available"), std::string::npos) << refused.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(folder_ / "big.txt"));
 }
 
 TEST_F(Cli, APlainMatrixNeedsItsSize) {
@@ -259,9 +323,14 @@ values = [1e-3, 1e-2]
     EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
   EXPECT_FALSE(std::filesystem::exists(out / "load_area.png"));  // --no-plots
   EXPECT_NE(result.out.find("| plateau |"), std::string::npos) << result.out;
-  // Nothing half-written is left behind: no temporary files beside the results.
+  // Nothing half-written is left behind: no temporary files in the folder (only the mark that a run wrote
+  // it) and no staging folder beside it.
   for (const auto& entry : std::filesystem::directory_iterator(out))
-    EXPECT_NE(entry.path().filename().string().front(), '.') << entry.path();
+    if (entry.path().filename() != ".contactbench-run") {
+      EXPECT_NE(entry.path().filename().string().front(), '.') << entry.path();
+    }
+  for (const auto& entry : std::filesystem::directory_iterator(folder_))
+    EXPECT_EQ(entry.path().filename().string().rfind(".out.", 0), std::string::npos) << entry.path();
 }
 
 // A scene that names a missing file (and other problems) fails before any work: one error lists every

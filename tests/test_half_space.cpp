@@ -27,7 +27,8 @@ HeightMap random_pressure(Index nx, Index ny, unsigned seed) {
 }
 
 TEST(LoveKernel, CentreOfASquareIsTheClosedForm) {
-  // docs/theory.md: centre of a square of side s: u = (4 ln(1 + sqrt2)/pi) p s/E* = 1.122200 p s/E*.
+  // docs/theory.md section 7: centre of a square of side s: u = (4 ln(1 + sqrt2)/pi) p s/E* = 1.122200 p
+  // s/E*.
   const Real s = 2e-6;
   const Real expected = 4 * std::log(1 + std::sqrt(2.0)) / pi * s;
   EXPECT_NEAR(love_displacement(0, 0, s / 2, s / 2), expected, 1e-14 * expected);  // round-off of 8 logs

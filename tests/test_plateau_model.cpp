@@ -28,8 +28,8 @@ Surface random_surface(Index n, std::uint64_t seed) {
   return generate_surface(grid, psd, seed);
 }
 
-// docs/theory.md eq. 3 as the header spells it out: P/(E* A0) summed over levels with the value of sqrt(A_c
-// N) reported at the lower level of each step (right endpoint), A_c = area_fraction A0.
+// docs/theory.md section 4 (the paper's eq. 3) as the header spells it out: P/(E* A0) summed over levels with
+// the value of sqrt(A_c N) reported at the lower level of each step (right endpoint), A_c = area_fraction A0.
 std::vector<Real> expected_load(const SweepCurve& c) {
   std::vector<Real> load(c.z.size(), 0.0);
   for (std::size_t j = 1; j < c.z.size(); ++j) {

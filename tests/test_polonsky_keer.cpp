@@ -1,5 +1,5 @@
-// The Polonsky-Keer solver against analytic contacts (docs/theory.md section 6): Hertz (non-periodic) and
-// Westergaard's wavy surface (periodic). Grid tolerances are argued from the pixel size at each check.
+// The Polonsky-Keer solver against analytic contacts (docs/theory.md sections 6 and 7): Hertz (non-periodic)
+// and Westergaard's wavy surface (periodic). Grid tolerances are argued from the pixel size at each check.
 #include <gtest/gtest.h>
 
 #include <cmath>

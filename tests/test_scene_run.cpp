@@ -223,5 +223,49 @@ TEST(ShippedScenes, MeasuredRunsEndToEndOnACorner) {
   std::filesystem::remove_all(folder);
 }
 
+// Heights from the mean plane (docs/theory.md section 0): a file's heights carry an arbitrary offset (an
+// instrument's zero), which the scene removes, so every method's separation is measured from the same plane.
+// The same surface written with and without an offset of 1 mm (5000 times its height range) must give the
+// same separations; without the centring the plateau model's would differ by the offset. Tolerance 1e-6 of
+// the height range: the two problems differ by the offset's round-off (2e-19 m against heights of 1e-7 m),
+// and two BEM solves stopped at a relative change of 1e-10 agree far better than that; the offset is 5e9
+// times larger.
+TEST(SceneRun, FileSurfacesAreMeasuredFromTheirMeanPlane) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "contactbench_scene_offset";
+  std::filesystem::create_directories(folder);
+  const Grid grid{.nx = 16, .ny = 16, .lx = 16e-6, .ly = 16e-6, .periodic = false};
+  HeightMap h(16, 16);
+  for (Index iy = 0; iy < 16; ++iy)
+    for (Index ix = 0; ix < 16; ++ix)
+      h(iy, ix) = 1e-7 * std::sin(0.7 * ix + 1.3 * iy) * std::cos(0.4 * ix - 0.9 * iy);
+  const Real range = h.maxCoeff() - h.minCoeff();
+  write_surface(folder / "plain.txt", Surface(grid, h));
+  write_surface(folder / "offset.txt", Surface(grid, h + 1e-3));
+  auto run_file = [&](const std::string& name) {
+    return run_text(R"(name = "offset"
+[surface]
+file = ")" + (folder / name).string() +
+                    R"("
+[material]
+estar = 1e11
+[loads]
+values = [1e-3, 1e-2]
+[methods.bem]
+tolerance = 1e-10
+[methods.plateau]
+method = "plateau"
+)");
+  };
+  const SceneReport plain = run_file("plain.txt"), offset = run_file("offset.txt");
+  ASSERT_EQ(plain.methods.size(), 2u);
+  for (std::size_t m = 0; m < 2; ++m)
+    for (std::size_t k = 0; k < 2; ++k) {
+      const Real z = plain.methods[m].curve.separation[k];
+      ASSERT_TRUE(std::isfinite(z)) << plain.methods[m].label;
+      EXPECT_NEAR(offset.methods[m].curve.separation[k], z, 1e-6 * range) << plain.methods[m].label;
+    }
+  std::filesystem::remove_all(folder);
+}
+
 }  // namespace
 }  // namespace contactbench

@@ -80,7 +80,7 @@ LoadAreaCurve solve_curve(const GwParameters& gw, std::span<const Real> loads,
   if (!std::isnan(cap_from)) {
     // The load at which GW's A/A0 reaches 1: A/A0 decreases with t, and exceeds 1 at the capped load's t.
     const Real log_area_1 = log_area_prefactor(gw);
-    auto excess = [&gw, log_area_1](Real t) { return log_area_1 + log_gaussian_tail_integral(1, t); };
+    auto excess = [log_area_1](Real t) { return log_area_1 + log_gaussian_tail_integral(1, t); };
     const Real t_capped = solve_separation(gw, cap_from, method);
     const Real f_max = excess(kGwMaxSeparation);
     const Real t_full = f_max >= 0 ? kGwMaxSeparation

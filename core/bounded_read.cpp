@@ -1,0 +1,61 @@
+#include "contactbench/core/bounded_read.hpp"
+
+#include <fstream>
+#include <system_error>
+#include <vector>
+
+#include "contactbench/core/error.hpp"
+
+namespace contactbench {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string describe_bytes(std::uintmax_t bytes) {
+  const double gib = static_cast<double>(bytes) / static_cast<double>(std::uintmax_t{1} << 30);
+  return std::to_string(bytes) + " bytes (" + std::to_string(gib).substr(0, 6) + " GiB)";
+}
+
+}  // namespace
+
+std::string read_file_bounded(const fs::path& path, std::uintmax_t max_bytes, const std::string& what) {
+  std::error_code code;
+  const fs::file_status status = fs::status(path, code);  // follows links: a link to a file is fine
+  switch (status.type()) {
+    case fs::file_type::regular:
+      break;
+    case fs::file_type::not_found:
+      throw InputError(path, 0, "no such file");
+    case fs::file_type::directory:
+      throw InputError(path, 0, "is a folder, not a file");
+    case fs::file_type::character:
+    case fs::file_type::block:
+      throw InputError(path, 0, "is a device, not a file: " + what + " are read from files");
+    case fs::file_type::fifo:
+    case fs::file_type::socket:
+      throw InputError(path, 0, "is a pipe or socket, not a file: " + what + " are read from files");
+    default:
+      throw InputError(path, 0, "cannot be inspected: " + (code ? code.message() : "unknown type"));
+  }
+  const std::uintmax_t size = fs::file_size(path, code);
+  if (!code && size > max_bytes)
+    throw InputError(path, 0,
+                     "is " + describe_bytes(size) + ", more than the " + describe_bytes(max_bytes) +
+                         " accepted for " + what);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot open the file for reading");
+  std::string content;
+  std::vector<char> buffer(1 << 16);
+  while (in) {
+    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    content.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
+    // A file that grows while it is read (or reports a wrong size, as /proc does) is still bounded.
+    if (content.size() > max_bytes)
+      throw InputError(path, 0, "holds more than the " + describe_bytes(max_bytes) + " accepted for " + what);
+  }
+  if (in.bad()) throw InputError(path, 0, "reading the file failed");
+  return content;
+}
+
+}  // namespace contactbench
