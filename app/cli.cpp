@@ -41,6 +41,7 @@ int run_cli(int argc, char** argv) {
   add_sweep_command(app);
   add_bem_command(app);
   add_run_command(app);
+  add_convert_command(app);
   try {
     app.parse(argc, argv);
     check_standard_output();  // a command whose output was lost must not exit 0

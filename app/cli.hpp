@@ -19,6 +19,7 @@ void add_stats_command(CLI::App& parent);
 void add_sweep_command(CLI::App& parent);
 void add_bem_command(CLI::App& parent);
 void add_run_command(CLI::App& parent);
+void add_convert_command(CLI::App& parent);
 
 // The observer of a command's run on the terminal: stages longer than kProgressAfterSeconds, progress of
 // long stages and warnings, one line each on stderr, prefixed by the command ("contactbench run").

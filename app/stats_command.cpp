@@ -26,7 +26,9 @@ JsonObject conventions(Window window) {
         "removed (docs/theory.md section 1)");
   c.add("alpha", "Nayak bandwidth m0 m4x / m2x^2 of the x profile; alpha_y from the y profile");
   c.add("rms_gradient", "areal sqrt(<|grad h|^2>) = sqrt(m2x + m2y)");
-  c.add("sq", "root-mean-square height about the mean, no detrending");
+  c.add("sq", "root-mean-square height about the mean, after the levelling named in 'level'");
+  c.add("level",
+        "none: heights as stored; mean: mean removed; plane: least-squares plane removed (docs/formats.md)");
   c.add("window", window == Window::hann
                       ? "hann: the surface is not periodic, so it was Hann-windowed before the transform"
                       : "none: the surface is periodic, the lattice sums are exact");
@@ -34,14 +36,19 @@ JsonObject conventions(Window window) {
 }
 
 void run_stats(const StatsOptions& o) {
-  const Surface surface = o.topography.read();
+  const TopographyReading reading = o.topography.read_with_report();
+  const Surface& surface = reading.surface;
   const FourierCoefficients coefficients = fourier_coefficients(surface, o.threads);
   const SpectralMoments m = spectral_moments(coefficients);
   const Grid& g = surface.grid();
 
   JsonObject json;
   json.add("file", o.topography.file)
-      .add("format", to_string(detect_topography_format(o.topography.file)))
+      .add("format", to_string(reading.format))
+      .add("channel", reading.channel)
+      .add("invalid_points_filled", reading.invalid_points)
+      .add("fill", to_string(reading.fill))
+      .add("level", to_string(reading.level))
       .add("nx", g.nx)
       .add("ny", g.ny)
       .add("lx", g.lx)

@@ -84,6 +84,18 @@ std::optional<FileSurfaceSpec> parse_file(const Section& s, const fs::path& fold
     }
   }
   spec.periodic = s.boolean("periodic");
+  // channel = "Height" or channel = 1; fill and level as docs/formats.md describes.
+  if (const toml::node* node = s.find("channel")) {
+    if (const auto* name = node->as_string()) {
+      spec.channel = name->get();
+    } else if (const auto* index = node->as_integer(); index && index->get() >= 0) {
+      spec.channel = std::to_string(index->get());
+    } else {
+      s.wrong_type("channel", "a channel name or an index >= 0", "a string or an integer >= 0");
+    }
+  }
+  if (const auto fill = s.choice("fill", {"none", "harmonic", "mean"})) spec.fill = *parse_fill_method(*fill);
+  if (const auto level = s.choice("level", {"none", "mean", "plane"})) spec.level = *parse_levelling(*level);
   if (file) {
     spec.path = fs::absolute(folder / *file).lexically_normal();
     std::error_code ec;
@@ -94,9 +106,11 @@ std::optional<FileSurfaceSpec> parse_file(const Section& s, const fs::path& fold
     } else {
       try {
         const TopographyFormat format = detect_topography_format(spec.path);
-        if (format == TopographyFormat::plain_matrix && !s.has("size"))
+        if (!format_carries_sizes(format) && !s.has("size"))
           s.missing("size", std::string(kSizeAccepted) + " (required: " + spec.path.filename().string() +
-                                " is a plain matrix, which carries no lateral size)");
+                                " is a " +
+                                (format == TopographyFormat::npy ? "NumPy array" : "plain matrix") +
+                                ", which carries no lateral size)");
       } catch (const Error& error) {
         s.problem("file", error.what(), "a topography file contactbench reads");
       }
@@ -113,7 +127,7 @@ std::optional<SurfaceSpec> read_surface_keys(const Section& root, const fs::path
   const toml::table* table = root.subtable("surface", true, "a table [surface] with generate or file");
   if (!table) return std::nullopt;
   const Section s(*table, "surface", problems);
-  s.reject_unknown({"generate", "file", "size", "periodic"});
+  s.reject_unknown({"generate", "file", "size", "periodic", "channel", "fill", "level"});
   const bool generated = s.has("generate"), from_file = s.has("file");
   if (generated && from_file) {
     s.problem("file", "generate and file are mutually exclusive", "generate = { ... } or file = \"...\"");
@@ -125,7 +139,7 @@ std::optional<SurfaceSpec> read_surface_keys(const Section& root, const fs::path
     return std::nullopt;
   }
   if (generated) {
-    for (std::string_view key : {"size", "periodic"})
+    for (std::string_view key : {"size", "periodic", "channel", "fill", "level"})
       if (s.has(key))
         s.problem(
             key,
@@ -172,6 +186,10 @@ void write_surface_keys(const SurfaceSpec& surface, SceneKeys& root) {
     else if (f.size_x)
       table.put("size", *f.size_x);
     if (f.periodic) table.put("periodic", *f.periodic);
+    if (f.channel) table.put("channel", *f.channel);
+    // Always written, defaults included, so that a report records how the measured heights were treated.
+    table.put("fill", std::string(to_string(f.fill)));
+    table.put("level", std::string(to_string(f.level)));
   }
 }
 
@@ -188,8 +206,15 @@ Surface make_surface(const SurfaceSpec& spec, int threads) {
     return generate_surface(grid, psd, g->seed, threads).centred();
   }
   const auto& file = std::get<FileSurfaceSpec>(spec.source);
-  return read_topography(file.path, {.lx = file.size_x, .ly = file.size_y, .periodic = file.periodic})
-      .centred();
+  TopographyReadOptions options;
+  options.lx = file.size_x;
+  options.ly = file.size_y;
+  options.periodic = file.periodic;
+  options.channel = file.channel;
+  options.fill = file.fill;
+  options.level = file.level;
+  // Levelling "plane" removes the tilt as well; the mean is removed in any case.
+  return read_topography(file.path, options).centred();
 }
 
 }  // namespace contactbench

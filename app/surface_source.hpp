@@ -6,8 +6,10 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <variant>
 
+#include "contactbench/core/formats/surface_repair.hpp"
 #include "contactbench/core/surface.hpp"
 #include "contactbench/core/types.hpp"
 
@@ -35,6 +37,10 @@ struct FileSurfaceSpec {
   std::optional<Real> size_x;    // [m], required when the file does not state its size
   std::optional<Real> size_y;    // [m]
   std::optional<bool> periodic;  // absent: the file's own (the project's format says; others are not)
+  // docs/formats.md: which channel (name or 0-based index as text), how invalid points are filled, levelling.
+  std::optional<std::string> channel;
+  FillMethod fill = FillMethod::none;
+  Levelling level = Levelling::none;
 };
 
 struct SurfaceSpec {

@@ -17,8 +17,14 @@ function(cb_public_headers target folder)
   target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${root}>
                                               $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   if(arg_INSTALL)
-    file(GLOB headers CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/*.hpp")
-    install(FILES ${headers} DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/contactbench/${folder}"
-            COMPONENT development)
+    # Subfolders (core/formats/) keep their place: contactbench/core/formats/x.hpp.
+    file(GLOB_RECURSE headers CONFIGURE_DEPENDS RELATIVE "${CMAKE_CURRENT_SOURCE_DIR}"
+         "${CMAKE_CURRENT_SOURCE_DIR}/*.hpp")
+    foreach(header IN LISTS headers)
+      get_filename_component(subfolder "${header}" DIRECTORY)
+      install(FILES "${CMAKE_CURRENT_SOURCE_DIR}/${header}"
+              DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/contactbench/${folder}/${subfolder}"
+              COMPONENT development)
+    endforeach()
   endif()
 endfunction()

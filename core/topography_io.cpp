@@ -16,6 +16,7 @@
 #include "contactbench/core/atomic_file.hpp"
 #include "contactbench/core/bounded_read.hpp"
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/formats/readers.hpp"
 
 namespace contactbench {
 
@@ -516,6 +517,24 @@ void append_row(std::string& text, const HeightMap& heights, Index row) {
 
 std::string_view to_string(TopographyFormat format) {
   switch (format) {
+    case TopographyFormat::x3p:
+      return "x3p";
+    case TopographyFormat::sdf:
+      return "sdf";
+    case TopographyFormat::npy:
+      return "npy";
+    case TopographyFormat::metropro:
+      return "metropro";
+    case TopographyFormat::nanoscope:
+      return "nanoscope";
+    case TopographyFormat::sensofar:
+      return "sensofar";
+    case TopographyFormat::digital_surf:
+      return "digital_surf";
+    case TopographyFormat::wyko:
+      return "wyko";
+    case TopographyFormat::netcdf:
+      return "netcdf";
     case TopographyFormat::project:
       return "project";
     case TopographyFormat::interferometer:
@@ -528,25 +547,211 @@ std::string_view to_string(TopographyFormat format) {
   throw Error("unknown topography format " + std::to_string(static_cast<int>(format)));
 }
 
+bool format_carries_sizes(TopographyFormat format) {
+  return format != TopographyFormat::npy && format != TopographyFormat::plain_matrix;
+}
+
+namespace {
+
+// The binary formats: how each is recognised and read (docs/formats.md).
+struct BinaryFormat {
+  TopographyFormat format;
+  std::array<std::string_view, 3> extensions;  // lower case, with the dot; "" for unused slots
+  bool (*detect)(std::string_view bytes);
+  formats::RawTopography (*read)(const fs::path& path, std::string_view bytes);
+};
+
+constexpr std::array<BinaryFormat, 9> binary_formats = {{
+    {TopographyFormat::x3p, {".x3p", "", ""}, formats::looks_like_zip, formats::read_x3p},
+    {TopographyFormat::sdf, {".sdf", "", ""}, formats::looks_like_sdf, formats::read_sdf},
+    {TopographyFormat::npy, {".npy", "", ""}, formats::looks_like_npy, formats::read_npy},
+    {TopographyFormat::metropro, {".dat", "", ""}, formats::looks_like_metropro, formats::read_metropro},
+    {TopographyFormat::nanoscope,
+     {".di", ".spm", ""},
+     formats::looks_like_nanoscope,
+     formats::read_nanoscope},
+    {TopographyFormat::digital_surf,
+     {".sur", "", ""},
+     formats::looks_like_digital_surf,
+     formats::read_digital_surf},
+    {TopographyFormat::wyko, {".opd", "", ""}, formats::looks_like_wyko, formats::read_wyko},
+    {TopographyFormat::netcdf, {".nc", "", ""}, formats::looks_like_netcdf, formats::read_netcdf},
+    // Last: .plu has no magic, only a self-consistent header.
+    {TopographyFormat::sensofar, {".plu", "", ""}, formats::looks_like_sensofar, formats::read_sensofar},
+}};
+
+std::string lower_extension(const fs::path& path) {
+  std::string extension = path.extension().string();
+  for (char& c : extension)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  return extension;
+}
+
+// The binary format of these bytes: by content first; else by an extension that names one (its reader then
+// refuses the file with what is wrong); else none (a text format).
+const BinaryFormat* binary_format_of(const fs::path& path, std::string_view bytes) {
+  for (const BinaryFormat& candidate : binary_formats)
+    if (candidate.detect(bytes)) return &candidate;
+  const std::string extension = lower_extension(path);
+  for (const BinaryFormat& candidate : binary_formats)
+    for (const std::string_view known : candidate.extensions)
+      if (!known.empty() && extension == known) return &candidate;
+  return nullptr;
+}
+
+std::string channel_list(const formats::RawTopography& raw) {
+  std::string list;
+  for (std::size_t k = 0; k < raw.channels.size(); ++k) {
+    const formats::Channel& channel = raw.channels[k];
+    if (k > 0) list += ", ";
+    list += std::to_string(k) + " '" + channel.name + "'" + (channel.is_height ? "" : " (not a height)");
+  }
+  return list;
+}
+
+std::size_t select_channel(const fs::path& path, const formats::RawTopography& raw,
+                           const std::optional<std::string>& wanted) {
+  if (!wanted) {
+    for (std::size_t k = 0; k < raw.channels.size(); ++k)
+      if (raw.channels[k].is_height) return k;
+    throw InputError(path, 0, "no height channel; the file's channels: " + channel_list(raw));
+  }
+  std::optional<std::size_t> chosen;
+  const bool digits = !wanted->empty() && std::all_of(wanted->begin(), wanted->end(),
+                                                      [](char c) { return c >= '0' && c <= '9'; });
+  if (digits && wanted->size() < 9) {
+    const std::size_t index = std::stoul(*wanted);
+    if (index < raw.channels.size()) chosen = index;
+  } else {
+    for (std::size_t k = 0; k < raw.channels.size() && !chosen; ++k)
+      if (raw.channels[k].name == *wanted) chosen = k;
+  }
+  if (!chosen)
+    throw InputError(path, 0, "unknown channel '" + *wanted + "'; the file's channels: " + channel_list(raw));
+  if (!raw.channels[*chosen].is_height)
+    throw InputError(
+        path, 0,
+        "channel '" + *wanted + "' does not hold heights; the file's channels: " + channel_list(raw));
+  return *chosen;
+}
+
+TopographyReading read_binary(const fs::path& path, std::string_view bytes, const BinaryFormat& format,
+                              const TopographyReadOptions& options) {
+  formats::RawTopography raw = format.read(path, bytes);
+  const std::size_t index = select_channel(path, raw, options.channel);
+  formats::Channel& channel = raw.channels[index];
+
+  Real lx = 0;
+  Real ly = 0;
+  if (channel.lx && channel.ly) {
+    check_lateral_size(path, 0, "lx", *channel.lx);
+    check_lateral_size(path, 0, "ly", *channel.ly);
+    check_agrees(path, 0, "lx", *channel.lx, options.lx);
+    check_agrees(path, 0, "ly", *channel.ly, options.ly);
+    lx = *channel.lx;
+    ly = *channel.ly;
+  } else {
+    if (!options.lx)
+      throw InputError(path, 0,
+                       "no lateral size: a " + std::string(to_string(format.format)) +
+                           " file carries none, so the caller must give it (--size)");
+    check_lateral_size(path, 0, "the given lx", *options.lx);
+    lx = *options.lx;
+    ly = options.ly.value_or(lx * static_cast<Real>(channel.ny) / static_cast<Real>(channel.nx));
+    check_lateral_size(path, 0, "ly", ly);
+  }
+
+  const auto invalid = static_cast<Index>(
+      std::count_if(channel.values.begin(), channel.values.end(), [](Real v) { return std::isnan(v); }));
+  if (invalid > 0 && options.fill == FillMethod::none)
+    throw InputError(path, 0,
+                     std::to_string(invalid) + " of " + std::to_string(channel.values.size()) +
+                         " points of channel '" + channel.name +
+                         "' are invalid (not measured); they are never used as heights: choose fill = "
+                         "\"harmonic\" or \"mean\" (--fill) to fill them");
+  try {
+    fill_invalid_points(channel.values, channel.nx, channel.ny, options.fill);
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& error) {
+    throw InputError(path, 0, "channel '" + channel.name + "': " + error.what());
+  }
+  for (const Real value : channel.values)
+    if (!std::isfinite(value))
+      throw InputError(path, 0,
+                       "channel '" + channel.name + "' holds a height that is not finite after scaling");
+
+  const Grid grid{channel.nx, channel.ny, lx, ly, options.periodic.value_or(raw.periodic)};
+  HeightMap heights = Eigen::Map<const HeightMap>(channel.values.data(), channel.ny, channel.nx);
+  level_heights(heights, grid, options.level);
+  std::vector<std::string> names;
+  for (const formats::Channel& c : raw.channels)
+    names.push_back(c.name);
+  return TopographyReading{Surface(grid, std::move(heights)),
+                           format.format,
+                           channel.name,
+                           std::move(names),
+                           invalid,
+                           options.fill,
+                           options.level};
+}
+
+}  // namespace
+
 TopographyFormat detect_topography_format(const std::filesystem::path& path) {
   const std::string content = read_whole_file(path);
+  if (const BinaryFormat* binary = binary_format_of(path, content)) return binary->format;
   return format_of(path, non_blank_lines(content));
 }
 
-Surface read_topography(const std::filesystem::path& path, const TopographyReadOptions& options) {
+formats::RawTopography read_topography_channels(const std::filesystem::path& path) {
   const std::string content = read_whole_file(path);
+  const BinaryFormat* binary = binary_format_of(path, content);
+  if (binary == nullptr)
+    throw InputError(path, 0, "a text topography has one channel; read it with read_topography");
+  return binary->read(path, content);
+}
+
+TopographyReading read_topography_reading(const std::filesystem::path& path,
+                                          const TopographyReadOptions& options) {
+  const std::string content = read_whole_file(path);
+  if (const BinaryFormat* binary = binary_format_of(path, content))
+    return read_binary(path, content, *binary, options);
+
   const std::vector<Line> lines = non_blank_lines(content);
-  switch (format_of(path, lines)) {
-    case TopographyFormat::project:
-      return read_project(path, lines, options);
-    case TopographyFormat::interferometer:
-      return read_interferometer(path, lines, options);
-    case TopographyFormat::gwyddion:
-      return read_gwyddion(path, lines, options);
-    case TopographyFormat::plain_matrix:
-      return read_plain_matrix(path, lines, options);
+  const TopographyFormat format = format_of(path, lines);
+  // Text formats hold one channel, called "height" (index 0).
+  if (options.channel && *options.channel != "height" && *options.channel != "0")
+    throw InputError(path, 0, "unknown channel '" + *options.channel + "'; the file's channels: 0 'height'");
+  Surface surface = [&] {
+    switch (format) {
+      case TopographyFormat::project:
+        return read_project(path, lines, options);
+      case TopographyFormat::interferometer:
+        return read_interferometer(path, lines, options);
+      case TopographyFormat::gwyddion:
+        return read_gwyddion(path, lines, options);
+      default:
+        return read_plain_matrix(path, lines, options);
+    }
+  }();
+  if (options.level != Levelling::none) {
+    HeightMap heights = surface.heights();
+    level_heights(heights, surface.grid(), options.level);
+    surface = Surface(surface.grid(), std::move(heights));
   }
-  throw Error("unknown topography format");
+  return TopographyReading{std::move(surface), format, "height", {"height"}, 0, options.fill, options.level};
+}
+
+Surface read_topography(const std::filesystem::path& path, const TopographyReadOptions& options) {
+  return read_topography_reading(path, options).surface;
+}
+
+void write_topography(const std::filesystem::path& path, const Surface& surface) {
+  const std::string extension = lower_extension(path);
+  if (extension == ".x3p") return formats::write_x3p(path, surface);
+  if (extension == ".npy") return formats::write_npy(path, surface);
+  write_surface(path, surface);
 }
 
 void write_surface(const std::filesystem::path& path, const Surface& surface) {

@@ -3,14 +3,29 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
+#include "contactbench/core/formats/raw_topography.hpp"
+#include "contactbench/core/formats/surface_repair.hpp"
 #include "contactbench/core/surface.hpp"
 
 namespace contactbench {
 
-// The file formats this project reads; detected from the first non-blank line.
+// The file formats this project reads (docs/formats.md). Detected by content: a binary format by its magic
+// bytes (or, for .plu which has none, by its header's consistency); otherwise a text format by its first
+// non-blank line. A file whose extension names a binary format but whose content does not match is refused.
 enum class TopographyFormat {
+  x3p,             // ISO 25178-72 XML surface (zip)
+  sdf,             // ISO 25178-71, ASCII or binary
+  npy,             // NumPy array; sizes from the caller, like a plain matrix
+  metropro,        // Zygo MetroPro .dat
+  nanoscope,       // Bruker / Digital Instruments Nanoscope .di
+  sensofar,        // Sensofar .plu
+  digital_surf,    // Digital Surf .sur
+  wyko,            // Wyko .opd
+  netcdf,          // NetCDF .nc as ContactMechanics and Tamaas write it
   project,         // "# contactbench surface v1" header, written by write_surface, lossless
   interferometer,  // "h=NY w=NX", "pixel size=... UNIT", "data unit=...", "height conversion factor (->
                    // m)=..."
@@ -19,6 +34,8 @@ enum class TopographyFormat {
 };
 
 std::string_view to_string(TopographyFormat format);
+// Whether files of this format carry their lateral sizes (npy and plain matrices do not: --size is needed).
+bool format_carries_sizes(TopographyFormat format);
 
 struct TopographyReadOptions {
   // Lateral sizes [m]. Required for a plain matrix (ly defaults to lx * ny / nx: square pixels).
@@ -28,9 +45,35 @@ struct TopographyReadOptions {
   // Periodicity. Default: false for instrument exports and plain matrices (measured data do not repeat),
   // the stored flag for the project's format.
   std::optional<bool> periodic;
+  // Which channel of a multi-channel file: its name or its 0-based index written as digits. Default: the
+  // first height channel. An unknown channel is an error listing the file's channels.
+  std::optional<std::string> channel;
+  // Invalid points (masks, marker values, NaN): refused by default with their count; or filled.
+  FillMethod fill = FillMethod::none;
+  // Levelling after reading. Default none: the heights exactly as the file stores them.
+  Levelling level = Levelling::none;
 };
 
-// Detects the format and reads the file. Heights come back in metres, exactly as stored (no mean removed).
+// A surface with what was done to get it, for reports.
+struct TopographyReading {
+  Surface surface;
+  TopographyFormat format;
+  std::string channel;                // the name of the channel read
+  std::vector<std::string> channels;  // every channel of the file, in order
+  Index invalid_points = 0;           // how many were filled
+  FillMethod fill = FillMethod::none;
+  Levelling level = Levelling::none;
+};
+
+TopographyReading read_topography_reading(const std::filesystem::path& path,
+                                          const TopographyReadOptions& options = {});
+
+// Every channel of a binary format as its reader returns it (NaN at invalid points), for inspection and
+// tests; text formats are refused (they hold one channel: use read_topography).
+formats::RawTopography read_topography_channels(const std::filesystem::path& path);
+
+// Detects the format and reads the file. Heights come back in metres, exactly as stored unless options.fill
+// or options.level say otherwise.
 // Any defect throws InputError naming the file and the line: an empty file, a ragged row, a non-numeric
 // token, NaN or Inf, a missing or non-positive size, an unknown unit, a header that disagrees with the data.
 Surface read_topography(const std::filesystem::path& path, const TopographyReadOptions& options = {});
@@ -41,5 +84,9 @@ TopographyFormat detect_topography_format(const std::filesystem::path& path);
 // shortest decimal that reads back to the same double, so read_topography returns the surface bit for bit.
 // Written to a temporary file and renamed.
 void write_surface(const std::filesystem::path& path, const Surface& surface);
+
+// Writes by the path's extension: .x3p (ISO 25178-72, float64), .npy (float64) or anything else the project's
+// format. Each reads back bit for bit (the sizes of .x3p go through the increment lx / nx and back).
+void write_topography(const std::filesystem::path& path, const Surface& surface);
 
 }  // namespace contactbench

@@ -11,6 +11,7 @@ packages=(
   libbenchmark-dev                # benchmarks
   libcli11-dev                    # command line
   libtomlplusplus-dev             # scene files
+  libzip-dev libpugixml-dev       # .x3p topographies (zip archive, XML)
   clang-format                    # the formatting check in the test command
   gnuplot-nox                     # load-area and accuracy-vs-time plots
   python3                         # renders benchmark JSON as Markdown tables (scripts/render_bench.py)

@@ -689,6 +689,31 @@ TEST_P(InvalidScene, IsReportedWithKeyPathAndReason) {
   expect_problem(c.text, c.path, c.reason, c.accepted);
 }
 
+// docs/formats.md: an instrument file under [surface] with channel, fill and level; written back and re-read.
+TEST(Scene, InstrumentFileTakesChannelFillAndLevel) {
+  const fs::path formats_folder{CB_DATA_DIR "/formats"};
+  Blocks b;
+  b.surface = "[surface]\nfile = \"di-1.di\"\nchannel = 1\nfill = \"harmonic\"\nlevel = \"plane\"\n";
+  const Scene scene = parse_scene(b.text(), formats_folder / "scene.toml");
+  const auto& f = std::get<FileSurfaceSpec>(scene.surface.source);
+  EXPECT_EQ(f.channel, "1");
+  EXPECT_EQ(f.fill, FillMethod::harmonic);
+  EXPECT_EQ(f.level, Levelling::plane);
+  const Scene again = parse_scene(to_toml(scene), "x.toml");
+  const auto& g = std::get<FileSurfaceSpec>(again.surface.source);
+  EXPECT_EQ(g.channel, "1");
+  EXPECT_EQ(g.fill, FillMethod::harmonic);
+  EXPECT_EQ(g.level, Levelling::plane);
+
+  b.surface = "[surface]\nfile = \"di-1.di\"\nfill = \"zero\"\nlevel = \"tilt\"\n";
+  expect_problem(b.text(), "surface.fill", "unknown choice \"zero\"", "\"harmonic\"",
+                 formats_folder / "s.toml");
+  expect_problem(b.text(), "surface.level", "unknown choice \"tilt\"", "\"plane\"",
+                 formats_folder / "s.toml");
+  b.surface = "[surface]\nfile = \"example-2d.npy\"\n";
+  expect_problem(b.text(), "surface.size", "missing required key", "NumPy array", formats_folder / "s.toml");
+}
+
 INSTANTIATE_TEST_SUITE_P(Scene, InvalidScene, ::testing::ValuesIn(invalid_cases()),
                          [](const auto& info) { return std::string(info.param.test_name); });
 

@@ -1,0 +1,137 @@
+#include "contactbench/core/formats/surface_repair.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <Eigen/Sparse>
+
+#include "contactbench/core/error.hpp"
+
+namespace contactbench {
+
+std::string_view to_string(FillMethod method) {
+  switch (method) {
+    case FillMethod::none:
+      return "none";
+    case FillMethod::harmonic:
+      return "harmonic";
+    case FillMethod::mean:
+      return "mean";
+  }
+  return "unknown";
+}
+
+std::string_view to_string(Levelling levelling) {
+  switch (levelling) {
+    case Levelling::none:
+      return "none";
+    case Levelling::mean:
+      return "mean";
+    case Levelling::plane:
+      return "plane";
+  }
+  return "unknown";
+}
+
+std::optional<FillMethod> parse_fill_method(std::string_view text) {
+  if (text == "none") return FillMethod::none;
+  if (text == "harmonic") return FillMethod::harmonic;
+  if (text == "mean") return FillMethod::mean;
+  return std::nullopt;
+}
+
+std::optional<Levelling> parse_levelling(std::string_view text) {
+  if (text == "none") return Levelling::none;
+  if (text == "mean") return Levelling::mean;
+  if (text == "plane") return Levelling::plane;
+  return std::nullopt;
+}
+
+void fill_invalid_points(std::vector<Real>& values, Index nx, Index ny, FillMethod method) {
+  std::vector<Index> unknown_of(values.size(), -1);
+  Index unknowns = 0;
+  Real valid_sum = 0;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (std::isnan(values[k])) {
+      unknown_of[k] = unknowns++;
+    } else {
+      valid_sum += values[k];
+    }
+  }
+  if (unknowns == 0) return;
+  if (method == FillMethod::none)
+    throw Error(std::to_string(unknowns) + " invalid points and no fill method");
+  if (unknowns == static_cast<Index>(values.size()))
+    throw Error("every point is invalid: there is nothing to fill from");
+  if (method == FillMethod::mean) {
+    const Real mean = valid_sum / static_cast<Real>(values.size() - static_cast<std::size_t>(unknowns));
+    for (Real& value : values)
+      if (std::isnan(value)) value = mean;
+    return;
+  }
+  // Harmonic: the discrete Laplace equation on the invalid points with the valid neighbours as boundary
+  // values, sum over the four (in-grid) neighbours q of (h_p - h_q) = 0. Every connected patch of invalid
+  // points touches a valid point (not all points are invalid), so the matrix is symmetric positive definite.
+  std::vector<Eigen::Triplet<Real>> entries;
+  Eigen::VectorXd right(unknowns);
+  right.setZero();
+  for (Index y = 0; y < ny; ++y)
+    for (Index x = 0; x < nx; ++x) {
+      const Index row = unknown_of[static_cast<std::size_t>(y * nx + x)];
+      if (row < 0) continue;
+      Real degree = 0;
+      const Index neighbours[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
+      for (const auto& [qx, qy] : neighbours) {
+        if (qx < 0 || qx >= nx || qy < 0 || qy >= ny) continue;
+        degree += 1;
+        const std::size_t q = static_cast<std::size_t>(qy * nx + qx);
+        if (unknown_of[q] >= 0) {
+          entries.emplace_back(row, unknown_of[q], -1.0);
+        } else {
+          right(row) += values[q];
+        }
+      }
+      entries.emplace_back(row, row, degree);
+    }
+  Eigen::SparseMatrix<Real> laplacian(unknowns, unknowns);
+  laplacian.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<Real>> solver(laplacian);
+  if (solver.info() != Eigen::Success)
+    throw Error("harmonic fill: the Laplace system could not be factorised");
+  const Eigen::VectorXd filled = solver.solve(right);
+  for (std::size_t k = 0; k < values.size(); ++k)
+    if (unknown_of[k] >= 0) values[k] = filled(unknown_of[k]);
+}
+
+void level_heights(HeightMap& heights, const Grid& grid, Levelling levelling) {
+  if (levelling == Levelling::none) return;
+  const Real mean = heights.mean();
+  if (levelling == Levelling::mean) {
+    heights -= mean;
+    return;
+  }
+  // On a full grid the centred coordinates are orthogonal to each other and to the constant, so the normal
+  // equations of the least-squares plane decouple: slope_x = sum(xc h) / sum(xc^2), and the same along y.
+  const Index nx = grid.nx;
+  const Index ny = grid.ny;
+  const Real x_centre = (static_cast<Real>(nx) - 1) / 2;
+  const Real y_centre = (static_cast<Real>(ny) - 1) / 2;
+  Real xh = 0, yh = 0, xx = 0, yy = 0;
+  for (Index y = 0; y < ny; ++y)
+    for (Index x = 0; x < nx; ++x) {
+      const Real xc = static_cast<Real>(x) - x_centre;
+      const Real yc = static_cast<Real>(y) - y_centre;
+      xh += xc * heights(y, x);
+      yh += yc * heights(y, x);
+      xx += xc * xc;
+      yy += yc * yc;
+    }
+  const Real slope_x = xx > 0 ? xh / xx : 0;  // per grid step
+  const Real slope_y = yy > 0 ? yh / yy : 0;
+  for (Index y = 0; y < ny; ++y)
+    for (Index x = 0; x < nx; ++x)
+      heights(y, x) -=
+          mean + slope_x * (static_cast<Real>(x) - x_centre) + slope_y * (static_cast<Real>(y) - y_centre);
+}
+
+}  // namespace contactbench

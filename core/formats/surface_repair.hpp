@@ -1,0 +1,41 @@
+// What a measured topography needs before it is a surface to compute on (docs/formats.md "invalid points"
+// and "levelling"): its unmeasured points filled, its tilt removed.
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "contactbench/core/grid.hpp"
+#include "contactbench/core/types.hpp"
+
+namespace contactbench {
+
+// How invalid (unmeasured) points become heights. none: refuse a file that has any.
+enum class FillMethod {
+  none,
+  harmonic,  // Laplace interpolation: each filled height is the mean of its four neighbours, valid ones fixed
+  mean,      // the mean of the valid heights
+};
+
+// What is subtracted from the heights after reading. none: the heights as stored.
+enum class Levelling {
+  none,
+  mean,   // the mean height
+  plane,  // the least-squares plane a + b x + c y over all points
+};
+
+std::string_view to_string(FillMethod method);
+std::string_view to_string(Levelling levelling);
+// Parse "none" | "harmonic" | "mean" (and "none" | "mean" | "plane"); nullopt for anything else.
+std::optional<FillMethod> parse_fill_method(std::string_view text);
+std::optional<Levelling> parse_levelling(std::string_view text);
+
+// Replaces every NaN of `values` (ny x nx, row-major) by the method's height. Throws Error when no value is
+// valid (nothing to fill from) or when `method` is none and there is a NaN.
+void fill_invalid_points(std::vector<Real>& values, Index nx, Index ny, FillMethod method);
+
+// Subtracts the mean or the least-squares plane in place (heights(iy, ix) at x = ix dx, y = iy dy).
+void level_heights(HeightMap& heights, const Grid& grid, Levelling levelling);
+
+}  // namespace contactbench
