@@ -1,16 +1,36 @@
 // The boundary-element ground truth: frictionless normal contact of a rough rigid surface and an elastic
 // half-space (equivalently a rigid flat on a rough elastic body), solved for a prescribed mean pressure by
-// the constrained conjugate gradient of Polonsky & Keer (Wear 231, 206-219, 1999; docs/theory.md section 6).
+// the constrained conjugate gradient of Polonsky & Keer (Wear 231, 206-219, 1999; docs/theory.md section 6),
+// or its Fourier-preconditioned variant (below; docs/solvers.md).
 //
 // Unknowns: the pressure p >= 0 on the grid and the flat's height d above the mean plane. The gap is
 // g = d - h + u(p) >= 0 with u = G p the elastic displacement (bem/half_space.hpp); where p > 0 the gap is 0,
 // and mean(p) = the prescribed mean pressure. Each iteration costs two applications of G (two FFT pairs),
 // with all of its element-wise work fused into them (bem/convolution.hpp): about two FFT pairs in all.
 //
-// Convergence criterion (Polonsky & Keer's): the relative change of the pressure in one iteration,
-//   sum |p_new - p_old| / sum p_new < tolerance,
-// checked together with the complementarity residual reported as `residual`: the largest |g| on the contact
-// set relative to the surface's height range. A solve that reaches the iteration cap is marked
+// Two iterations solve this problem (options.solver, bem/solver_registry.hpp; docs/solvers.md):
+// - polonsky_keer: PK's constrained CG, the search direction built from the gap on the contact set;
+// - preconditioned_cg: the same loop with the gap residual (its mean on the contact set removed) filtered by
+//   (E*/2)|q| in Fourier space (bem/fourier_preconditioner.hpp), restricted to the contact set again with its
+//   mean there removed, before it becomes a direction; conjugation restarts when nodes enter the set, and
+//   entering nodes take the overlap times the plain step <t,t>/<t,Gt> (PK's entry step has the wrong
+//   dimension once t is a pressure). One more FFT pair an iteration (of the unpadded grid), far fewer
+//   iterations, and a count that grows much more slowly with the grid (results/bench/bem_solvers.md).
+//
+// Stopping criteria, the same tolerance for both:
+// - the relative change of the pressure in one iteration (Polonsky & Keer's),
+//     sum |p_new - p_old| / sum p_new < tolerance;
+// - preconditioned_cg also requires that no node entered or left the contact set in that iteration: the
+//   change is then a CG step on a settled set, which is why it cannot stall on a wrong answer (the failure
+//   of preconditioning the whole gap: a change of 1e-16 with the pressure 100 % off). Its direction is a
+//   descent direction of the constrained problem whenever the gap on the contact set is not uniform
+//   (<r, z> > 0 for the positive filter), so a vanishing step means a vanishing residual.
+// The complementarity residual is reported as `residual`: the largest |g| on the contact set relative to
+// the surface's height range. What the tolerance buys (measured by bench/bench_bem_solvers.cpp against a
+// solve at 1e-12 on surface A and an H = 0.8 surface, 256^2 to 2048^2, 1 % to 30 % contact): the contact
+// area to 1e-4 relative and the pressure to 1e-4 relative L2 need a tolerance of 1e-5 to 1e-7 with
+// polonsky_keer and 1e-3 to 1e-5 with preconditioned_cg; the default 1e-10 is far tighter than that for
+// both. A solve that reaches the iteration cap is marked
 // converged = false and says so on stderr; it is never passed off as converged.
 //
 // Hardness (optional): a perfectly plastic cap, p <= H. Nodes at p = H are plastic: their gap may be negative
@@ -42,6 +62,7 @@
 #include <optional>
 
 #include "contactbench/bem/half_space.hpp"
+#include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/surface.hpp"
 
 namespace contactbench {
@@ -60,6 +81,9 @@ struct PolonskyKeerOptions {
   // to float's accuracy (e.g. the area fraction to 1e-3 relative, the mean gap to 1e-4;
   // tests/test_bem_effects.cpp).
   bool single_precision = false;
+  // Which iteration (bem/solver_registry.hpp, docs/solvers.md): Polonsky & Keer's, or the same with the
+  // Fourier-preconditioned direction. Same problem, same options, same meaning of converged.
+  SolverKind solver = kDefaultSolver;
 };
 
 // The smallest tolerance single precision accepts: ten times float's epsilon (1.2e-7), with room for the
