@@ -29,6 +29,7 @@ struct BemOptions {
   Index max_iterations = 20000;
   std::optional<Real> hardness;
   bool single_precision = false;
+  std::string solver{solver_name(kDefaultSolver)};
   std::string fields;  // prefix of the per-load pressure and gap files; empty: none
   int connectivity = 4;
   std::string out;
@@ -51,8 +52,8 @@ struct Row {
 void write_csv(std::ostream& out, const std::vector<Row>& rows, const BemOptions& o, const Surface& surface,
                Real tolerance) {
   out << "# contactbench bem of " << o.topography.file << ": "
-      << (surface.grid().periodic ? "periodic" : "non-periodic")
-      << " half-space, E* = " << json_number(o.modulus) << " Pa, tolerance " << json_number(tolerance)
+      << (surface.grid().periodic ? "periodic" : "non-periodic") << " half-space, solver " << o.solver
+      << ", E* = " << json_number(o.modulus) << " Pa, tolerance " << json_number(tolerance)
       << " on the relative pressure change, " << (o.single_precision ? "single" : "double") << " precision, "
       << (o.hardness ? "hardness " + json_number(*o.hardness) + " Pa (perfectly plastic cap)" : "no hardness")
       << ", spots by " << o.connectivity << "-connectivity; load = P/(E* A0)";
@@ -85,6 +86,7 @@ void run_bem(BemOptions o) {
     throw Error("--modulus: E* must be finite and > 0 Pa, got " + json_number(o.modulus));
   if (o.hardness && !(std::isfinite(*o.hardness) && *o.hardness > 0))
     throw Error("--hardness: H must be finite and > 0 Pa, got " + json_number(*o.hardness));
+  const SolverKind solver = solver_kind(o.solver, "--solver");
   const Real tolerance =
       o.tolerance.value_or(o.single_precision ? kSinglePrecisionTolerance : kDefaultTolerance);
   if (!(tolerance > 0)) throw Error("--tolerance: must be > 0, got " + json_number(tolerance));
@@ -103,19 +105,20 @@ void run_bem(BemOptions o) {
   Surface surface = o.topography.read();
   if (o.non_periodic) surface = surface.with_periodic(false);
   const Grid& grid = surface.grid();
-  PolonskyKeer solver(surface, o.modulus,
-                      {.tolerance = tolerance,
-                       .max_iterations = o.max_iterations,
-                       .hardness = o.hardness,
-                       .single_precision = o.single_precision},
-                      o.threads);
+  PolonskyKeer bem(surface, o.modulus,
+                   {.tolerance = tolerance,
+                    .max_iterations = o.max_iterations,
+                    .hardness = o.hardness,
+                    .single_precision = o.single_precision,
+                    .solver = solver},
+                   o.threads);
   Labeller labeller(
       Topology::for_surface(o.connectivity == 8 ? Connectivity::eight : Connectivity::four, grid.periodic),
       o.threads);
   const bool report_progress = grid.points() >= 512 * 512;
   std::vector<Row> rows;
   for (std::size_t k = 0; k < o.loads.size(); ++k) {
-    const ContactSolution& solution = solver.solve(o.loads[k] * o.modulus);
+    const ContactSolution& solution = bem.solve(o.loads[k] * o.modulus);
     rows.push_back({o.loads[k], contact_statistics(solution, labeller), solution});
     if (!o.fields.empty()) {  // as each load is solved, so that a long run leaves what it has done
       write_surface(field_path(o.fields, k + 1, "pressure"), Surface(grid, solution.pressure));
@@ -155,6 +158,13 @@ void add_bem_command(CLI::App& parent) {
   command->add_flag("--float", options->single_precision,
                     "iterate in single precision: half the memory, faster on large grids; results agree with "
                     "double to float's accuracy (area to 1e-3, mean gap to 1e-4)");
+  std::string known;
+  for (const std::string& name : solver_names())
+    known += (known.empty() ? "" : ", ") + name;
+  command->add_option("--solver", options->solver,
+                      "the BEM iteration: " + known + " (default " +
+                          std::string(solver_name(kDefaultSolver)) +
+                          "; docs/solvers.md); recorded in the CSV's header");
   command->add_option(
       "--fields", options->fields,
       "PREFIX: write the pressure [Pa] and gap [m] of the k-th load solved (k = 1, 2, ... in "

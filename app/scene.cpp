@@ -522,7 +522,7 @@ std::optional<Index> surface_points(const std::optional<SurfaceSpec>& surface) {
 
 BemMethodSpec parse_bem(const Section& s, std::optional<Index> points) {
   s.reject_unknown(
-      {"method", "refine", "tolerance", "max_iterations", "periodic", "hardness", "connectivity"});
+      {"method", "refine", "tolerance", "max_iterations", "periodic", "hardness", "connectivity", "solver"});
   BemMethodSpec spec;
   const std::int64_t low = points.value_or(2);
   const auto refine =
@@ -540,6 +540,16 @@ BemMethodSpec parse_bem(const Section& s, std::optional<Index> points) {
   spec.periodic = s.boolean("periodic");
   spec.hardness = s.number("hardness", false, positive("[Pa]"));
   spec.connectivity = parse_connectivity(s).value_or(spec.connectivity);
+  std::string known;
+  for (const std::string& name : solver_names())
+    known += (known.empty() ? "\"" : ", \"") + name + "\"";
+  if (const auto name = s.string("solver", false, "one of " + known)) {
+    const auto& names = solver_names();
+    if (std::find(names.begin(), names.end(), *name) != names.end())
+      spec.solver = solver_kind(*name);
+    else
+      s.problem("solver", "unknown BEM solver \"" + *name + "\"", "one of " + known);
+  }
   return spec;
 }
 
@@ -836,6 +846,7 @@ Table method_table(const MethodSpec& method) {
     if (bem->periodic) put(table, "periodic", {*bem->periodic});
     if (bem->hardness) put(table, "hardness", {*bem->hardness});
     put(table, "connectivity", {std::int64_t{bem->connectivity}});
+    put(table, "solver", {std::string(solver_name(bem->solver))});
   } else if (const auto* plateau = std::get_if<PlateauMethodSpec>(&method.options)) {
     put(table, "connectivity", {std::int64_t{plateau->connectivity}});
     switch (plateau->levels.kind) {

@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/sweep.hpp"
 #include "contactbench/core/types.hpp"
@@ -66,9 +67,10 @@ struct BemMethodSpec {
   Index refine = 0;       // points a side of the surface the BEM solves on (Fourier refinement); 0 = as given
   Real tolerance = 1e-8;  // relative change of the pressure (bem/polonsky_keer.hpp)
   Index max_iterations = 20000;
-  std::optional<bool> periodic;  // default: the surface's own periodicity
-  std::optional<Real> hardness;  // [Pa]: perfectly plastic pressure cap; absent = purely elastic
-  int connectivity = 4;          // for counting contact spots
+  std::optional<bool> periodic;        // default: the surface's own periodicity
+  std::optional<Real> hardness;        // [Pa]: perfectly plastic pressure cap; absent = purely elastic
+  int connectivity = 4;                // for counting contact spots
+  SolverKind solver = kDefaultSolver;  // solver = "polonsky_keer" | "preconditioned_cg" (docs/solvers.md)
 };
 
 // [methods.<label>] with method = "plateau" (docs/theory.md section 4).

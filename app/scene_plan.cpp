@@ -29,7 +29,7 @@ bool same(const SweepStage& a, const SweepStage& b) {
 
 bool same(const BemStage& a, const BemStage& b) {
   return a.refine == b.refine && a.periodic == b.periodic && a.tolerance == b.tolerance &&
-         a.max_iterations == b.max_iterations && a.hardness == b.hardness;
+         a.max_iterations == b.max_iterations && a.hardness == b.hardness && a.solver == b.solver;
 }
 
 template <class Stage>
@@ -51,7 +51,8 @@ std::string BemStage::name() const {
   std::ostringstream text;
   text << "bem (";
   if (refine > 0) text << "refined to " << refine << " x " << refine << ", ";
-  text << (periodic ? "periodic" : "non-periodic") << ", tolerance " << tolerance;
+  text << solver_name(solver) << ", " << (periodic ? "periodic" : "non-periodic") << ", tolerance "
+       << tolerance;
   if (hardness) text << ", hardness " << *hardness << " Pa";
   text << ")";
   return text.str();
@@ -85,7 +86,8 @@ ScenePlan plan_scene(const Scene& scene) {
                                            .periodic = bem->periodic.value_or(plan.surface_periodic),
                                            .tolerance = bem->tolerance,
                                            .max_iterations = bem->max_iterations,
-                                           .hardness = bem->hardness});
+                                           .hardness = bem->hardness,
+                                           .solver = bem->solver});
     }
     plan.stage_of_method.push_back(stage);
   }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "contactbench/app/scene.hpp"
+#include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/topology.hpp"
 
 namespace contactbench {
@@ -28,6 +29,7 @@ struct BemStage {
   Real tolerance = 0;
   Index max_iterations = 0;
   std::optional<Real> hardness;
+  SolverKind solver = kDefaultSolver;
   std::string name() const;  // e.g. "bem (512 x 512, periodic, tolerance 1e-08)"
 };
 

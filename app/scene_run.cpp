@@ -93,6 +93,7 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, const S
     solver_options.tolerance = stage.tolerance;
     solver_options.max_iterations = stage.max_iterations;
     solver_options.hardness = stage.hardness;  // absent: purely elastic, no capped code runs
+    solver_options.solver = stage.solver;
     PolonskyKeer solver(solved, scene.material.estar, solver_options, options.threads);
     std::map<int, Labeller> labellers;
     for (const int c : connectivities)

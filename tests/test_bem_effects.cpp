@@ -459,6 +459,22 @@ TEST_F(BemCommand, WithoutHardnessNoPlasticColumn) {
   EXPECT_EQ(table[0].size(), 11u);
 }
 
+TEST_F(BemCommand, RecordsTheSolverAndRefusesAnUnknownOne) {
+  for (const std::string& name : solver_names()) {
+    const auto csv = folder_ / ("bem_" + name + ".csv");
+    ASSERT_EQ(bem("--loads 0.002 --solver " + name + " --out " + csv.string()).first, 0);
+    std::ifstream in(csv);
+    std::string comment;
+    std::getline(in, comment);
+    EXPECT_NE(comment.find("solver " + name + ","), std::string::npos) << comment;
+  }
+  const auto [status, err] = bem("--loads 0.002 --solver multigrid");
+  EXPECT_NE(status, 0);
+  EXPECT_NE(err.find("--solver"), std::string::npos) << err;
+  for (const std::string& name : solver_names())
+    EXPECT_NE(err.find(name), std::string::npos) << err;
+}
+
 TEST_F(BemCommand, RefusesWhatCannotBeSolved) {
   // Float cannot reach 1e-8; a load at the hardness is full plastic contact; H must be positive.
   const auto [float_status, float_err] = bem("--loads 0.002 --float --tolerance 1e-8");

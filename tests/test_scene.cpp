@@ -60,6 +60,7 @@ max_iterations = 5000
 periodic = true
 hardness = 5e9
 connectivity = 8
+solver = "polonsky_keer"
 
 [methods.plateau_4]
 method = "plateau"
@@ -120,6 +121,7 @@ void expect_same(const Scene& a, const Scene& b) {
       EXPECT_EQ(ba->periodic, bb.periodic);
       EXPECT_EQ(ba->hardness, bb.hardness);
       EXPECT_EQ(ba->connectivity, bb.connectivity);
+      EXPECT_EQ(ba->solver, bb.solver);
     } else if (const auto* pa = std::get_if<PlateauMethodSpec>(&ma.options)) {
       const auto& pb = std::get<PlateauMethodSpec>(mb.options);
       EXPECT_EQ(pa->connectivity, pb.connectivity);
@@ -296,6 +298,7 @@ TEST(Scene, FullSceneRoundTrips) {
   EXPECT_EQ(bem.periodic, true);
   EXPECT_EQ(bem.hardness, 5e9);
   EXPECT_EQ(bem.connectivity, 8);
+  EXPECT_EQ(bem.solver, SolverKind::polonsky_keer);
   const auto& paper = std::get<PlateauMethodSpec>(first.method("plateau_4").options);
   EXPECT_EQ(paper.levels.kind, SweepLevels::Kind::paper);
   EXPECT_EQ(paper.levels.count, 500);
@@ -329,6 +332,7 @@ TEST(Scene, DefaultsAreFilledIn) {
   EXPECT_FALSE(bem.periodic.has_value());
   EXPECT_FALSE(bem.hardness.has_value());
   EXPECT_EQ(bem.connectivity, 4);
+  EXPECT_EQ(bem.solver, kDefaultSolver);
   const auto& plateau = std::get<PlateauMethodSpec>(scene.method("sweep").options);
   EXPECT_EQ(scene.method("sweep").kind, MethodKind::plateau);
   EXPECT_EQ(plateau.connectivity, 4);
@@ -635,6 +639,9 @@ std::vector<InvalidCase> invalid_cases() {
       {"ToleranceOne", bem("tolerance = 1"), "methods.bem.tolerance", "out of range", "(0, 1)"},
       {"MaxIterationsZero", bem("max_iterations = 0"), "methods.bem.max_iterations", "out of range", "[1, "},
       {"HardnessZero", bem("hardness = 0"), "methods.bem.hardness", "out of range", "> 0"},
+      {"BemUnknownSolver", bem("solver = \"multigrid\""), "methods.bem.solver",
+       "unknown BEM solver \"multigrid\"", "\"polonsky_keer\", \"preconditioned_cg\""},
+      {"BemSolverNotAString", bem("solver = 1"), "methods.bem.solver", "wrong type", "\"polonsky_keer\""},
       {"BemConnectivitySix", bem("connectivity = 6"), "methods.bem.connectivity", "out of range: got 6",
        "4, 8"},
       {"BemRefineBelowSurface", bem("refine = 32"), "methods.bem.refine", "out of range", "64 points a side"},
