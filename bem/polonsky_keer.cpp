@@ -53,7 +53,10 @@ class PolonskyKeer::Engine {
   virtual ~Engine() = default;
   virtual void forget() = 0;
   // Load control: mean(p) = mean_pressure, the flat's height found.
-  virtual Outcome solve_load(double mean_pressure, double tolerance, Index max_iterations) = 0;
+  // extrapolate: start from the linear extrapolation of the last two load-controlled solutions (when there
+  // are two), else from the last one scaled to the new load.
+  virtual Outcome solve_load(double mean_pressure, double tolerance, Index max_iterations,
+                             bool extrapolate) = 0;
   // Separation control: the flat at `separation`, the load found; pressures capped at `hardness` (may be
   // infinite).
   virtual Outcome solve_separation(double separation, double hardness, double tolerance,
@@ -109,11 +112,32 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     height_range_ = h.maxCoeff() - h.minCoeff();
   }
 
-  void forget() override { warm_ = false; }
+  void forget() override {
+    warm_ = false;
+    loads_solved_ = 0;
+  }
 
-  Outcome solve_load(double mean_pressure, double tolerance, Index max_iterations) override {
+  Outcome solve_load(double mean_pressure, double tolerance, Index max_iterations,
+                     bool extrapolate) override {
     const double total = mean_pressure * static_cast<double>(n_);
-    if (warm_) {  // the previous pressure scaled to the new load
+    const bool two_behind = extrapolate && warm_ && loads_solved_ >= 2 && last_load_ != previous_load_;
+    if (extrapolate && warm_ && loads_solved_ >= 1) {
+      // p = p_last + w (p_last - p_before), w = (P - P_last)/(P_last - P_before): the pressure field's
+      // tangent along the load path (negative values clipped: out of contact); the last solution is kept
+      // for the next extrapolation.
+      if (previous_.empty()) previous_.resize(static_cast<std::size_t>(n_));
+      const double w = two_behind ? (mean_pressure - last_load_) / (last_load_ - previous_load_) : 0.0;
+      const double s = s_[cur_];
+      std::vector<T>& q = q_[cur_];
+      for (std::size_t k = 0; k < q.size(); ++k) {
+        const double p = s * static_cast<double>(q[k]);
+        const double guess = p + w * (p - static_cast<double>(previous_[k]));
+        previous_[k] = static_cast<T>(p);
+        q[k] = static_cast<T>(std::max(guess, 0.0));
+      }
+      s_[cur_] = 1;
+    }
+    if (warm_) {  // the previous pressure (or its extrapolation) scaled to the new load
       s_[cur_] = total / q_sum(q_[cur_]);
     } else {  // the uniform pressure
       std::fill(q_[cur_].begin(), q_[cur_].end(), T(1));
@@ -122,11 +146,15 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     hardness_ = std::numeric_limits<double>::infinity();
     const Outcome outcome = iterate<true, false>(total, tolerance, max_iterations);
     warm_ = true;
+    previous_load_ = last_load_;
+    last_load_ = mean_pressure;
+    ++loads_solved_;
     return outcome;
   }
 
   Outcome solve_separation(double separation, double hardness, double tolerance,
                            Index max_iterations) override {
+    loads_solved_ = 0;
     separation_ = separation;
     hardness_ = hardness;
     if (!warm_) {
@@ -690,6 +718,11 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
   double separation_ = 0, gap_offset_ = 0, last_sum_ = 0;
   double hardness_ = std::numeric_limits<double>::infinity();
   bool warm_ = false;
+  // For extrapolated starts: the loads of the last two load-controlled solves and the pressure of the one
+  // before the last (the last is q_[cur_]); a solve under separation control ends the series.
+  std::vector<T> previous_;
+  double last_load_ = 0, previous_load_ = 0;
+  Index loads_solved_ = 0;
 };
 
 PolonskyKeer::PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOptions options, int threads)
@@ -748,7 +781,8 @@ const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
     return solution_;
   }
   const Engine::Outcome outcome =
-      engine_->solve_load(mean_pressure, options_.tolerance, options_.max_iterations);
+      engine_->solve_load(mean_pressure, options_.tolerance, options_.max_iterations,
+                          options_.load_path == LoadPathStart::extrapolated);
   Index iterations = outcome.iterations;
   Real change = outcome.change;
   bool converged = outcome.converged;

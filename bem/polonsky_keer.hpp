@@ -14,8 +14,9 @@
 //   (E*/2)|q| in Fourier space (bem/fourier_preconditioner.hpp), restricted to the contact set again with its
 //   mean there removed, before it becomes a direction; conjugation restarts when nodes enter the set, and
 //   entering nodes take the overlap times the plain step <t,t>/<t,Gt> (PK's entry step has the wrong
-//   dimension once t is a pressure). One more FFT pair an iteration (of the unpadded grid), far fewer
-//   iterations, and a count that grows much more slowly with the grid (results/bench/bem_solvers.md).
+//   dimension once t is a pressure). One more convolution an iteration (periodic: one FFT pair; non-periodic:
+//   3/4 of a padded pair, as the operator's), far fewer iterations, and a count that grows much more slowly
+//   with the grid (results/bench/bem_solvers.md).
 //
 // Stopping criteria, the same tolerance for both:
 // - the relative change of the pressure in one iteration (Polonsky & Keer's),
@@ -67,6 +68,8 @@
 
 namespace contactbench {
 
+enum class LoadPathStart { scaled, extrapolated };
+
 struct PolonskyKeerOptions {
   Real tolerance = 1e-10;  // on the relative change of the pressure (see above)
   Index max_iterations = 20000;
@@ -84,6 +87,10 @@ struct PolonskyKeerOptions {
   // Which iteration (bem/solver_registry.hpp, docs/solvers.md): Polonsky & Keer's, or the same with the
   // Fourier-preconditioned direction. Same problem, same options, same meaning of converged.
   SolverKind solver = kDefaultSolver;
+  // Where solve() starts a load after a previous one (load stepping, loads in increasing order):
+  // scaled, the last solution scaled to the new load; extrapolated, the linear extrapolation of the last two
+  // solutions in the load (clipped at 0, then scaled), the last one scaled when there is only one.
+  LoadPathStart load_path = LoadPathStart::scaled;
 };
 
 // The smallest tolerance single precision accepts: ten times float's epsilon (1.2e-7), with room for the

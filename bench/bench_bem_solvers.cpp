@@ -149,7 +149,53 @@ void equal_accuracy(benchmark::State& state, SolverKind solver_kind, SurfaceKind
       1e3 * seconds / static_cast<double>(std::max<Index>(iterations, 1)) / pair_ms;
 }
 
+// 10 loads P/(E* A0) = 0.001 ... 0.01 on surface A refined, in increasing order, at tolerance 1e-8: cold,
+// each by a new solver; warm, each from the last solution scaled; extrapolated, each from the extrapolation
+// of the last two. Counters: the totals of iterations and seconds.
+enum class Start { cold, warm, extrapolated };
+constexpr const char* kStartNames[] = {"cold", "warm", "extrapolated"};
+
+void curve(benchmark::State& state, SolverKind solver_kind, Index n, bool periodic, Start start) {
+  const Surface surface = case_surface(SurfaceKind::surface_a, n).with_periodic(periodic);
+  const PolonskyKeerOptions options{
+      .tolerance = 1e-8,
+      .max_iterations = 100000,
+      .solver = solver_kind,
+      .load_path = start == Start::extrapolated ? LoadPathStart::extrapolated : LoadPathStart::scaled};
+  Index iterations = 0;
+  double seconds = 0;
+  for (auto _ : state) {
+    iterations = 0;
+    seconds = 0;
+    PolonskyKeer warm(surface, kModulus, options, kThreads);
+    for (int k = 1; k <= 10; ++k) {
+      std::unique_ptr<PolonskyKeer> cold;
+      if (start == Start::cold) cold = std::make_unique<PolonskyKeer>(surface, kModulus, options, kThreads);
+      const ContactSolution& s = (cold ? *cold : warm).solve(kModulus * 0.001 * k);
+      if (!s.converged) state.SkipWithError("a load did not converge");
+      iterations += s.iterations;
+      seconds += s.seconds;
+    }
+    state.SetIterationTime(seconds);
+  }
+  state.counters["iterations"] = static_cast<double>(iterations);
+  state.counters["seconds"] = seconds;
+}
+
 void register_all() {
+  for (const Index n : {256, 512, 1024})
+    for (const bool periodic : {true, false})
+      for (const std::string& name : solver_names())
+        for (const Start start : {Start::cold, Start::warm, Start::extrapolated}) {
+          const std::string label = "bem/" + name + "/" + (periodic ? "periodic" : "nonperiodic") +
+                                    "/n:" + std::to_string(n) +
+                                    "/curve:" + kStartNames[static_cast<int>(start)] + "/surface_a";
+          benchmark::RegisterBenchmark(label.c_str(), curve, solver_kind(name), n, periodic, start)
+              ->Unit(benchmark::kMillisecond)
+              ->UseManualTime()
+              ->Iterations(1)
+              ->Repetitions(1);
+        }
   for (const SurfaceKind kind : {SurfaceKind::surface_a, SurfaceKind::h08})
     for (const Index n : {256, 512, 1024, 2048})
       for (const bool periodic : {true, false})

@@ -416,6 +416,34 @@ TEST_P(BemValidation, AWarmStartFromOneContactNodeStillFindsThePenetration) {
   }
 }
 
+TEST_P(BemValidation, AnExtrapolatedLoadPathGivesTheSameAnswers) {
+  // Four increasing loads on the spike on a flat (one node, then a growing set), each started from the
+  // extrapolation of the last two solutions (LoadPathStart::extrapolated) and, separately, from a cold
+  // start: the start must not change the answer. Both stop at 1e-12: tolerance::solver_consistency.
+  for (const bool periodic : {true, false}) {
+    const Surface surface = spike_on_a_flat(periodic);
+    const Real touching = kSpikeHeight / spike_compliance(surface);
+    const Real nodes = static_cast<Real>(kSpikeGrid * kSpikeGrid);
+    PolonskyKeer path(surface, kModulus,
+                      {.tolerance = 1e-12,
+                       .max_iterations = 20000,
+                       .solver = GetParam(),
+                       .load_path = LoadPathStart::extrapolated});
+    const char* what = periodic ? "periodic" : "non-periodic";
+    for (const Real factor : {0.3, 3.0, 6.0, 12.0}) {
+      PolonskyKeer cold(surface, kModulus,
+                        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+      const ContactSolution& p = path.solve(factor * touching / nodes);
+      const ContactSolution& c = cold.solve(factor * touching / nodes);
+      expect_admissible(p, path.surface(), what);
+      EXPECT_EQ(p.contact_points, c.contact_points) << what << ", " << factor;
+      EXPECT_LT((p.pressure - c.pressure).abs().maxCoeff(),
+                tolerance::solver_consistency * c.pressure.maxCoeff())
+          << what << ", " << factor;
+    }
+  }
+}
+
 TEST_P(BemValidation, AContactFractionOf1e4OnARandomSurface) {
   // Surface A on 256 x 256 points at p/(E* gbar) = 3e-5: a handful of nodes in contact (A/A0 ~ 1e-4, about
   // kappa ~ 2-3 times the load), cold-started from the uniform pressure over all 65536 nodes.
