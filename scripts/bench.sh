@@ -6,8 +6,8 @@
 # BENCH_FILTER=REGEX runs only the matching benchmarks (recorded in the files' command); BENCH_APPEND=1 adds
 # them to the recorded JSON instead of replacing it (a long run made in parts). bem_solvers compares the BEM
 # solvers at equal accuracy (bench/bench_bem_solvers.cpp); its full matrix takes hours on two cores, so it is
-# run in parts with BENCH_FILTER (results/bench/bem_solvers.md records which). Takes about 15 minutes for labelling and
-# sweep, and as long again for bem.
+# run in parts with BENCH_FILTER (results/bench/bem_solvers.md records which). Takes about 15 minutes for
+# labelling and sweep, and as long again for bem.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
