@@ -4,11 +4,11 @@
 // problem (plain Polonsky-Keer at a relative pressure change of 1e-12), computed once per case, cached for
 // every solver, never timed. A solver is then run from a cold start at the tolerances 1e-3, 1e-4, ... (each a
 // new solver) until its result has a contact area (node count) within 1e-4 relative of the reference's and a
-// pressure field within 1e-4 relative L2 of it; the time and iterations of THAT solve are what is reported:
-// what a user who picks the loosest tolerance good enough for 1e-4 pays. Counters: iterations, seconds,
-// tolerance (the one needed), area_error, pressure_error, area_fraction (the reference's),
-// fft_pairs_per_iteration (one iteration's time over one r2c + c2r pair of the padded size, measured in this
-// binary), and for `curve` runs the totals of 10 loads.
+// pressure field within 1e-4 relative L2 of it; the iterations of THAT solve and its time (the median of
+// three runs) are what is reported: what a user who picks the loosest tolerance good enough for 1e-4 pays.
+// Counters: iterations, seconds, tolerance (the one needed), area_error, pressure_error, area_fraction (the
+// reference's), fft_pairs_per_iteration (one iteration's time over one r2c + c2r pair of the padded size,
+// measured in this binary), and for `curve` runs the totals of 10 loads.
 //
 // Surfaces: surface_a, the paper's surface A (Table 1, a 256 x 256 realisation) Fourier-refined to n x n
 // (so no roughness below the 256 grid's pixel); h08, a self-affine surface with H = 0.8, roll-off at
@@ -17,6 +17,7 @@
 // kappa = 2 and gbar the surface's rms gradient; the area the reference found is the area_fraction counter.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -24,6 +25,7 @@
 #include <numbers>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "bench_surfaces.hpp"
 #include "contactbench/bem/polonsky_keer.hpp"
@@ -133,7 +135,20 @@ void equal_accuracy(benchmark::State& state, SolverKind solver_kind, SurfaceKind
                    static_cast<double>(ref.contact_points);
       pressure_error = (s.pressure - ref.pressure).matrix().norm() / ref.norm;
       met = area_error <= kAccuracy && pressure_error <= kAccuracy;
-      if (met) break;
+      if (met) {
+        // The time of that solve, as the median of three runs: the machine is shared, and a single run
+        // can be slowed several times over by a neighbour (the iterations are the same every run).
+        std::vector<double> runs{seconds};
+        for (int repeat = 0; repeat < 2; ++repeat) {
+          PolonskyKeer again(surface, kModulus,
+                             {.tolerance = tolerance, .max_iterations = 100000, .solver = solver_kind},
+                             kThreads);
+          runs.push_back(again.solve(load).seconds);
+        }
+        std::sort(runs.begin(), runs.end());
+        seconds = runs[1];
+        break;
+      }
     }
     if (!met) state.SkipWithError("no tolerance down to 1e-11 reached the accuracy");
     state.SetIterationTime(seconds);
