@@ -52,6 +52,10 @@ class PolonskyKeer::Engine {
   };
   virtual ~Engine() = default;
   virtual void forget() = 0;
+  // Whether a solve would start from a previous solution.
+  virtual bool warm() const = 0;
+  // The next solve starts from this pressure [Pa] (ny x nx), as from a previous solution.
+  virtual void start_from(const HeightMap& pressure) = 0;
   // Load control: mean(p) = mean_pressure, the flat's height found.
   // extrapolate: start from the linear extrapolation of the last two load-controlled solutions (when there
   // are two), else from the last one scaled to the new load.
@@ -114,6 +118,16 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
 
   void forget() override {
     warm_ = false;
+    loads_solved_ = 0;
+  }
+
+  bool warm() const override { return warm_; }
+
+  void start_from(const HeightMap& pressure) override {
+    for (Index i = 0; i < n_; ++i)
+      q_[cur_][static_cast<std::size_t>(i)] = static_cast<T>(std::max(pressure.data()[i], 0.0));
+    s_[cur_] = 1;
+    warm_ = true;
     loads_solved_ = 0;
   }
 
@@ -726,7 +740,7 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
 };
 
 PolonskyKeer::PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOptions options, int threads)
-    : surface_(surface.centred()), options_(options) {
+    : surface_(surface.centred()), options_(options), engine_modulus_(modulus), threads_(threads) {
   if (!(options_.tolerance > 0) || options_.max_iterations < 1)
     throw Error("Polonsky-Keer: tolerance must be > 0 and max_iterations >= 1");
   if (options_.hardness && !(std::isfinite(*options_.hardness) && *options_.hardness > 0))
@@ -780,6 +794,8 @@ const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
     solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return solution_;
   }
+  Index coarse_iterations = 0;
+  if (options_.coarse_start && !engine_->warm()) coarse_iterations = start_coarse(mean_pressure);
   const Engine::Outcome outcome =
       engine_->solve_load(mean_pressure, options_.tolerance, options_.max_iterations,
                           options_.load_path == LoadPathStart::extrapolated);
@@ -795,6 +811,7 @@ const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
   engine_->write(solution_);
   solution_.mean_pressure = mean_pressure;
   solution_.iterations = iterations;
+  solution_.coarse_iterations = coarse_iterations;
   solution_.change = change;
   solution_.converged = converged;
   solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -833,6 +850,37 @@ const ContactSolution& PolonskyKeer::solve_for_separation(Real separation) {
   solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!outcome.converged) warn_not_converged("separation [m]", separation, solution_, options_.tolerance);
   return solution_;
+}
+
+Index PolonskyKeer::start_coarse(Real mean_pressure) {
+  // The surface averaged over 2 x 2 blocks (its mean kept, so the load is the same), solved loosely (itself
+  // from a coarser start, down to kCoarsest points a side), its pressure injected: each coarse pixel's
+  // pressure on its four fine pixels. Elastic: a hardness is met afterwards by the fine solve.
+  constexpr Index kCoarsest = 64;
+  constexpr Real kCoarseTolerance = 1e-4;
+  const Grid& fine = surface_.grid();
+  if (fine.nx % 2 != 0 || fine.ny % 2 != 0 || fine.nx / 2 < kCoarsest || fine.ny / 2 < kCoarsest) return 0;
+  Grid grid = fine;
+  grid.nx /= 2;
+  grid.ny /= 2;
+  const HeightMap& h = surface_.heights();
+  HeightMap coarse(grid.ny, grid.nx);
+  for (Index y = 0; y < grid.ny; ++y)
+    for (Index x = 0; x < grid.nx; ++x)
+      coarse(y, x) =
+          0.25 * (h(2 * y, 2 * x) + h(2 * y, 2 * x + 1) + h(2 * y + 1, 2 * x) + h(2 * y + 1, 2 * x + 1));
+  PolonskyKeerOptions options = options_;
+  options.tolerance = std::max(options_.tolerance, kCoarseTolerance);
+  options.hardness = std::nullopt;
+  options.load_path = LoadPathStart::scaled;
+  PolonskyKeer solver(Surface(grid, coarse), engine_modulus_, options, threads_);
+  const ContactSolution& s = solver.solve(mean_pressure);
+  HeightMap start(fine.ny, fine.nx);
+  for (Index y = 0; y < fine.ny; ++y)
+    for (Index x = 0; x < fine.nx; ++x)
+      start(y, x) = s.pressure(y / 2, x / 2);
+  engine_->start_from(start);
+  return s.iterations + s.coarse_iterations;
 }
 
 namespace {

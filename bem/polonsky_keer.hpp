@@ -29,9 +29,11 @@
 // The complementarity residual is reported as `residual`: the largest |g| on the contact set relative to
 // the surface's height range. What the tolerance buys (measured by bench/bench_bem_solvers.cpp against a
 // solve at 1e-12 on surface A and an H = 0.8 surface, 256^2 to 2048^2, 1 % to 30 % contact): the contact
-// area to 1e-4 relative and the pressure to 1e-4 relative L2 need a tolerance of 1e-5 to 1e-7 with
-// polonsky_keer and 1e-3 to 1e-5 with preconditioned_cg; the default 1e-10 is far tighter than that for
-// both. A solve that reaches the iteration cap is marked
+// area to 1e-4 relative and the pressure to 1e-4 relative L2 needed a tolerance of 1e-4 to 1e-6 with
+// polonsky_keer and 1e-3 to 1e-5 with preconditioned_cg, once 1e-7 (256^2, 10 % contact, where 1e-4 of the
+// area is less than one node: the count must be exact); results/bench/bem_solvers.md, column tol. The
+// defaults (1e-10 here, 1e-8 in scenes and on the command line) are tighter than that for both. A solve
+// that reaches the iteration cap is marked
 // converged = false and says so on stderr; it is never passed off as converged.
 //
 // Hardness (optional): a perfectly plastic cap, p <= H. Nodes at p = H are plastic: their gap may be negative
@@ -91,6 +93,9 @@ struct PolonskyKeerOptions {
   // scaled, the last solution scaled to the new load; extrapolated, the linear extrapolation of the last two
   // solutions in the load (clipped at 0, then scaled), the last one scaled when there is only one.
   LoadPathStart load_path = LoadPathStart::scaled;
+  // A cold load-controlled solve starts from the solution of the surface averaged over 2 x 2 blocks, solved
+  // to 1e-4 (itself from a coarser one, down to 64 points a side), its pressure injected (docs/solvers.md).
+  bool coarse_start = false;
 };
 
 // The smallest tolerance single precision accepts: ten times float's epsilon (1.2e-7), with room for the
@@ -104,8 +109,9 @@ struct ContactSolution {
   Real separation = 0;       // d: the flat's height above the mean plane of the heights [m] (found or given)
   Index contact_points = 0;  // points with p > 0 (with a hardness, the plastic ones too)
   Index iterations = 0;      // with a hardness: of every solve the search made, the elastic one included
-  Real change = 0;           // the last relative change of the pressure
-  Real residual = 0;         // max |gap| on the (elastic) contact set / (max h - min h)
+  Index coarse_iterations = 0;  // of the coarse solves of a coarse start (each costs 1/4 of a finer one)
+  Real change = 0;              // the last relative change of the pressure
+  Real residual = 0;            // max |gap| on the (elastic) contact set / (max h - min h)
   bool converged = false;
   double seconds = 0;
   Index plastic_points = 0;  // points at p = H (with a hardness; 0 without), counted in contact_points too
@@ -130,8 +136,12 @@ class PolonskyKeer {
   const Surface& surface() const { return surface_; }
 
  private:
+  Index start_coarse(Real mean_pressure);  // returns the coarse levels' iterations
+
   Surface surface_;
   PolonskyKeerOptions options_;
+  Real engine_modulus_;
+  int threads_;
   ContactSolution solution_;
 
  public:

@@ -114,22 +114,27 @@ double fft_pair_ms(Index size) {
   return slot;
 }
 
-void equal_accuracy(benchmark::State& state, SolverKind solver_kind, SurfaceKind kind, Index n, bool periodic,
-                    int pct) {
+void equal_accuracy(benchmark::State& state, SolverKind solver_kind, bool coarse, SurfaceKind kind, Index n,
+                    bool periodic, int pct) {
   const Surface surface = case_surface(kind, n).with_periodic(periodic);
   const Reference& ref = reference(kind, n, periodic, pct);
   const Real load = nominal_pressure(surface, pct);
   const double pair_ms = fft_pair_ms(periodic ? n : 2 * n);
-  Index iterations = 0;
+  Index iterations = 0, fine_iterations = 0, coarse_iterations = 0;
   double seconds = 0, tolerance = 0, area_error = 0, pressure_error = 0;
   for (auto _ : state) {
     bool met = false;
     for (tolerance = 1e-3; tolerance >= 1e-11 && !met; tolerance /= 10) {
-      PolonskyKeer solver(surface, kModulus,
-                          {.tolerance = tolerance, .max_iterations = 100000, .solver = solver_kind},
-                          kThreads);
+      PolonskyKeer solver(
+          surface, kModulus,
+          {.tolerance = tolerance, .max_iterations = 100000, .solver = solver_kind, .coarse_start = coarse},
+          kThreads);
       const ContactSolution& s = solver.solve(load);
-      iterations = s.iterations;
+      // A coarse start's levels cost 1/4, 1/16, ... of a fine iteration each: counted as 1/4 (an upper
+      // bound).
+      fine_iterations = s.iterations;
+      coarse_iterations = s.coarse_iterations;
+      iterations = s.iterations + (s.coarse_iterations + 3) / 4;
       seconds = s.seconds;
       area_error = std::abs(static_cast<double>(s.contact_points - ref.contact_points)) /
                    static_cast<double>(ref.contact_points);
@@ -141,7 +146,10 @@ void equal_accuracy(benchmark::State& state, SolverKind solver_kind, SurfaceKind
         std::vector<double> runs{seconds};
         for (int repeat = 0; repeat < 2; ++repeat) {
           PolonskyKeer again(surface, kModulus,
-                             {.tolerance = tolerance, .max_iterations = 100000, .solver = solver_kind},
+                             {.tolerance = tolerance,
+                              .max_iterations = 100000,
+                              .solver = solver_kind,
+                              .coarse_start = coarse},
                              kThreads);
           runs.push_back(again.solve(load).seconds);
         }
@@ -154,6 +162,8 @@ void equal_accuracy(benchmark::State& state, SolverKind solver_kind, SurfaceKind
     state.SetIterationTime(seconds);
   }
   state.counters["iterations"] = static_cast<double>(iterations);
+  state.counters["fine_iterations"] = static_cast<double>(fine_iterations);
+  state.counters["coarse_iterations"] = static_cast<double>(coarse_iterations);
   state.counters["seconds"] = seconds;
   state.counters["tolerance"] = tolerance;
   state.counters["area_error"] = area_error;
@@ -197,6 +207,17 @@ void curve(benchmark::State& state, SolverKind solver_kind, Index n, bool period
   state.counters["seconds"] = seconds;
 }
 
+// Every solver from a cold start, and the preconditioned one from a coarse start too (<solver>_coarse;
+// PolonskyKeerOptions::coarse_start): its `iterations` are the fine ones plus a quarter of the coarse
+// levels'.
+std::vector<std::pair<std::string, bool>> variants() {
+  std::vector<std::pair<std::string, bool>> out;
+  for (const std::string& name : solver_names())
+    out.emplace_back(name, false);
+  out.emplace_back(std::string(solver_name(SolverKind::preconditioned_cg)), true);
+  return out;
+}
+
 void register_all() {
   for (const Index n : {256, 512, 1024})
     for (const bool periodic : {true, false})
@@ -215,12 +236,13 @@ void register_all() {
     for (const Index n : {256, 512, 1024, 2048})
       for (const bool periodic : {true, false})
         for (const int pct : {1, 10, 30})
-          for (const std::string& name : solver_names()) {
+          for (const auto& [name, coarse] : variants()) {
             const SolverKind solver = solver_kind(name);
-            const std::string label = "bem/" + name + "/" + (periodic ? "periodic" : "nonperiodic") +
-                                      "/n:" + std::to_string(n) + "/contact:" + std::to_string(pct) + "/" +
-                                      surface_label(kind);
-            benchmark::RegisterBenchmark(label.c_str(), equal_accuracy, solver, kind, n, periodic, pct)
+            const std::string label = "bem/" + name + (coarse ? "_coarse" : "") + "/" +
+                                      (periodic ? "periodic" : "nonperiodic") + "/n:" + std::to_string(n) +
+                                      "/contact:" + std::to_string(pct) + "/" + surface_label(kind);
+            benchmark::RegisterBenchmark(label.c_str(), equal_accuracy, solver, coarse, kind, n, periodic,
+                                         pct)
                 ->Unit(benchmark::kMillisecond)
                 ->UseManualTime()
                 ->Iterations(1)

@@ -160,7 +160,7 @@ def bem_solvers(data):
     lines.append("Each solver is run from a cold start at the tolerances 1e-3, 1e-4, ... until its contact area "
                  "(node count) is within 1e-4 relative and its pressure within 1e-4 relative L2 of a reference "
                  "solve of the same case (plain Polonsky-Keer at 1e-12, not timed); the iterations and seconds are "
-                 "those of that solve, `tol` the tolerance it needed. surface_a: the paper's surface A Fourier-"
+                 "those of that solve (seconds: the median of three runs), `tol` the tolerance it needed. surface_a: the paper's surface A Fourier-"
                  "refined to n x n; h08: H = 0.8, roll-off at 4 (2 pi/L), cut at each grid's Nyquist wavevector. "
                  "contact: nominal % (the reference's area fraction in the `area` column). FFT pairs / iteration: "
                  "one iteration over one r2c + c2r pair of the padded size (FFTW_MEASURE) in the same binary.")
@@ -181,6 +181,9 @@ def bem_solvers(data):
             line = f"| {key[0]} | {key[1]} | {key[2]} | {n} | {fmt(area)} |"
             for s in solvers:
                 row = r.get(s, {})
+                if not row:
+                    line += " - | - | - | - |"
+                    continue
                 if row.get("error_occurred"):
                     line += " did not reach | - | - | - |"
                     continue
@@ -201,6 +204,8 @@ def bem_solvers(data):
     for key in sorted(cases):
         for s in solvers:
             counts = {n: cases[key][n].get(s, {}).get("iterations") for n in cases[key]}
+            if not any(counts.values()):
+                continue
             base = counts.get(min(counts))
             cells = [fmt(counts[n] / base) if counts.get(n) and base else "-" for n in sizes]
             lines.append(f"| {key[0]} | {key[1]} | {key[2]} | {s} | " + " | ".join(cells) + " |")

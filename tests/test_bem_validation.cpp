@@ -444,6 +444,29 @@ TEST_P(BemValidation, AnExtrapolatedLoadPathGivesTheSameAnswers) {
   }
 }
 
+TEST_P(BemValidation, ACoarseStartGivesTheSameAnswer) {
+  // Surface A on 128 x 128 points, periodic and not, at about 10 % contact: a coarse start (the 64 grid
+  // solved first, PolonskyKeerOptions::coarse_start) must reach the cold start's answer; both stop at 1e-12:
+  // tolerance::solver_consistency. The hierarchy really ran: the coarse levels report their iterations.
+  for (const bool periodic : {true, false}) {
+    const Surface surface = surface_a(128, 11).with_periodic(periodic);
+    const Real load = 0.05 * kModulus * rms_gradient(surface) / 2;
+    PolonskyKeer coarse(
+        surface, kModulus,
+        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam(), .coarse_start = true});
+    PolonskyKeer cold(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    const ContactSolution& c = cold.solve(load);
+    const ContactSolution& s = coarse.solve(load);
+    const char* what = periodic ? "periodic" : "non-periodic";
+    expect_admissible(s, coarse.surface(), what);
+    EXPECT_GT(s.coarse_iterations, 0) << what;
+    EXPECT_EQ(s.contact_points, c.contact_points) << what;
+    EXPECT_LT((s.pressure - c.pressure).abs().maxCoeff(),
+              tolerance::solver_consistency * c.pressure.maxCoeff())
+        << what;
+  }
+}
+
 TEST_P(BemValidation, AContactFractionOf1e4OnARandomSurface) {
   // Surface A on 256 x 256 points at p/(E* gbar) = 3e-5: a handful of nodes in contact (A/A0 ~ 1e-4, about
   // kappa ~ 2-3 times the load), cold-started from the uniform pressure over all 65536 nodes.
