@@ -13,6 +13,7 @@
 #include "contactbench/app/provenance.hpp"
 #include "contactbench/app/report_writers.hpp"
 #include "contactbench/app/scene_run.hpp"
+#include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench {
@@ -30,6 +31,7 @@ struct BemOptions {
   bool single_precision = false;
   std::string fields;
   std::optional<int> connectivity;
+  std::optional<std::string> solver;  // bem/solver_registry.hpp
   std::string out;
   int threads = 1;
 };
@@ -44,7 +46,8 @@ const FlagNames kFlags = {{"surface.file", "FILE"},
                           {"methods.bem.precision", "--float"},
                           {"methods.bem.fields", "--fields"},
                           {"methods.bem.connectivity", "--connectivity"},
-                          {"methods.bem.periodic", "--non-periodic"}};
+                          {"methods.bem.periodic", "--non-periodic"},
+                          {"methods.bem.solver", "--solver"}};
 
 // The one-method scene the flags describe: only what was given, so that every default is the scene's.
 toml::table scene_of(const BemOptions& o) {
@@ -64,6 +67,7 @@ toml::table scene_of(const BemOptions& o) {
   if (o.single_precision) bem.insert("precision", "single");
   if (!o.fields.empty()) bem.insert("fields", o.fields);
   if (o.connectivity) bem.insert("connectivity", *o.connectivity);
+  if (o.solver) bem.insert("solver", *o.solver);
   return toml::table{{"name", "bem"},
                      {"surface", surface_keys(o.topography)},
                      {"material", material},
@@ -75,6 +79,7 @@ std::string command_line(const BemOptions& o) {
   std::string text = "contactbench bem " + o.topography.file + " --loads";
   for (std::size_t k = 0; k < o.loads.size(); ++k)
     text += (k ? "," : " ") + json_number(o.loads[k]);
+  if (o.solver) text += " --solver " + *o.solver;
   return text + " --threads " + std::to_string(o.threads);
 }
 
@@ -130,6 +135,13 @@ void add_bem_command(CLI::App& parent) {
       ->check(refuse_empty_output_name);
   command->add_option("--max-iterations", options->max_iterations, "iteration cap per load (default 20000)");
   command->add_option("--connectivity", options->connectivity, "4 or 8, for counting contact spots");
+  std::string known;
+  for (const std::string& name : solver_names())
+    known += (known.empty() ? "" : ", ") + name;
+  command->add_option("--solver", options->solver,
+                      "the BEM iteration: " + known + " (default " +
+                          std::string(solver_name(kDefaultSolver)) +
+                          "; docs/solvers.md); recorded in the CSV's header");
   command->add_option("--out", options->out, "CSV file (default: standard output)")
       ->check(refuse_empty_output_name);
   add_threads_option(*command, options->threads);

@@ -63,6 +63,9 @@ void write_curves_csv(std::ostream& out, const SceneReport& report, const Proven
          "= A/A0 "
          "as compared (the BEM's is area_fraction_corrected, the plateau model's area_fraction_nodes); empty "
          "cells: the method has no such value\n";
+  // What each method ran (for the BEM: its solver, boundary and tolerance), one comment line each.
+  for (const MethodResult& m : report.methods)
+    out << "# " << m.label << ": " << m.curve.parameters << '\n';
   out << "method,separation,load,area_fraction,spots";
   for (const std::string& name : extras)
     out << ',' << name;

@@ -54,7 +54,8 @@ std::string BemStage::name() const {
   std::ostringstream text;
   text << "bem (";
   if (refine > 0) text << "refined to " << refine << " x " << refine << ", ";
-  text << (periodic ? "periodic" : "non-periodic") << ", tolerance " << tolerance;
+  text << solver_name(solver) << ", " << (periodic ? "periodic" : "non-periodic") << ", tolerance "
+       << tolerance;
   if (single_precision) text << ", single precision";
   if (hardness) text << ", hardness " << *hardness << " Pa";
   text << ")";
@@ -86,7 +87,8 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
                                      .max_iterations = stage.max_iterations,
                                      .hardness = stage.hardness,  // absent: purely elastic
                                      .single_precision = stage.single_precision,
-                                     .warning = [&](const std::string& text) { observer.warn(text); }};
+                                     .warning = [&](const std::string& text) { observer.warn(text); },
+                                     .solver = stage.solver};
   PolonskyKeer solver(solved, estar, solver_options, context.threads);
   std::map<int, Labeller> labellers;
   for (const int c : connectivities)

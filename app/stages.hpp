@@ -13,6 +13,7 @@
 #include "contactbench/app/run_observer.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
 #include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/load_area_curve.hpp"
 #include "contactbench/core/surface.hpp"
 #include "contactbench/core/sweep.hpp"
@@ -41,10 +42,11 @@ struct BemStage {
   bool periodic = true;
   Real tolerance = 1e-8;  // relative change of the pressure (bem/polonsky_keer.hpp)
   Index max_iterations = 20000;
-  std::optional<Real> hardness;   // [Pa]: perfectly plastic pressure cap; absent = purely elastic
-  bool single_precision = false;  // iterate in float (bem/polonsky_keer.hpp)
-  std::string fields;             // prefix of per-load pressure and gap files; empty: none written
-  std::string name() const;       // e.g. "bem (periodic, tolerance 1e-08)"
+  std::optional<Real> hardness;        // [Pa]: perfectly plastic pressure cap; absent = purely elastic
+  bool single_precision = false;       // iterate in float (bem/polonsky_keer.hpp)
+  std::string fields;                  // prefix of per-load pressure and gap files; empty: none written
+  SolverKind solver = kDefaultSolver;  // the BEM iteration (bem/solver_registry.hpp, docs/solvers.md)
+  std::string name() const;            // e.g. "bem (periodic, tolerance 1e-08)"
   bool operator==(const BemStage& other) const = default;  // methods that ask for equal solves share one
 };
 

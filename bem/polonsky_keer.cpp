@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "contactbench/bem/convolution.hpp"
+#include "contactbench/bem/fourier_preconditioner.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench {
@@ -28,12 +29,14 @@ namespace {
 // What one thread sums during one pass: one cache line each, combined in thread order after the pass, so
 // that for a fixed thread count the sums (and so the iterates) are the same from run to run.
 struct alignas(64) Partial {
-  double change = 0, sum = 0;           // sum |p - p_old|, sum p
-  double elastic = 0, plastic = 0;      // node counts
-  double shift = 0, s1 = 0, s2 = 0;     // sum (g - shift), sum (g - shift)^2 over the elastic set
-  bool has_shift = false;               // see gap_rows
-  double gt = 0, t_sum = 0, r_sum = 0;  // sum g t, sum t, sum r over the elastic set
-  double q_sum = 0, entered = 0;        // sum of the new pressure, nodes that entered or left the set
+  double change = 0, sum = 0;            // sum |p - p_old|, sum p
+  double elastic = 0, plastic = 0;       // node counts
+  double shift = 0, s1 = 0, s2 = 0;      // sum (g - shift), sum (g - shift)^2 over the elastic set
+  bool has_shift = false;                // see gap_rows
+  double gt = 0, t_sum = 0, r_sum = 0;   // sum g t, sum t, sum r over the elastic set
+  double q_sum = 0, entered = 0;         // sum of the new pressure, nodes that entered or left the set
+  double rz = 0, z_sum = 0, rr_sum = 0;  // preconditioned: sum r z, sum z, sum r over the elastic set
+  double tt = 0;                         // preconditioned: sum t^2
   void clear() { *this = Partial{}; }
 };
 
@@ -49,8 +52,15 @@ class PolonskyKeer::Engine {
   };
   virtual ~Engine() = default;
   virtual void forget() = 0;
+  // Whether a solve would start from a previous solution.
+  virtual bool warm() const = 0;
+  // The next solve starts from this pressure [Pa] (ny x nx), as from a previous solution.
+  virtual void start_from(const HeightMap& pressure) = 0;
   // Load control: mean(p) = mean_pressure, the flat's height found.
-  virtual Outcome solve_load(double mean_pressure, double tolerance, Index max_iterations) = 0;
+  // extrapolate: start from the linear extrapolation of the last two load-controlled solutions (when there
+  // are two), else from the last one scaled to the new load.
+  virtual Outcome solve_load(double mean_pressure, double tolerance, Index max_iterations,
+                             bool extrapolate) = 0;
   // Separation control: the flat at `separation`, the load found; pressures capped at `hardness` (may be
   // infinite).
   virtual Outcome solve_separation(double separation, double hardness, double tolerance,
@@ -82,7 +92,9 @@ class PolonskyKeer::Engine {
 template <class T>
 class PolonskyKeerCore final : public PolonskyKeer::Engine {
  public:
-  PolonskyKeerCore(const Surface& centred, Real modulus, int threads)
+  // preconditioned: the solver "preconditioned_cg" (the gap filtered by bem/fourier_preconditioner.hpp
+  // before it becomes a direction), else plain Polonsky-Keer.
+  PolonskyKeerCore(const Surface& centred, Real modulus, int threads, bool preconditioned)
       : grid_(centred.grid()),
         convolution_(make_half_space_convolution<T>(centred.grid(), modulus, threads)),
         n_(grid_.points()),
@@ -90,6 +102,12 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
         g_(static_cast<std::size_t>(n_)),
         t_(static_cast<std::size_t>(n_)),
         partial_(static_cast<std::size_t>(convolution_->threads())) {
+    if (preconditioned) {
+      preconditioner_ = make_fourier_preconditioner<T>(centred.grid(), modulus, threads);
+      z_.resize(static_cast<std::size_t>(n_));
+      if (preconditioner_->threads() > convolution_->threads())
+        partial_.resize(static_cast<std::size_t>(preconditioner_->threads()));
+    }
     q_[0].resize(static_cast<std::size_t>(n_));
     q_[1].resize(static_cast<std::size_t>(n_));
     const HeightMap& h = centred.heights();
@@ -98,11 +116,42 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     height_range_ = h.maxCoeff() - h.minCoeff();
   }
 
-  void forget() override { warm_ = false; }
+  void forget() override {
+    warm_ = false;
+    loads_solved_ = 0;
+  }
 
-  Outcome solve_load(double mean_pressure, double tolerance, Index max_iterations) override {
+  bool warm() const override { return warm_; }
+
+  void start_from(const HeightMap& pressure) override {
+    for (Index i = 0; i < n_; ++i)
+      q_[cur_][static_cast<std::size_t>(i)] = static_cast<T>(std::max(pressure.data()[i], 0.0));
+    s_[cur_] = 1;
+    warm_ = true;
+    loads_solved_ = 0;
+  }
+
+  Outcome solve_load(double mean_pressure, double tolerance, Index max_iterations,
+                     bool extrapolate) override {
     const double total = mean_pressure * static_cast<double>(n_);
-    if (warm_) {  // the previous pressure scaled to the new load
+    const bool two_behind = extrapolate && warm_ && loads_solved_ >= 2 && last_load_ != previous_load_;
+    if (extrapolate && warm_ && loads_solved_ >= 1) {
+      // p = p_last + w (p_last - p_before), w = (P - P_last)/(P_last - P_before): the pressure field's
+      // tangent along the load path (negative values clipped: out of contact); the last solution is kept
+      // for the next extrapolation.
+      if (previous_.empty()) previous_.resize(static_cast<std::size_t>(n_));
+      const double w = two_behind ? (mean_pressure - last_load_) / (last_load_ - previous_load_) : 0.0;
+      const double s = s_[cur_];
+      std::vector<T>& q = q_[cur_];
+      for (std::size_t k = 0; k < q.size(); ++k) {
+        const double p = s * static_cast<double>(q[k]);
+        const double guess = p + w * (p - static_cast<double>(previous_[k]));
+        previous_[k] = static_cast<T>(p);
+        q[k] = static_cast<T>(std::max(guess, 0.0));
+      }
+      s_[cur_] = 1;
+    }
+    if (warm_) {  // the previous pressure (or its extrapolation) scaled to the new load
       s_[cur_] = total / q_sum(q_[cur_]);
     } else {  // the uniform pressure
       std::fill(q_[cur_].begin(), q_[cur_].end(), T(1));
@@ -111,11 +160,15 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     hardness_ = std::numeric_limits<double>::infinity();
     const Outcome outcome = iterate<true, false>(total, tolerance, max_iterations);
     warm_ = true;
+    previous_load_ = last_load_;
+    last_load_ = mean_pressure;
+    ++loads_solved_;
     return outcome;
   }
 
   Outcome solve_separation(double separation, double hardness, double tolerance,
                            Index max_iterations) override {
+    loads_solved_ = 0;
     separation_ = separation;
     hardness_ = hardness;
     if (!warm_) {
@@ -271,6 +324,36 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
         direction_row<kHard>(part, q_cur + i0, g + i0, t + i0, buffer + r * ld, nx, sc, gb, b, hardness);
       }
     };
+    // Preconditioned: producing the residual r = g - gbar on the elastic set (0 elsewhere), consuming its
+    // filtered image, kept on the elastic set only as z (its mean there is taken out in the direction pass).
+    const bool preconditioned = preconditioner_ != nullptr;
+    T* const z = z_.data();
+    auto residual = [&](Index first, Index rows, T* buffer, Index ld, int thread) {
+      Partial& part = partial_[static_cast<std::size_t>(thread)];
+      const T sc = s_cur, gb = gbar;
+      for (Index r = 0; r < rows; ++r) {
+        const Index i0 = (first + r) * nx;
+        residual_row<kHard>(part, q_cur + i0, g + i0, buffer + r * ld, nx, sc, gb, hardness);
+      }
+    };
+    auto filtered = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
+      Partial& part = partial_[static_cast<std::size_t>(thread)];
+      const T sc = s_cur, gb = gbar;
+      for (Index r = 0; r < rows; ++r) {
+        const Index i0 = (first + r) * nx;
+        filtered_row<kHard>(part, q_cur + i0, g + i0, buffer + r * ld, z + i0, nx, sc, gb, hardness);
+      }
+    };
+    T zbar = 0;
+    auto preconditioned_direction = [&](Index first, Index rows, T* buffer, Index ld, int thread) {
+      Partial& part = partial_[static_cast<std::size_t>(thread)];
+      const T sc = s_cur, gb = gbar, zb = zbar, b = beta;
+      for (Index r = 0; r < rows; ++r) {
+        const Index i0 = (first + r) * nx;
+        preconditioned_direction_row<kHard>(part, q_cur + i0, g + i0, z + i0, t + i0, buffer + r * ld, nx, sc,
+                                            gb, zb, b, hardness);
+      }
+    };
     // Consuming r = G t: its sum on the elastic set (its mean is taken out: PK's step for the unknown flat).
     auto response = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
       Partial& part = partial_[static_cast<std::size_t>(thread)];
@@ -311,6 +394,8 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     Moments moments = combine_moments<kLoad>();
 
     double g_norm_old = 1, delta = 0, change = 0;  // delta = 0: the first step is steepest descent
+    double rz_old = 1;                             // preconditioned: <r, z> of the last direction
+    double entered = 0;                            // nodes that entered (or left) the set in the last update
     // Step damping. On a contact set with hundreds of nodes at one height (a flat around a spike) PK's full
     // step drives hundreds of nodes out of the set and its entry step (eq. 14) drives as many back in, every
     // iteration, for ever (tests/test_bem_validation.cpp: a cycle with a relative change ~1.3 for 20000
@@ -328,7 +413,9 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
         // PK's criterion: the relative change of the pressure in the last iteration.
         change = moments.sum > 0 ? moments.change / moments.sum
                                  : (moments.change == 0 ? 0.0 : std::numeric_limits<double>::infinity());
-        if (change < tolerance) {
+        // The preconditioned solver also asks that no node entered or left the contact set in the last
+        // update (docs/solvers.md: the active set has settled, so the change measures the CG on a fixed set).
+        if (change < tolerance && (!preconditioned || entered == 0)) {
           outcome.converged = true;
           break;
         }
@@ -348,16 +435,36 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
       q_cur = q_[cur_].data();
       s_cur = static_cast<T>(s_[cur_]);
       gbar = static_cast<T>(moments.g_mean);
-      beta = static_cast<T>(delta > 0 && g_norm_old > 0 ? moments.g_norm / g_norm_old : 0.0);
-      g_norm_old = moments.g_norm;
+      if (preconditioned) {
+        // z = the filtered residual on the elastic set, zbar its mean there (load control); Fletcher-Reeves'
+        // beta of the preconditioned CG, <r, z - zbar> over the last one (r has zero mean on the set).
+        clear_partials();
+        preconditioner_->apply(Producer(residual), Consumer(filtered));
+        double rz = 0, z_sum = 0, r_sum = 0;
+        for (const Partial& part : partial_) {
+          rz += part.rz;
+          z_sum += part.z_sum;
+          r_sum += part.rr_sum;
+        }
+        const double z_mean = kLoad ? z_sum / moments.elastic : 0.0;
+        zbar = static_cast<T>(z_mean);
+        const double rz_centred = rz - z_mean * r_sum;
+        beta = static_cast<T>(delta > 0 && rz_old > 0 ? rz_centred / rz_old : 0.0);
+        rz_old = rz_centred;
+      } else {
+        beta = static_cast<T>(delta > 0 && g_norm_old > 0 ? moments.g_norm / g_norm_old : 0.0);
+        g_norm_old = moments.g_norm;
+      }
       clear_partials();
       const double t_r =
-          convolution_->apply(Producer(direction), kLoad ? Consumer(response) : Consumer(), Hook(), true);
-      double gt = 0, t_sum = 0, r_sum = 0;
+          convolution_->apply(preconditioned ? Producer(preconditioned_direction) : Producer(direction),
+                              kLoad ? Consumer(response) : Consumer(), Hook(), true);
+      double gt = 0, t_sum = 0, r_sum = 0, tt = 0;
       for (const Partial& part : partial_) {
         gt += part.gt;
         t_sum += part.t_sum;
         r_sum += part.r_sum;
+        tt += part.tt;
       }
       // t . (r - rbar) on the elastic set; t is zero elsewhere, so t . r is the operator's own product.
       const double tr = kLoad ? t_r - r_sum / moments.elastic * t_sum : t_r;
@@ -366,8 +473,15 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
       // contact node (tau = 0) and lets those enter; if none does, the pressure is unchanged and the
       // criterion stops the loop. The step. Nodes entering (or, plastic, leaving) the set take the step of
       // the descent; without one the stiffness of one pixel, 1/G(0).
+      // Preconditioned, t is a pressure [Pa] and tau a number, so PK's entry (the overlap times tau) would
+      // have the wrong dimension; entering nodes take the overlap times the plain step of t instead,
+      // <t, t>/<t, G t> [Pa/m] (the stiffness t meets; docs/solvers.md).
       tau = tr > 0 ? static_cast<T>(damping * gt / tr) : T(0);
-      tau_enter = tr > 0 ? tau : static_cast<T>(damping / convolution_->self_response());
+      if (preconditioned)
+        tau_enter =
+            static_cast<T>(damping * (tr > 0 && tt > 0 ? tt / tr : 1 / convolution_->self_response()));
+      else
+        tau_enter = tr > 0 ? tau : static_cast<T>(damping / convolution_->self_response());
 
       // The update, and with it the next gap.
       const int next = 1 - cur_;
@@ -379,7 +493,7 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
       convolution_->apply(Producer(update), Consumer(gap), Hook(rescale));
       cur_ = next;
       s_[cur_] = static_cast<double>(s_new);
-      double entered = 0;
+      entered = 0;
       for (const Partial& part : partial_)
         entered += part.entered;
       delta = entered > 0 ? 0 : 1;
@@ -459,6 +573,61 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     }
     part.gt += gt;
     part.t_sum += t_sum;
+  }
+
+  // Preconditioned: the residual r = g - gbar on the elastic set, 0 elsewhere, into the filter's input.
+  template <bool kHard>
+  CB_KERNEL static void residual_row(Partial& part, const T* __restrict q, const T* __restrict g,
+                                     T* __restrict out, Index nx, T s, T gbar, T hardness) {
+    double r_sum = 0;
+#pragma omp simd reduction(+ : r_sum)
+    for (Index x = 0; x < nx; ++x) {
+      const bool in = kHard ? (q[x] > 0) & (s * q[x] < hardness) : q[x] > 0;
+      const T rv = in ? g[x] - gbar : T(0);
+      out[x] = rv;
+      r_sum += static_cast<double>(rv);
+    }
+    part.rr_sum += r_sum;
+  }
+
+  // Preconditioned: the filtered residual w kept on the elastic set as z; sums z and r w there.
+  template <bool kHard>
+  CB_KERNEL static void filtered_row(Partial& part, const T* __restrict q, const T* __restrict g,
+                                     const T* __restrict w, T* __restrict z, Index nx, T s, T gbar,
+                                     T hardness) {
+    double z_sum = 0, rz = 0;
+#pragma omp simd reduction(+ : z_sum, rz)
+    for (Index x = 0; x < nx; ++x) {
+      const bool in = kHard ? (q[x] > 0) & (s * q[x] < hardness) : q[x] > 0;
+      const T zv = in ? w[x] : T(0);
+      z[x] = zv;
+      z_sum += static_cast<double>(zv);
+      rz += in ? static_cast<double>(g[x] - gbar) * static_cast<double>(zv) : 0.0;
+    }
+    part.z_sum += z_sum;
+    part.rz += rz;
+  }
+
+  // Preconditioned: t = (z - zbar) + beta t on the elastic set (0 elsewhere); sums (g - gbar) t, t and t^2.
+  template <bool kHard>
+  CB_KERNEL static void preconditioned_direction_row(Partial& part, const T* __restrict q,
+                                                     const T* __restrict g, const T* __restrict z,
+                                                     T* __restrict t, T* __restrict out, Index nx, T s,
+                                                     T gbar, T zbar, T beta, T hardness) {
+    double gt = 0, t_sum = 0, tt = 0;
+#pragma omp simd reduction(+ : gt, t_sum, tt)
+    for (Index x = 0; x < nx; ++x) {
+      const bool in = kHard ? (q[x] > 0) & (s * q[x] < hardness) : q[x] > 0;
+      const T tv = in ? (z[x] - zbar) + beta * t[x] : T(0);
+      t[x] = tv;
+      out[x] = tv;
+      gt += in ? static_cast<double>(g[x] - gbar) * static_cast<double>(tv) : 0.0;
+      t_sum += static_cast<double>(tv);
+      tt += static_cast<double>(tv) * static_cast<double>(tv);
+    }
+    part.gt += gt;
+    part.t_sum += t_sum;
+    part.tt += tt;
   }
 
   CB_KERNEL static void response_row(Partial& part, const T* __restrict q, const T* __restrict r, Index nx) {
@@ -553,6 +722,8 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
   std::unique_ptr<Convolution<T>> convolution_;
   Index n_;
   std::vector<T> h_, g_, t_;
+  std::unique_ptr<Convolution<T>> preconditioner_;  // null: plain Polonsky-Keer
+  std::vector<T> z_;                                // the filtered residual (preconditioned only)
   std::vector<T> q_[2];
   double s_[2] = {1, 1};
   int cur_ = 0;
@@ -561,10 +732,15 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
   double separation_ = 0, gap_offset_ = 0, last_sum_ = 0;
   double hardness_ = std::numeric_limits<double>::infinity();
   bool warm_ = false;
+  // For extrapolated starts: the loads of the last two load-controlled solves and the pressure of the one
+  // before the last (the last is q_[cur_]); a solve under separation control ends the series.
+  std::vector<T> previous_;
+  double last_load_ = 0, previous_load_ = 0;
+  Index loads_solved_ = 0;
 };
 
 PolonskyKeer::PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOptions options, int threads)
-    : surface_(surface.centred()), options_(options) {
+    : surface_(surface.centred()), options_(options), engine_modulus_(modulus), threads_(threads) {
   if (!(options_.tolerance > 0) || options_.max_iterations < 1)
     throw Error("Polonsky-Keer: tolerance must be > 0 and max_iterations >= 1");
   if (options_.hardness && !(std::isfinite(*options_.hardness) && *options_.hardness > 0))
@@ -574,10 +750,11 @@ PolonskyKeer::PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOpt
     throw Error("Polonsky-Keer: single precision cannot reach a relative pressure change of " +
                 std::to_string(options_.tolerance) + " (float resolves about 1e-7); use a tolerance >= " +
                 std::to_string(kSinglePrecisionTolerance) + " or double precision");
+  const bool preconditioned = options_.solver == SolverKind::preconditioned_cg;
   if (options_.single_precision)
-    engine_ = std::make_unique<PolonskyKeerCore<float>>(surface_, modulus, threads);
+    engine_ = std::make_unique<PolonskyKeerCore<float>>(surface_, modulus, threads, preconditioned);
   else
-    engine_ = std::make_unique<PolonskyKeerCore<double>>(surface_, modulus, threads);
+    engine_ = std::make_unique<PolonskyKeerCore<double>>(surface_, modulus, threads, preconditioned);
 }
 
 PolonskyKeer::~PolonskyKeer() = default;
@@ -621,8 +798,11 @@ const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
     solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return solution_;
   }
+  Index coarse_iterations = 0;
+  if (options_.coarse_start && !engine_->warm()) coarse_iterations = start_coarse(mean_pressure);
   const Engine::Outcome outcome =
-      engine_->solve_load(mean_pressure, options_.tolerance, options_.max_iterations);
+      engine_->solve_load(mean_pressure, options_.tolerance, options_.max_iterations,
+                          options_.load_path == LoadPathStart::extrapolated);
   Index iterations = outcome.iterations;
   Real change = outcome.change;
   bool converged = outcome.converged;
@@ -635,6 +815,7 @@ const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
   engine_->write(solution_);
   solution_.mean_pressure = mean_pressure;
   solution_.iterations = iterations;
+  solution_.coarse_iterations = coarse_iterations;
   solution_.change = change;
   solution_.converged = converged;
   solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -673,6 +854,37 @@ const ContactSolution& PolonskyKeer::solve_for_separation(Real separation) {
   solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!outcome.converged) warn_not_converged("separation [m]", separation, solution_, options_);
   return solution_;
+}
+
+Index PolonskyKeer::start_coarse(Real mean_pressure) {
+  // The surface averaged over 2 x 2 blocks (its mean kept, so the load is the same), solved loosely (itself
+  // from a coarser start, down to kCoarsest points a side), its pressure injected: each coarse pixel's
+  // pressure on its four fine pixels. Elastic: a hardness is met afterwards by the fine solve.
+  constexpr Index kCoarsest = 64;
+  constexpr Real kCoarseTolerance = 1e-4;
+  const Grid& fine = surface_.grid();
+  if (fine.nx % 2 != 0 || fine.ny % 2 != 0 || fine.nx / 2 < kCoarsest || fine.ny / 2 < kCoarsest) return 0;
+  Grid grid = fine;
+  grid.nx /= 2;
+  grid.ny /= 2;
+  const HeightMap& h = surface_.heights();
+  HeightMap coarse(grid.ny, grid.nx);
+  for (Index y = 0; y < grid.ny; ++y)
+    for (Index x = 0; x < grid.nx; ++x)
+      coarse(y, x) =
+          0.25 * (h(2 * y, 2 * x) + h(2 * y, 2 * x + 1) + h(2 * y + 1, 2 * x) + h(2 * y + 1, 2 * x + 1));
+  PolonskyKeerOptions options = options_;
+  options.tolerance = std::max(options_.tolerance, kCoarseTolerance);
+  options.hardness = std::nullopt;
+  options.load_path = LoadPathStart::scaled;
+  PolonskyKeer solver(Surface(grid, coarse), engine_modulus_, options, threads_);
+  const ContactSolution& s = solver.solve(mean_pressure);
+  HeightMap start(fine.ny, fine.nx);
+  for (Index y = 0; y < fine.ny; ++y)
+    for (Index x = 0; x < fine.nx; ++x)
+      start(y, x) = s.pressure(y / 2, x / 2);
+  engine_->start_from(start);
+  return s.iterations + s.coarse_iterations;
 }
 
 namespace {

@@ -1,17 +1,40 @@
 // The boundary-element ground truth: frictionless normal contact of a rough rigid surface and an elastic
 // half-space (equivalently a rigid flat on a rough elastic body), solved for a prescribed mean pressure by
-// the constrained conjugate gradient of Polonsky & Keer (Wear 231, 206-219, 1999; docs/theory.md section 6).
+// the constrained conjugate gradient of Polonsky & Keer (Wear 231, 206-219, 1999; docs/theory.md section 6),
+// or its Fourier-preconditioned variant (below; docs/solvers.md).
 //
 // Unknowns: the pressure p >= 0 on the grid and the flat's height d above the mean plane. The gap is
 // g = d - h + u(p) >= 0 with u = G p the elastic displacement (bem/half_space.hpp); where p > 0 the gap is 0,
 // and mean(p) = the prescribed mean pressure. Each iteration costs two applications of G (two FFT pairs),
 // with all of its element-wise work fused into them (bem/convolution.hpp): about two FFT pairs in all.
 //
-// Convergence criterion (Polonsky & Keer's): the relative change of the pressure in one iteration,
-//   sum |p_new - p_old| / sum p_new < tolerance,
-// checked together with the complementarity residual reported as `residual`: the largest |g| on the contact
-// set relative to the surface's height range. A solve that reaches the iteration cap is marked
-// converged = false and says so through the options' warning sink; it is never passed off as converged.
+// Two iterations solve this problem (options.solver, bem/solver_registry.hpp; docs/solvers.md):
+// - polonsky_keer: PK's constrained CG, the search direction built from the gap on the contact set;
+// - preconditioned_cg: the same loop with the gap residual (its mean on the contact set removed) filtered by
+//   (E*/2)|q| in Fourier space (bem/fourier_preconditioner.hpp), restricted to the contact set again with its
+//   mean there removed, before it becomes a direction; conjugation restarts when nodes enter the set, and
+//   entering nodes take the overlap times the plain step <t,t>/<t,Gt> (PK's entry step has the wrong
+//   dimension once t is a pressure). One more convolution an iteration (periodic: one FFT pair; non-periodic:
+//   3/4 of a padded pair, as the operator's), far fewer iterations, and a count that grows much more slowly
+//   with the grid (results/bench/bem_solvers.md).
+//
+// Stopping criteria, the same tolerance for both:
+// - the relative change of the pressure in one iteration (Polonsky & Keer's),
+//     sum |p_new - p_old| / sum p_new < tolerance;
+// - preconditioned_cg also requires that no node entered or left the contact set in that iteration: the
+//   change is then a CG step on a settled set, which is why it cannot stall on a wrong answer (the failure
+//   of preconditioning the whole gap: a change of 1e-16 with the pressure 100 % off). Its direction is a
+//   descent direction of the constrained problem whenever the gap on the contact set is not uniform
+//   (<r, z> > 0 for the positive filter), so a vanishing step means a vanishing residual.
+// The complementarity residual is reported as `residual`: the largest |g| on the contact set relative to
+// the surface's height range. What the tolerance buys (measured by bench/bench_bem_solvers.cpp against a
+// solve at 1e-12 on surface A and an H = 0.8 surface, 256^2 to 2048^2, 1 % to 30 % contact): the contact
+// area to 1e-4 relative and the pressure to 1e-4 relative L2 needed a tolerance of 1e-4 to 1e-6 with
+// polonsky_keer and 1e-3 to 1e-5 with preconditioned_cg, once 1e-7 (256^2, 10 % contact, where 1e-4 of the
+// area is less than one node: the count must be exact); results/bench/bem_solvers.md, column tol. The
+// defaults (1e-10 here, 1e-8 in scenes and on the command line) are tighter than that for both. A solve
+// that reaches the iteration cap is marked converged = false and says so through the options' warning sink;
+// it is never passed off as converged.
 //
 // Hardness (optional): a perfectly plastic cap, p <= H. Nodes at p = H are plastic: their gap may be negative
 // (the surface there flowed; the overlap is the plastic indentation) and they leave the conjugate-gradient
@@ -44,9 +67,12 @@
 #include <string>
 
 #include "contactbench/bem/half_space.hpp"
+#include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/surface.hpp"
 
 namespace contactbench {
+
+enum class LoadPathStart { scaled, extrapolated };
 
 struct PolonskyKeerOptions {
   Real tolerance = 1e-10;  // on the relative change of the pressure (see above)
@@ -65,6 +91,16 @@ struct PolonskyKeerOptions {
   // Where a warning goes (a solve that reached the iteration cap): the application's sink; none, silent (the
   // solution still says converged = false). The library never writes to a stream itself.
   std::function<void(const std::string&)> warning = nullptr;
+  // Which iteration (bem/solver_registry.hpp, docs/solvers.md): Polonsky & Keer's, or the same with the
+  // Fourier-preconditioned direction. Same problem, same options, same meaning of converged.
+  SolverKind solver = kDefaultSolver;
+  // Where solve() starts a load after a previous one (load stepping, loads in increasing order):
+  // scaled, the last solution scaled to the new load; extrapolated, the linear extrapolation of the last two
+  // solutions in the load (clipped at 0, then scaled), the last one scaled when there is only one.
+  LoadPathStart load_path = LoadPathStart::scaled;
+  // A cold load-controlled solve starts from the solution of the surface averaged over 2 x 2 blocks, solved
+  // to 1e-4 (itself from a coarser one, down to 64 points a side), its pressure injected (docs/solvers.md).
+  bool coarse_start = false;
 };
 
 // The smallest tolerance single precision accepts: ten times float's epsilon (1.2e-7), with room for the
@@ -78,8 +114,9 @@ struct ContactSolution {
   Real separation = 0;       // d: the flat's height above the mean plane of the heights [m] (found or given)
   Index contact_points = 0;  // points with p > 0 (with a hardness, the plastic ones too)
   Index iterations = 0;      // with a hardness: of every solve the search made, the elastic one included
-  Real change = 0;           // the last relative change of the pressure
-  Real residual = 0;         // max |gap| on the (elastic) contact set / (max h - min h)
+  Index coarse_iterations = 0;  // of the coarse solves of a coarse start (each costs 1/4 of a finer one)
+  Real change = 0;              // the last relative change of the pressure
+  Real residual = 0;            // max |gap| on the (elastic) contact set / (max h - min h)
   bool converged = false;
   double seconds = 0;
   Index plastic_points = 0;  // points at p = H (with a hardness; 0 without), counted in contact_points too
@@ -104,8 +141,12 @@ class PolonskyKeer {
   const Surface& surface() const { return surface_; }
 
  private:
+  Index start_coarse(Real mean_pressure);  // returns the coarse levels' iterations
+
   Surface surface_;
   PolonskyKeerOptions options_;
+  Real engine_modulus_;
+  int threads_;
   ContactSolution solution_;
 
  public:

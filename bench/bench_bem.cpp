@@ -75,7 +75,9 @@ void solve(benchmark::State& state, Index n, bool periodic, Run run) {
   const Surface surface = refined_surface_a(n).with_periodic(periodic);
   const Index padded = periodic ? n : 2 * n;
   const double pair_ms = fft_pair_ms(padded), measured_pair_ms = fft_pair_ms(padded, FftRigor::measure);
-  const PolonskyKeerOptions options{.tolerance = 1e-8, .max_iterations = 20000};
+  // Plain Polonsky-Keer, the record of results/bench/bem.md; the solvers are compared in bench_bem_solvers.
+  const PolonskyKeerOptions options{
+      .tolerance = 1e-8, .max_iterations = 20000, .solver = SolverKind::polonsky_keer};
   Index iterations = 0;
   double seconds = 0;
   for (auto _ : state) {

@@ -2,9 +2,12 @@
 # Runs the Google Benchmark harnesses (2 threads, medians of repetitions) and records them under
 # results/bench/: <name>.json (Google Benchmark's output, with commit, date, threads and machine in its
 # context) and <name>.md (tables with ratios to the references measured in the same run).
-# Usage: scripts/bench.sh [labelling|sweep|bem ...]   (default: all). BENCH_FILTER=REGEX runs only the matching
-# benchmarks (recorded in the files' command). Takes about 15 minutes for labelling and
-# sweep, and as long again for bem.
+# Usage: scripts/bench.sh [labelling|sweep|bem|bem_solvers ...]   (default: labelling sweep bem).
+# BENCH_FILTER=REGEX runs only the matching benchmarks (recorded in the files' command); BENCH_APPEND=1 adds
+# them to the recorded JSON instead of replacing it (a long run made in parts). bem_solvers compares the BEM
+# solvers at equal accuracy (bench/bench_bem_solvers.cpp); its full matrix takes hours on two cores, so it is
+# run in parts with BENCH_FILTER (results/bench/bem_solvers.md records which). Takes about 15 minutes for
+# labelling and sweep, and as long again for bem.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -16,7 +19,7 @@ if ! dpkg-query -W -f='${Status}' libopencv-dev 2>/dev/null | grep -q "install o
   fi
 fi
 cmake --preset release >/dev/null
-cmake --build --preset release -j "$(nproc)" --target bench_labelling bench_sweep bench_bem
+cmake --build --preset release -j "$(nproc)" --target bench_labelling bench_sweep bench_bem bench_bem_solvers
 
 commit=$(git rev-parse --short HEAD)
 git diff --quiet HEAD -- core bem bench || commit="$commit+uncommitted"
@@ -30,6 +33,20 @@ for name in "${@:-labelling sweep bem}"; do
     build/release/bench/bench_$bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true $filter \
       --benchmark_out="$out.tmp" --benchmark_out_format=json \
       --benchmark_context="commit=$commit,machine=$machine,command=scripts/bench.sh $bench${BENCH_FILTER:+ with BENCH_FILTER set to $BENCH_FILTER}"
+    if [[ -n ${BENCH_APPEND:-} && -f $out ]]; then
+      # Adds this run's benchmarks to the recorded ones (replacing any of the same name); the context keeps
+      # both commands, commits and dates.
+      python3 - "$out" "$out.tmp" <<'PY'
+import json, sys
+old, new = (json.load(open(p)) for p in sys.argv[1:3])
+names = {b["name"] for b in new["benchmarks"]}
+new["benchmarks"] = [b for b in old["benchmarks"] if b["name"] not in names] + new["benchmarks"]
+for key in ("command", "commit", "date"):
+    if old["context"].get(key) != new["context"].get(key):
+        new["context"][key] = f'{old["context"].get(key)}; then {new["context"].get(key)}'
+json.dump(new, open(sys.argv[2], "w"), indent=2)
+PY
+    fi
     mv "$out.tmp" "$out"
     python3 scripts/render_bench.py "$out" >"${out%.json}.md.tmp"
     mv "${out%.json}.md.tmp" "${out%.json}.md"

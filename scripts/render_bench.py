@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Renders a Google Benchmark JSON of contactbench (bench_labelling, bench_sweep or bench_bem) as Markdown tables.
+"""Renders a Google Benchmark JSON of contactbench (bench_labelling, bench_sweep, bench_bem or
+bench_bem_solvers) as Markdown tables.
 
 Medians of the repetitions, in milliseconds, and ratios to the references measured in the same run.
 Usage: render_bench.py results/bench/labelling.json > results/bench/labelling.md
@@ -141,12 +142,98 @@ def bem(data):
     return lines
 
 
+def bem_solvers(data):
+    """bench_bem_solvers: the solvers at equal accuracy, and the load curves."""
+    rows = median_rows(data)
+    cases = defaultdict(dict)  # (surface, boundary, contact) -> n -> solver -> row
+    curves = defaultdict(dict)  # (boundary, n) -> (solver, start) -> row
+    for name, row in rows.items():
+        parts = name.split("/")
+        solver, boundary = parts[1], parts[2]
+        f = dict(p.split(":", 1) for p in parts[3:] if ":" in p)
+        if "curve" in f:
+            curves[(boundary, int(f["n"]))][(solver, f["curve"])] = row
+        elif "contact" in f:
+            cases[(parts[5], boundary, int(f["contact"]))].setdefault(int(f["n"]), {})[solver] = row
+    solvers = sorted({s for c in cases.values() for r in c.values() for s in r})
+    lines = header(data, "The boundary-element solvers at equal accuracy", "scripts/bench.sh bem_solvers")
+    lines.append("Each solver is run from a cold start at the tolerances 1e-3, 1e-4, ... until its contact area "
+                 "(node count) is within 1e-4 relative and its pressure within 1e-4 relative L2 of a reference "
+                 "solve of the same case (plain Polonsky-Keer at 1e-12, not timed); the iterations and seconds are "
+                 "those of that solve (seconds: the median of three runs), `tol` the tolerance it needed. surface_a: the paper's surface A Fourier-"
+                 "refined to n x n; h08: H = 0.8, roll-off at 4 (2 pi/L), cut at each grid's Nyquist wavevector. "
+                 "contact: nominal % (the reference's area fraction in the `area` column). FFT pairs / iteration: "
+                 "one iteration over one r2c + c2r pair of the padded size (FFTW_MEASURE) in the same binary.")
+    lines.append("")
+    head = "| surface | boundary | contact % | n | area |"
+    rule = "|---|---|---|---|---|"
+    for s in solvers:
+        head += f" {s} iterations | {s} [s] | {s} tol | {s} FFT pairs / it |"
+        rule += "---|---|---|---|"
+    if len(solvers) > 1:
+        head += f" iterations {solvers[0]} / {solvers[1]} | time {solvers[0]} / {solvers[1]} |"
+        rule += "---|---|"
+    lines += [head, rule]
+    for key in sorted(cases):
+        for n in sorted(cases[key]):
+            r = cases[key][n]
+            area = next(iter(r.values())).get("area_fraction")
+            line = f"| {key[0]} | {key[1]} | {key[2]} | {n} | {fmt(area)} |"
+            for s in solvers:
+                row = r.get(s, {})
+                if not row:
+                    line += " - | - | - | - |"
+                    continue
+                if row.get("error_occurred"):
+                    line += " did not reach | - | - | - |"
+                    continue
+                line += (f" {fmt(row.get('iterations'))} | {fmt(row.get('seconds'))} | "
+                         f"{row.get('tolerance', 0):.0e} | {fmt(row.get('fft_pairs_per_iteration'))} |")
+            if len(solvers) > 1:
+                a, b = r.get(solvers[0], {}), r.get(solvers[1], {})
+                ok = all(x.get("iterations") and not x.get("error_occurred") for x in (a, b))
+                line += (f" {fmt(a['iterations'] / b['iterations'])} | {fmt(a['seconds'] / b['seconds'])} |"
+                         if ok else " - | - |")
+            lines.append(line)
+    # Growth of the iteration count with the grid: the count at n over the count at the smallest n.
+    lines += ["", "Iterations at n over iterations at the smallest n of the case (the growth with the grid):", ""]
+    lines += ["| surface | boundary | contact % | solver | " + " | ".join(
+        f"n = {n}" for n in sorted({n for c in cases.values() for n in c})) + " |"]
+    sizes = sorted({n for c in cases.values() for n in c})
+    lines += ["|---|---|---|---|" + "---|" * len(sizes)]
+    for key in sorted(cases):
+        for s in solvers:
+            counts = {n: cases[key][n].get(s, {}).get("iterations") for n in cases[key]}
+            if not any(counts.values()):
+                continue
+            base = counts.get(min(counts))
+            cells = [fmt(counts[n] / base) if counts.get(n) and base else "-" for n in sizes]
+            lines.append(f"| {key[0]} | {key[1]} | {key[2]} | {s} | " + " | ".join(cells) + " |")
+    if curves:
+        lines += ["", "Load curves: 10 loads P/(E* A0) = 0.001 ... 0.01 on surface_a at tolerance 1e-8, in "
+                  "increasing order. cold: each load by a new solver; warm: each from the last solution scaled "
+                  "to the new load; extrapolated: each from the linear extrapolation of the last two solutions.",
+                  "", "| boundary | n | solver | start | iterations | seconds | iterations / cold |",
+                  "|---|---|---|---|---|---|---|"]
+        for key in sorted(curves):
+            c = curves[key]
+            for (solver, start) in sorted(c):
+                row = c[(solver, start)]
+                cold = c.get((solver, "cold"), {}).get("iterations")
+                lines.append(f"| {key[0]} | {key[1]} | {solver} | {start} | {fmt(row.get('iterations'))} | "
+                             f"{fmt(row.get('seconds'))} | "
+                             f"{fmt(row['iterations'] / cold) if cold else '-'} |")
+    return lines
+
+
 def main():
     with open(sys.argv[1]) as f:
         data = json.load(f)
     names = [b["name"] for b in data["benchmarks"]]
     if names and names[0].startswith("labelling/"):
         lines = labelling(data)
+    elif any("/contact:" in n or "/curve:" in n for n in names):
+        lines = bem_solvers(data)
     elif names and names[0].startswith("bem/"):
         lines = bem(data)
     else:

@@ -26,10 +26,15 @@
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/topography_io.hpp"
 #include "csv_rows.hpp"
+#include "each_solver.hpp"
 #include "reference_solutions.hpp"
 
 namespace contactbench {
 namespace {
+
+class Hardness : public EachSolver {};
+class Separation : public EachSolver {};
+class SinglePrecision : public EachSolver {};
 
 constexpr Real pi = std::numbers::pi;
 constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* [Pa]
@@ -100,18 +105,19 @@ TEST(Convolution, ManyThreadsGiveTheSameAnswerAsOne) {
   EXPECT_EQ((one - two).abs().maxCoeff(), 0);
 }
 
-TEST(Hardness, VeryHardReproducesTheElasticSolution) {
+TEST_P(Hardness, VeryHardReproducesTheElasticSolution) {
   // A cap far above every elastic pressure changes nothing: the elastic solution is the answer, to the
   // solver's tolerance. Both operators, and a cap just above the largest elastic pressure too.
   for (const bool periodic : {true, false}) {
     const Surface surface = rough_surface(64, periodic);
     const Real load = 0.02 * kModulus * 0.05;  // P/A0: a few percent of contact
-    PolonskyKeer elastic(surface, kModulus, {.tolerance = 1e-10});
+    PolonskyKeer elastic(surface, kModulus, {.tolerance = 1e-10, .solver = GetParam()});
     const ContactSolution reference = elastic.solve(load);
     ASSERT_TRUE(reference.converged);
     const Real largest = reference.pressure.maxCoeff();
     for (const Real factor : {1e6, 1.001}) {
-      PolonskyKeer capped(surface, kModulus, {.tolerance = 1e-10, .hardness = factor * largest});
+      PolonskyKeer capped(surface, kModulus,
+                          {.tolerance = 1e-10, .hardness = factor * largest, .solver = GetParam()});
       const ContactSolution& s = capped.solve(load);
       ASSERT_TRUE(s.converged) << periodic << " " << factor;
       EXPECT_EQ(s.plastic_points, 0);
@@ -122,16 +128,16 @@ TEST(Hardness, VeryHardReproducesTheElasticSolution) {
   }
 }
 
-TEST(Hardness, CapJustBelowThePeakIsCloseToElastic) {
+TEST_P(Hardness, CapJustBelowThePeakIsCloseToElastic) {
   // A cap at 99 % of the largest elastic pressure goes through the search on the flat's height (the
   // capped solves): the peak becomes plastic and the rest barely moves (measured: one plastic point, the
   // same contact count; allow 0.5 % of it).
   const Surface surface = rough_surface(64, true);
   const Real load = 0.02 * kModulus * 0.05;
-  PolonskyKeer elastic(surface, kModulus, {.tolerance = 1e-10});
+  PolonskyKeer elastic(surface, kModulus, {.tolerance = 1e-10, .solver = GetParam()});
   const ContactSolution reference = elastic.solve(load);
   const Real hardness = 0.99 * reference.pressure.maxCoeff();
-  PolonskyKeer capped(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness});
+  PolonskyKeer capped(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness, .solver = GetParam()});
   const ContactSolution& s = capped.solve(load);
   ASSERT_TRUE(s.converged);
   EXPECT_GT(s.plastic_points, 0);
@@ -142,7 +148,7 @@ TEST(Hardness, CapJustBelowThePeakIsCloseToElastic) {
   EXPECT_LT(s.residual, 1e-8);
 }
 
-TEST(Hardness, VerySoftTendsToTheBearingArea) {
+TEST_P(Hardness, VerySoftTendsToTheBearingArea) {
   // H far below the elastic contact pressures (1e-4 of the largest): the displacements H dx/E* are far
   // smaller than the spacing of the heights, so the contact is the bearing area: P/H of the area, and the
   // set {h > d} of the highest points. Load P/A0 = 0.2 H: 20 % of the points.
@@ -151,7 +157,7 @@ TEST(Hardness, VerySoftTendsToTheBearingArea) {
     const Surface surface = rough_surface(n, periodic);
     const Real scale = 0.05 * kModulus;  // pressures of the elastic contact: E* times a slope
     const Real hardness = 1e-4 * scale, load = 0.2 * hardness;
-    PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness});
+    PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness, .solver = GetParam()});
     const ContactSolution& s = solver.solve(load);
     ASSERT_TRUE(s.converged) << periodic;
     const Index points = n * n;
@@ -175,7 +181,7 @@ TEST(Hardness, VerySoftTendsToTheBearingArea) {
   }
 }
 
-TEST(Hardness, SphereBelowItsHertzPeakIsCappedAndWider) {
+TEST_P(Hardness, SphereBelowItsHertzPeakIsCappedAndWider) {
   // Hertz: a = 32 pixels, p0 = 3P/(2 pi a^2). With H = 0.7 p0 the pressure is flat at H in a plastic core,
   // the contact is wider than Hertz's, and at least P/H in area (p <= H everywhere).
   const Index n = 128;
@@ -184,7 +190,7 @@ TEST(Hardness, SphereBelowItsHertzPeakIsCappedAndWider) {
   const Real load = hertz.load_of_contact_radius(a), hardness = 0.7 * hertz.peak_pressure(load);
   const Surface surface = sphere(n, dx, radius);
   const Real area = surface.grid().nominal_area();
-  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness});
+  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness, .solver = GetParam()});
   const ContactSolution& s = solver.solve(load / area);
   ASSERT_TRUE(s.converged) << s.iterations;
   EXPECT_LE(s.pressure.maxCoeff(), hardness);
@@ -201,17 +207,17 @@ TEST(Hardness, SphereBelowItsHertzPeakIsCappedAndWider) {
   EXPECT_EQ(s.pressure(n / 2, n / 2), hardness);
 }
 
-TEST(Hardness, RefusesFullPlasticContactAndABadHardness) {
+TEST_P(Hardness, RefusesFullPlasticContactAndABadHardness) {
   const Surface surface = rough_surface(16, true);
-  PolonskyKeer solver(surface, kModulus, {.hardness = 1e9});
+  PolonskyKeer solver(surface, kModulus, {.hardness = 1e9, .solver = GetParam()});
   EXPECT_THROW(solver.solve(1e9), Error);  // P/A0 = H: full plastic contact
   EXPECT_THROW(solver.solve(2e9), Error);
-  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = 0.0}), Error);
-  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = -1.0}), Error);
-  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = std::nan("")}), Error);
+  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = 0.0, .solver = GetParam()}), Error);
+  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = -1.0, .solver = GetParam()}), Error);
+  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = std::nan(""), .solver = GetParam()}), Error);
 }
 
-TEST(Separation, GivesBackTheLoadThatLoadControlFound) {
+TEST_P(Separation, GivesBackTheLoadThatLoadControlFound) {
   // Load control at P/A0 reports the flat's height d; a cold solve for that d must carry P/A0 again. Both
   // converge to a relative pressure change of 1e-12, which fixes the pressure, hence d and the load, to
   // about that relative accuracy times the conditioning of the contact (a few hundred at most here): 1e-6
@@ -219,10 +225,10 @@ TEST(Separation, GivesBackTheLoadThatLoadControlFound) {
   for (const bool periodic : {true, false}) {
     const Surface surface = rough_surface(64, periodic);
     const Real load = 0.02 * kModulus * 0.05;
-    PolonskyKeer by_load(surface, kModulus, {.tolerance = 1e-12});
+    PolonskyKeer by_load(surface, kModulus, {.tolerance = 1e-12, .solver = GetParam()});
     const ContactSolution reference = by_load.solve(load);
     ASSERT_TRUE(reference.converged);
-    PolonskyKeer by_separation(surface, kModulus, {.tolerance = 1e-12});
+    PolonskyKeer by_separation(surface, kModulus, {.tolerance = 1e-12, .solver = GetParam()});
     const ContactSolution& s = by_separation.solve_for_separation(reference.separation);
     ASSERT_TRUE(s.converged) << periodic;
     EXPECT_NEAR(s.mean_pressure, load, 1e-6 * load) << periodic;
@@ -237,15 +243,15 @@ TEST(Separation, GivesBackTheLoadThatLoadControlFound) {
   }
 }
 
-TEST(Separation, HertzLoadOfAnApproach) {
-  // The sphere of PolonskyKeer.HertzContactOfASphere: the approach delta = a^2/R of the apex (a = 32 pixels)
+TEST_P(Separation, HertzLoadOfAnApproach) {
+  // The sphere of BemSolver.HertzContactOfASphere: the approach delta = a^2/R of the apex (a = 32 pixels)
   // must carry P = 4 E* a^3/(3 R). The load is an integral of the pressure, whose discretisation error is
   // of order (dx/a)^2 ~ 1e-3 (load control measured the approach to below 1e-4); P ~ delta^(3/2): allow
   // 3e-3 (measured: 5e-5).
   const Index n = 128;
   const Real dx = 1e-6, radius = 1e-3, a = 32 * dx;
   const Surface surface = sphere(n, dx, radius);
-  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
+  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000, .solver = GetParam()});
   const Real apex = solver.surface().heights().maxCoeff();
   const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
   const Real load = hertz.load_of_contact_radius(a);
@@ -257,7 +263,7 @@ TEST(Separation, HertzLoadOfAnApproach) {
   EXPECT_LT(s.residual, 1e-8);
 }
 
-TEST(Separation, WithHardnessGivesBackTheCappedLoad) {
+TEST_P(Separation, WithHardnessGivesBackTheCappedLoad) {
   // The capped sphere (H = 0.7 p0): load control searches the flat's height; solving for the height it
   // found carries the load again, with the same plastic core (tolerance as in the elastic case; measured:
   // 7e-14).
@@ -267,10 +273,11 @@ TEST(Separation, WithHardnessGivesBackTheCappedLoad) {
   const Real load = hertz.load_of_contact_radius(a), hardness = 0.7 * hertz.peak_pressure(load);
   const Surface surface = sphere(n, dx, radius);
   const Real mean = load / surface.grid().nominal_area();
-  PolonskyKeer by_load(surface, kModulus, {.tolerance = 1e-12, .hardness = hardness});
+  PolonskyKeer by_load(surface, kModulus, {.tolerance = 1e-12, .hardness = hardness, .solver = GetParam()});
   const ContactSolution reference = by_load.solve(mean);
   ASSERT_TRUE(reference.converged);
-  PolonskyKeer by_separation(surface, kModulus, {.tolerance = 1e-12, .hardness = hardness});
+  PolonskyKeer by_separation(surface, kModulus,
+                             {.tolerance = 1e-12, .hardness = hardness, .solver = GetParam()});
   const ContactSolution& s = by_separation.solve_for_separation(reference.separation);
   ASSERT_TRUE(s.converged);
   EXPECT_NEAR(s.mean_pressure, mean, 1e-6 * mean);
@@ -278,9 +285,9 @@ TEST(Separation, WithHardnessGivesBackTheCappedLoad) {
   EXPECT_EQ(s.contact_points, reference.contact_points);
 }
 
-TEST(Separation, AboveTheSurfaceNothingAndPeriodicNeedsAPositiveMeanGap) {
+TEST_P(Separation, AboveTheSurfaceNothingAndPeriodicNeedsAPositiveMeanGap) {
   const Surface surface = rough_surface(32, true);
-  PolonskyKeer solver(surface, kModulus);
+  PolonskyKeer solver(surface, kModulus, {.solver = GetParam()});
   const Real top = solver.surface().heights().maxCoeff();
   const ContactSolution& s = solver.solve_for_separation(top);
   EXPECT_TRUE(s.converged);
@@ -295,7 +302,7 @@ TEST(Separation, AboveTheSurfaceNothingAndPeriodicNeedsAPositiveMeanGap) {
   // punch, whose displacement dwarfs the roughness: full contact, at a finite load. (One range below is
   // not enough: a punch sinks deeper at its centre than at its edges, and lifts off there; measured 726 of
   // 1024 points, load control at the same load agreeing.)
-  PolonskyKeer window(rough_surface(32, false), kModulus, {.tolerance = 1e-10});
+  PolonskyKeer window(rough_surface(32, false), kModulus, {.tolerance = 1e-10, .solver = GetParam()});
   const Real bottom = window.surface().heights().minCoeff();
   const ContactSolution& full = window.solve_for_separation(bottom - 10 * (top - bottom));
   EXPECT_TRUE(full.converged);
@@ -303,7 +310,7 @@ TEST(Separation, AboveTheSurfaceNothingAndPeriodicNeedsAPositiveMeanGap) {
   EXPECT_GT(full.mean_pressure, 0);
 }
 
-TEST(SinglePrecision, AgreesWithDoubleToFloatsAccuracy) {
+TEST_P(SinglePrecision, AgreesWithDoubleToFloatsAccuracy) {
   // A 128 x 128 random surface at P/A0 = 0.01 E* (11 % of contact), both operators: float at the smallest
   // tolerance it accepts against double at 1e-10. Float's gap is good to about 1e-7 of the heights, so
   // the area fraction (node count) may differ by points whose gap is that close to zero, a few in 1e3 at
@@ -312,10 +319,11 @@ TEST(SinglePrecision, AgreesWithDoubleToFloatsAccuracy) {
   for (const bool periodic : {true, false}) {
     const Surface surface = rough_surface(128, periodic);
     const Real load = 0.01 * kModulus;
-    PolonskyKeer twice(surface, kModulus, {.tolerance = 1e-10});
+    PolonskyKeer twice(surface, kModulus, {.tolerance = 1e-10, .solver = GetParam()});
     const ContactSolution reference = twice.solve(load);
-    PolonskyKeer single(surface, kModulus,
-                        {.tolerance = kSinglePrecisionTolerance, .single_precision = true});
+    PolonskyKeer single(
+        surface, kModulus,
+        {.tolerance = kSinglePrecisionTolerance, .single_precision = true, .solver = GetParam()});
     const ContactSolution& s = single.solve(load);
     ASSERT_TRUE(s.converged) << periodic;  // float reaches its tolerance
     EXPECT_LT(s.change, kSinglePrecisionTolerance);
@@ -328,7 +336,7 @@ TEST(SinglePrecision, AgreesWithDoubleToFloatsAccuracy) {
   }
 }
 
-TEST(SinglePrecision, CappedAndSeparationControlledToo) {
+TEST_P(SinglePrecision, CappedAndSeparationControlledToo) {
   // The other modes in float: the capped sphere (as Hardness.SphereBelowItsHertzPeakIsCappedAndWider) and
   // the Hertz approach (as Separation.HertzLoadOfAnApproach), at float's tolerance.
   const Index n = 128;
@@ -337,26 +345,34 @@ TEST(SinglePrecision, CappedAndSeparationControlledToo) {
   const Real load = hertz.load_of_contact_radius(a), hardness = 0.7 * hertz.peak_pressure(load);
   const Surface surface = sphere(n, dx, radius);
   const Real area = surface.grid().nominal_area();
-  PolonskyKeer capped(
-      surface, kModulus,
-      {.tolerance = kSinglePrecisionTolerance, .hardness = hardness, .single_precision = true});
+  PolonskyKeer capped(surface, kModulus,
+                      {.tolerance = kSinglePrecisionTolerance,
+                       .hardness = hardness,
+                       .single_precision = true,
+                       .solver = GetParam()});
   const ContactSolution& s = capped.solve(load / area);
   ASSERT_TRUE(s.converged);
   EXPECT_LE(s.pressure.maxCoeff(), hardness * (1 + 1e-6));  // H rounded to float
   EXPECT_GT(s.plastic_points, 0);
   EXPECT_NEAR(s.pressure.mean() * area, load, 1e-5 * load);
-  PolonskyKeer elastic(surface, kModulus, {.tolerance = kSinglePrecisionTolerance, .single_precision = true});
+  PolonskyKeer elastic(
+      surface, kModulus,
+      {.tolerance = kSinglePrecisionTolerance, .single_precision = true, .solver = GetParam()});
   const Real apex = elastic.surface().heights().maxCoeff();
   const ContactSolution& e = elastic.solve_for_separation(apex - hertz.approach(load));
   ASSERT_TRUE(e.converged);
   EXPECT_NEAR(e.mean_pressure * area, load, 3e-3 * load);
 }
 
-TEST(SinglePrecision, RefusesATolerancePastFloat) {
+TEST_P(SinglePrecision, RefusesATolerancePastFloat) {
   const Surface surface = rough_surface(16, true);
-  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.tolerance = 1e-7, .single_precision = true}), Error);
-  EXPECT_NO_THROW(PolonskyKeer(surface, kModulus, {.tolerance = 1e-6, .single_precision = true}));
-  EXPECT_NO_THROW(PolonskyKeer(surface, kModulus, {.tolerance = 1e-7}));  // double: fine
+  EXPECT_THROW(
+      PolonskyKeer(surface, kModulus, {.tolerance = 1e-7, .single_precision = true, .solver = GetParam()}),
+      Error);
+  EXPECT_NO_THROW(
+      PolonskyKeer(surface, kModulus, {.tolerance = 1e-6, .single_precision = true, .solver = GetParam()}));
+  EXPECT_NO_THROW(
+      PolonskyKeer(surface, kModulus, {.tolerance = 1e-7, .solver = GetParam()}));  // double: fine
 }
 
 // `contactbench bem` run as a user would (the binary the build made), in a folder of its own.
@@ -438,6 +454,24 @@ TEST_F(BemCommand, WithoutHardnessNoPlasticColumn) {
   EXPECT_EQ(table[0].size(), header.size());
 }
 
+TEST_F(BemCommand, RecordsTheSolverAndRefusesAnUnknownOne) {
+  for (const std::string& name : solver_names()) {
+    const auto csv = folder_ / ("bem_" + name + ".csv");
+    ASSERT_EQ(bem("--loads 0.002 --solver " + name + " --out " + csv.string()).first, 0);
+    // The method's line in the CSV's header comments says which solver ran.
+    std::ifstream in(csv);
+    std::string line, method_line;
+    while (std::getline(in, line) && line.starts_with("#"))
+      if (line.starts_with("# bem:")) method_line = line;
+    EXPECT_NE(method_line.find("(" + name + ","), std::string::npos) << method_line;
+  }
+  const auto [status, err] = bem("--loads 0.002 --solver multigrid");
+  EXPECT_NE(status, 0);
+  EXPECT_NE(err.find("--solver"), std::string::npos) << err;
+  for (const std::string& name : solver_names())
+    EXPECT_NE(err.find(name), std::string::npos) << err;
+}
+
 TEST_F(BemCommand, RefusesWhatCannotBeSolved) {
   // Float cannot reach 1e-8; a load at the hardness is full plastic contact; H must be positive.
   const auto [float_status, float_err] = bem("--loads 0.002 --float --tolerance 1e-8");
@@ -450,6 +484,10 @@ TEST_F(BemCommand, RefusesWhatCannotBeSolved) {
   EXPECT_NE(zero_status, 0);
   EXPECT_NE(zero_err.find("--hardness"), std::string::npos) << zero_err;
 }
+
+CB_FOR_EACH_SOLVER(Hardness);
+CB_FOR_EACH_SOLVER(Separation);
+CB_FOR_EACH_SOLVER(SinglePrecision);
 
 }  // namespace
 }  // namespace contactbench

@@ -16,11 +16,14 @@
 #include "contactbench/bem/polonsky_keer.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
+#include "each_solver.hpp"
 #include "reference_solutions.hpp"
 #include "tolerances.hpp"
 
 namespace contactbench {
 namespace {
+
+class BemValidation : public EachSolver {};
 
 constexpr Real pi = std::numbers::pi;
 constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* of the paper's material [Pa]
@@ -99,9 +102,9 @@ constexpr Real kLambda = 100e-6, kAmplitude = 1e-6;
 const reference::Bisinusoid kBisinusoid{.amplitude = kAmplitude, .wavelength = kLambda, .modulus = kModulus};
 const Real kFullContact = kBisinusoid.full_contact_pressure();  // p*
 
-TEST(BemValidation, BisinusoidAtSmallLoadIsTwoHertzContacts) {
+TEST_P(BemValidation, BisinusoidAtSmallLoadIsTwoHertzContacts) {
   PolonskyKeer solver(bisinusoid(kBisinusoidPoints, kLambda, kAmplitude), kModulus,
-                      {.tolerance = 1e-12, .max_iterations = 20000});
+                      {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
   Labeller labeller(Topology::for_surface(Connectivity::four, true));
   std::vector<Real> deviation;
   for (const Real ratio : {0.005, 0.01, 0.05}) {  // increasing loads, warm-started
@@ -127,9 +130,9 @@ TEST(BemValidation, BisinusoidAtSmallLoadIsTwoHertzContacts) {
   EXPECT_GT(deviation[2], deviation[1] + 0.03);
 }
 
-TEST(BemValidation, BisinusoidNearFullContactLeavesTwoShrinkingIslands) {
+TEST_P(BemValidation, BisinusoidNearFullContactLeavesTwoShrinkingIslands) {
   PolonskyKeer solver(bisinusoid(kBisinusoidPoints, kLambda, kAmplitude), kModulus,
-                      {.tolerance = 1e-12, .max_iterations = 20000});
+                      {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
   Labeller labeller(Topology::for_surface(Connectivity::four, true));
   std::vector<Real> deviation;
   for (const Real ratio : {0.8, 0.9, 0.95}) {
@@ -156,7 +159,7 @@ TEST(BemValidation, BisinusoidNearFullContactLeavesTwoShrinkingIslands) {
 // Reciprocity and energy. The operator's own symmetry is tested in test_half_space.cpp on positive fields;
 // here on signed fields, odd sizes and rectangular pixels, and then on what the solver returns.
 
-TEST(BemValidation, HalfSpaceIsSymmetricAndPositiveOnSignedFields) {
+TEST(BemOperator, HalfSpaceIsSymmetricAndPositiveOnSignedFields) {
   std::mt19937_64 random(17);
   std::normal_distribution<Real> normal(0, 1e8);
   for (const bool periodic : {false, true}) {
@@ -193,11 +196,12 @@ void expect_reciprocal(const PolonskyKeer& solver, const ContactSolution& s1, co
   EXPECT_NEAR((s1.pressure * u2).sum(), (s2.pressure * u1).sum(), 1e-10 * scale) << what;
 }
 
-TEST(BemValidation, TwoSolutionsAreReciprocal) {
+TEST_P(BemValidation, TwoSolutionsAreReciprocal) {
   {  // periodic: surface A on 64 x 64 points, 239 and 1016 contact nodes
     const Surface surface = surface_a(64, 3);
     const Real gbar = rms_gradient(surface);
-    PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000});
+    PolonskyKeer solver(surface, kModulus,
+                        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const ContactSolution s1 = solver.solve(0.02 * kModulus * gbar);
     const ContactSolution s2 = solver.solve(0.1 * kModulus * gbar);
     expect_admissible(s1, solver.surface(), "surface A, low load");
@@ -207,7 +211,8 @@ TEST(BemValidation, TwoSolutionsAreReciprocal) {
   }
   {  // non-periodic: a sphere on 64 x 64 points, 29 and 89 contact nodes
     const Surface surface = sphere_cap(64, 64, 1e-6, 1e-3);
-    PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000});
+    PolonskyKeer solver(surface, kModulus,
+                        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const ContactSolution s1 = solver.solve(1e6);
     const ContactSolution s2 = solver.solve(5e6);
     expect_admissible(s1, solver.surface(), "sphere, low load");
@@ -217,7 +222,7 @@ TEST(BemValidation, TwoSolutionsAreReciprocal) {
   }
 }
 
-TEST(BemValidation, WorkOfTheLoadIsTheElasticEnergy) {
+TEST_P(BemValidation, WorkOfTheLoadIsTheElasticEnergy) {
   // Clapeyron: the elastic energy U = (1/2) sum p u dA, and P = dU/d(delta) along the load curve (delta the
   // approach; u = h - d on the contact set, p = 0 off it). So the work of the load between two states is the
   // energy gained. A sphere on 64 x 64 non-periodic points, 9 loads with Hertz approaches delta spaced evenly
@@ -227,7 +232,7 @@ TEST(BemValidation, WorkOfTheLoadIsTheElasticEnergy) {
   const Surface surface = sphere_cap(n, n, dx, radius);
   const Grid& grid = surface.grid();
   const Real pixel = grid.dx() * grid.dy();
-  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000});
+  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
   const auto half_space = make_half_space(grid, kModulus);
   std::vector<Real> load, approach, energy;
   for (Index k = 0; k <= intervals; ++k) {
@@ -263,7 +268,7 @@ TEST(BemValidation, WorkOfTheLoadIsTheElasticEnergy) {
 // ---------------------------------------------------------------------------------------------------------
 // Convergence under grid refinement.
 
-TEST(BemValidation, HertzConvergesUnderGridRefinement) {
+TEST_P(BemValidation, HertzConvergesUnderGridRefinement) {
   // One Hertz problem (R = 1 mm, a = 16 um) on grids of 32, 64, 128 points over 4a: 8, 16, 32 pixels per
   // contact radius. Errors against Hertz (docs/theory.md section 7) of the pressure field (relative L2), the
   // peak pressure p0 and the approach delta = a^2/R.
@@ -274,7 +279,8 @@ TEST(BemValidation, HertzConvergesUnderGridRefinement) {
   for (const Index n : {32, 64, 128}) {
     const Real dx = 4 * a / static_cast<Real>(n);
     const Surface surface = sphere_cap(n, n, dx, radius);
-    PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000});
+    PolonskyKeer solver(surface, kModulus,
+                        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const ContactSolution& s = solver.solve(load / surface.grid().nominal_area());
     expect_admissible(s, solver.surface(), "n = " + std::to_string(n));
     Real error = 0, norm = 0;
@@ -328,7 +334,7 @@ Real spike_compliance(const Surface& surface) {
   return u(kSpikeRow, kSpikeColumn) - (surface.grid().periodic ? u.mean() : 0);
 }
 
-TEST(BemValidation, ASingleSpikeCarriesTheWholeLoad) {
+TEST_P(BemValidation, ASingleSpikeCarriesTheWholeLoad) {
   // Below the load at which the spike is pushed down to the flat's level, all the load is on the spike:
   // its pressure is P/dA = N pbar, and the approach (apex less flat) is the spike's own displacement.
   for (const bool periodic : {true, false}) {
@@ -339,7 +345,8 @@ TEST(BemValidation, ASingleSpikeCarriesTheWholeLoad) {
       EXPECT_NEAR(compliance * kModulus / surface.grid().dx(), 1.122200, 5e-7);
     }
     const Real touching = kSpikeHeight / compliance;  // the spike's pressure that brings it to the flat
-    PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000});
+    PolonskyKeer solver(surface, kModulus,
+                        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const Real pbar = 0.3 * touching / static_cast<Real>(kSpikeGrid * kSpikeGrid);
     const ContactSolution& s = solver.solve(pbar);
     expect_admissible(s, solver.surface(), periodic ? "periodic" : "non-periodic");
@@ -357,7 +364,7 @@ TEST(BemValidation, ASingleSpikeCarriesTheWholeLoad) {
   }
 }
 
-TEST(BemValidation, ASpikePressedIntoTheFlatConverges) {
+TEST_P(BemValidation, ASpikePressedIntoTheFlatConverges) {
   // Past the touching load the flat around the spike comes into contact too: a contact set of hundreds of
   // nodes at one height, around one node above them. The problem is a strictly convex quadratic programme
   // (G is positive definite on the contact set), so its solution is unique; the solver must find it.
@@ -367,7 +374,8 @@ TEST(BemValidation, ASpikePressedIntoTheFlatConverges) {
     for (const Real factor : {1.5, 3.0, 10.0}) {
       const Surface surface = spike_on_a_flat(periodic);
       const Real touching = kSpikeHeight / spike_compliance(surface);
-      PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-10, .max_iterations = 2000});
+      PolonskyKeer solver(surface, kModulus,
+                          {.tolerance = 1e-10, .max_iterations = 2000, .solver = GetParam()});
       const ContactSolution& s = solver.solve(factor * touching / static_cast<Real>(kSpikeGrid * kSpikeGrid));
       const std::string what = std::string(periodic ? "periodic" : "non-periodic") + ", " +
                                std::to_string(factor) + " x the touching load";
@@ -376,7 +384,7 @@ TEST(BemValidation, ASpikePressedIntoTheFlatConverges) {
     }
 }
 
-TEST(BemValidation, AWarmStartFromOneContactNodeStillFindsThePenetration) {
+TEST_P(BemValidation, AWarmStartFromOneContactNodeStillFindsThePenetration) {
   // Load stepping: a load on the spike alone, then a load 10 times the touching one. The answer must not
   // depend on the start: the same contact set and pressure as a cold start (which converges at this load).
   // The pressures agree to the solver's tolerance, 1e-12 per iteration: tolerance::solver_consistency.
@@ -387,8 +395,8 @@ TEST(BemValidation, AWarmStartFromOneContactNodeStillFindsThePenetration) {
     const Surface surface = spike_on_a_flat(periodic);
     const Real touching = kSpikeHeight / spike_compliance(surface);
     const Real nodes = static_cast<Real>(kSpikeGrid * kSpikeGrid);
-    PolonskyKeer warm(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000});
-    PolonskyKeer cold(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000});
+    PolonskyKeer warm(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    PolonskyKeer cold(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const char* what = periodic ? "periodic" : "non-periodic";
     ASSERT_EQ(warm.solve(0.3 * touching / nodes).contact_points, 1) << what;
     const ContactSolution& w = warm.solve(10 * touching / nodes);
@@ -402,12 +410,63 @@ TEST(BemValidation, AWarmStartFromOneContactNodeStillFindsThePenetration) {
   }
 }
 
-TEST(BemValidation, AContactFractionOf1e4OnARandomSurface) {
+TEST_P(BemValidation, AnExtrapolatedLoadPathGivesTheSameAnswers) {
+  // Four increasing loads on the spike on a flat (one node, then a growing set), each started from the
+  // extrapolation of the last two solutions (LoadPathStart::extrapolated) and, separately, from a cold
+  // start: the start must not change the answer. Both stop at 1e-12: tolerance::solver_consistency.
+  for (const bool periodic : {true, false}) {
+    const Surface surface = spike_on_a_flat(periodic);
+    const Real touching = kSpikeHeight / spike_compliance(surface);
+    const Real nodes = static_cast<Real>(kSpikeGrid * kSpikeGrid);
+    PolonskyKeer path(surface, kModulus,
+                      {.tolerance = 1e-12,
+                       .max_iterations = 20000,
+                       .solver = GetParam(),
+                       .load_path = LoadPathStart::extrapolated});
+    const char* what = periodic ? "periodic" : "non-periodic";
+    for (const Real factor : {0.3, 3.0, 6.0, 12.0}) {
+      PolonskyKeer cold(surface, kModulus,
+                        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+      const ContactSolution& p = path.solve(factor * touching / nodes);
+      const ContactSolution& c = cold.solve(factor * touching / nodes);
+      expect_admissible(p, path.surface(), what);
+      EXPECT_EQ(p.contact_points, c.contact_points) << what << ", " << factor;
+      EXPECT_LT((p.pressure - c.pressure).abs().maxCoeff(),
+                tolerance::solver_consistency * c.pressure.maxCoeff())
+          << what << ", " << factor;
+    }
+  }
+}
+
+TEST_P(BemValidation, ACoarseStartGivesTheSameAnswer) {
+  // Surface A on 128 x 128 points, periodic and not, at about 10 % contact: a coarse start (the 64 grid
+  // solved first, PolonskyKeerOptions::coarse_start) must reach the cold start's answer; both stop at 1e-12:
+  // tolerance::solver_consistency. The hierarchy really ran: the coarse levels report their iterations.
+  for (const bool periodic : {true, false}) {
+    const Surface surface = surface_a(128, 11).with_periodic(periodic);
+    const Real load = 0.05 * kModulus * rms_gradient(surface) / 2;
+    PolonskyKeer coarse(
+        surface, kModulus,
+        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam(), .coarse_start = true});
+    PolonskyKeer cold(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    const ContactSolution& c = cold.solve(load);
+    const ContactSolution& s = coarse.solve(load);
+    const char* what = periodic ? "periodic" : "non-periodic";
+    expect_admissible(s, coarse.surface(), what);
+    EXPECT_GT(s.coarse_iterations, 0) << what;
+    EXPECT_EQ(s.contact_points, c.contact_points) << what;
+    EXPECT_LT((s.pressure - c.pressure).abs().maxCoeff(),
+              tolerance::solver_consistency * c.pressure.maxCoeff())
+        << what;
+  }
+}
+
+TEST_P(BemValidation, AContactFractionOf1e4OnARandomSurface) {
   // Surface A on 256 x 256 points at p/(E* gbar) = 3e-5: a handful of nodes in contact (A/A0 ~ 1e-4, about
   // kappa ~ 2-3 times the load), cold-started from the uniform pressure over all 65536 nodes.
   const Surface surface = surface_a(256, 11);
   const Real gbar = rms_gradient(surface);
-  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000});
+  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
   const ContactSolution& s = solver.solve(3e-5 * kModulus * gbar);
   expect_admissible(s, solver.surface(), "A/A0 ~ 1e-4");
   // A few nodes (measured 5, A/A0 = 7.6e-5, 39 iterations): between 1 and 30 (1.5e-5 <= A/A0 <= 4.6e-4).
@@ -421,12 +480,12 @@ TEST(BemValidation, AContactFractionOf1e4OnARandomSurface) {
   EXPECT_LT(h.maxCoeff() - s.separation, 0.05 * range);
 }
 
-TEST(BemValidation, AContactFractionOf099OnARandomSurface) {
+TEST_P(BemValidation, AContactFractionOf099OnARandomSurface) {
   // Surface A on 128 x 128 points at p/(E* gbar) = 1.2: about 1 % of the nodes out of contact, in many
   // small islands. No reference value exists; the band only makes sure that the case is the one intended.
   const Surface surface = surface_a(128, 11);
   const Real gbar = rms_gradient(surface);
-  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000});
+  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
   const ContactSolution& s = solver.solve(1.2 * kModulus * gbar);
   expect_admissible(s, solver.surface(), "A/A0 ~ 0.99");
   EXPECT_GT(node_fraction(s), 0.98);
@@ -438,14 +497,15 @@ TEST(BemValidation, AContactFractionOf099OnARandomSurface) {
   EXPECT_LT(s.residual, 1e-9);
 }
 
-TEST(BemValidation, ScaledSurfacesGiveTheSameDimensionlessAnswer) {
+TEST_P(BemValidation, ScaledSurfacesGiveTheSameDimensionlessAnswer) {
   // Linear elasticity has no length scale: scaling heights and lateral sizes by s leaves the slopes, hence
   // gbar and the pressure at a given p/(E* gbar), unchanged; scaling the heights alone by s scales gbar and
   // the pressure by s. Either way the contact set is the same and the pressure scales exactly. Scales 1e6 and
   // 1e-6: surface A (0.5 um rms) becomes 0.5 m rms, or 0.5 pm rms.
   const Surface base = surface_a(64, 5);
   const Real load = 0.05;  // p/(E* gbar)
-  PolonskyKeer reference_solver(base, kModulus, {.tolerance = 1e-12, .max_iterations = 20000});
+  PolonskyKeer reference_solver(base, kModulus,
+                                {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
   const ContactSolution reference = reference_solver.solve(load * kModulus * rms_gradient(base));
   expect_admissible(reference, reference_solver.surface(), "reference");
   for (const Real scale : {1e6, 1e-6})
@@ -456,7 +516,8 @@ TEST(BemValidation, ScaledSurfacesGiveTheSameDimensionlessAnswer) {
         grid.ly *= scale;
       }
       const Surface scaled(grid, base.heights() * scale);
-      PolonskyKeer solver(scaled, kModulus, {.tolerance = 1e-12, .max_iterations = 20000});
+      PolonskyKeer solver(scaled, kModulus,
+                          {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
       const ContactSolution& s = solver.solve(load * kModulus * rms_gradient(scaled));
       const std::string what =
           "scale " + std::to_string(scale) + (lateral ? ", lateral too" : ", heights only");
@@ -473,7 +534,7 @@ TEST(BemValidation, ScaledSurfacesGiveTheSameDimensionlessAnswer) {
     }
 }
 
-TEST(BemValidation, ADeepPitChangesNothingAHeightRangeOf1e6) {
+TEST_P(BemValidation, ADeepPitChangesNothingAHeightRangeOf1e6) {
   // Surface A (0.5 um rms) with one node 1 m deep: a height range of 2e6 times the roughness. The pit is
   // never touched, so the answer is the one with a 1 mm pit: the same pressure and contact set, and the flat
   // at the same place relative to the raw heights (the solver centres the heights, and the pit moves their
@@ -486,7 +547,8 @@ TEST(BemValidation, ADeepPitChangesNothingAHeightRangeOf1e6) {
     HeightMap h = base.heights();
     h(20, 30) = -depth;
     const Surface surface(base.grid(), h);
-    PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000});
+    PolonskyKeer solver(surface, kModulus,
+                        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     solutions.push_back(solver.solve(load));
     means.push_back(surface.mean_height());
     // Penetration is judged against the roughness, not against the metre of the pit.
@@ -503,15 +565,17 @@ TEST(BemValidation, ADeepPitChangesNothingAHeightRangeOf1e6) {
               1e-9 * base.rms_height());
 }
 
-TEST(BemValidation, WestergaardOnATransposedGridIsTheTransposedAnswer) {
+TEST_P(BemValidation, WestergaardOnATransposedGridIsTheTransposedAnswer) {
   // Westergaard's wavy surface on 64 x 8 points (waves along x) and 8 x 64 (waves along y), periodic: the
   // problems are transposes of each other, so are the answers, to round-off and solver tolerance
   // (tolerance::solver_consistency of the peak; measured 7e-15). The contact width is Westergaard's
   // (docs/theory.md section 7): pbar/p* = sin^2(pi a/lambda), right to half a pixel at each edge (allow 1.5
   // pixels of 64).
   const Real lambda = 64e-6, amplitude = 1e-6, p_star = pi * kModulus * amplitude / lambda;
-  PolonskyKeer along_x(wavy(64, 8, false, lambda, amplitude), kModulus, {.tolerance = 1e-12});
-  PolonskyKeer along_y(wavy(64, 8, true, lambda, amplitude), kModulus, {.tolerance = 1e-12});
+  PolonskyKeer along_x(wavy(64, 8, false, lambda, amplitude), kModulus,
+                       {.tolerance = 1e-12, .solver = GetParam()});
+  PolonskyKeer along_y(wavy(64, 8, true, lambda, amplitude), kModulus,
+                       {.tolerance = 1e-12, .solver = GetParam()});
   const ContactSolution& x = along_x.solve(0.3 * p_star);
   const ContactSolution& y = along_y.solve(0.3 * p_star);
   expect_admissible(x, along_x.surface(), "64 x 8");
@@ -525,7 +589,7 @@ TEST(BemValidation, WestergaardOnATransposedGridIsTheTransposedAnswer) {
   EXPECT_NEAR(node_fraction(x), 2 * a / lambda, 1.5 / 64);
 }
 
-TEST(BemValidation, HertzOnARectangularGridEqualsTheSquareOne) {
+TEST_P(BemValidation, HertzOnARectangularGridEqualsTheSquareOne) {
   // The non-periodic operator is exact for an unbounded half-space whatever the grid around the contact, so a
   // sphere on 96 x 48 points and on 96 x 96 (contact radius 12 pixels, well inside both) must give the same
   // contact set and pressure to solver tolerance (solver_consistency of the peak; measured 3e-12), and both
@@ -534,8 +598,8 @@ TEST(BemValidation, HertzOnARectangularGridEqualsTheSquareOne) {
   const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
   const Real load = hertz.load_of_contact_radius(a);
   const Surface rectangle = sphere_cap(96, 48, dx, radius), square = sphere_cap(96, 96, dx, radius);
-  PolonskyKeer on_rectangle(rectangle, kModulus, {.tolerance = 1e-12});
-  PolonskyKeer on_square(square, kModulus, {.tolerance = 1e-12});
+  PolonskyKeer on_rectangle(rectangle, kModulus, {.tolerance = 1e-12, .solver = GetParam()});
+  PolonskyKeer on_square(square, kModulus, {.tolerance = 1e-12, .solver = GetParam()});
   const ContactSolution& r = on_rectangle.solve(load / rectangle.grid().nominal_area());
   const ContactSolution& s = on_square.solve(load / square.grid().nominal_area());
   expect_admissible(r, on_rectangle.surface(), "96 x 48");
@@ -551,6 +615,8 @@ TEST(BemValidation, HertzOnARectangularGridEqualsTheSquareOne) {
   EXPECT_NEAR(on_rectangle.surface().heights().maxCoeff() - r.separation,
               on_square.surface().heights().maxCoeff() - s.separation, 1e-9 * a * a / radius);
 }
+
+CB_FOR_EACH_SOLVER(BemValidation);
 
 }  // namespace
 }  // namespace contactbench

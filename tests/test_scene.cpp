@@ -63,6 +63,7 @@ max_iterations = 5000
 periodic = true
 hardness = 5e9
 connectivity = 8
+solver = "polonsky_keer"
 
 [methods.plateau_4]
 method = "plateau"
@@ -307,6 +308,7 @@ TEST(Scene, FullSceneRoundTrips) {
   EXPECT_EQ(key(bem, "periodic"), Value{true});
   EXPECT_EQ(key(bem, "hardness"), Value{5e9});
   EXPECT_EQ(key(bem, "connectivity"), Value{std::int64_t{8}});
+  EXPECT_EQ(key(bem, "solver"), Value{std::string("polonsky_keer")});
   const MethodSpec& paper = first.method("plateau_4");
   EXPECT_EQ(key(paper, "levels"), Value{std::string("paper")});
   EXPECT_EQ(paper.method->needs({}).sweep->levels.count, 500);
@@ -341,6 +343,7 @@ TEST(Scene, DefaultsAreFilledIn) {
   EXPECT_FALSE(has_key(bem, "hardness"));
   EXPECT_EQ(key(bem, "precision"), Value{std::string("double")});
   EXPECT_EQ(key(bem, "connectivity"), Value{std::int64_t{4}});
+  EXPECT_EQ(key(bem, "solver"), Value{std::string(solver_name(kDefaultSolver))});
   const MethodSpec& plateau = scene.method("sweep");
   EXPECT_EQ(plateau.name(), "plateau");
   EXPECT_EQ(key(plateau, "connectivity"), Value{std::int64_t{4}});
@@ -647,6 +650,9 @@ std::vector<InvalidCase> invalid_cases() {
       {"ToleranceOne", bem("tolerance = 1"), "methods.bem.tolerance", "out of range", "(0, 1)"},
       {"MaxIterationsZero", bem("max_iterations = 0"), "methods.bem.max_iterations", "out of range", "[1, "},
       {"HardnessZero", bem("hardness = 0"), "methods.bem.hardness", "out of range", "> 0"},
+      {"BemUnknownSolver", bem("solver = \"multigrid\""), "methods.bem.solver",
+       "unknown choice \"multigrid\"", "\"polonsky_keer\", \"preconditioned_cg\""},
+      {"BemSolverNotAString", bem("solver = 1"), "methods.bem.solver", "wrong type", "\"polonsky_keer\""},
       {"BemConnectivitySix", bem("connectivity = 6"), "methods.bem.connectivity", "out of range: got 6",
        "4, 8"},
       {"BemRefineBelowSurface", bem("refine = 32"), "methods.bem.refine", "out of range", "64 points a side"},

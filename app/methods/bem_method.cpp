@@ -9,6 +9,7 @@
 #include "contactbench/app/scene_keys.hpp"
 #include "contactbench/app/scene_toml.hpp"
 #include "contactbench/app/stages.hpp"
+#include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/atomic_file.hpp"
 #include "contactbench/core/error.hpp"
 
@@ -28,7 +29,9 @@ class BemMethod final : public Method {
   // initialisers are the defaults).
   void read(const Section& s, const SceneContext& context) override {
     s.reject_unknown({"method", "refine", "tolerance", "max_iterations", "periodic", "hardness", "precision",
-                      "fields", "connectivity"});
+                      "fields", "connectivity", "solver"});
+    std::vector<std::string_view> solvers(solver_names().begin(), solver_names().end());
+    if (const auto name = s.choice("solver", solvers)) solve_.solver = solver_kind(*name);
     const std::int64_t low = context.surface_points.value_or(2);
     const auto refine = s.integer(
         "refine", false,
@@ -75,6 +78,7 @@ class BemMethod final : public Method {
     keys.put("precision", solve_.single_precision ? "single" : "double");
     if (!solve_.fields.empty()) keys.put("fields", solve_.fields);
     keys.put("connectivity", std::int64_t{connectivity_});
+    keys.put("solver", std::string(solver_name(solve_.solver)));
   }
 
   MethodNeeds needs(const SceneContext& context) const override {
@@ -151,7 +155,7 @@ class BemMethod final : public Method {
     if (solve_.hardness) curve.columns.emplace_back("plastic_fraction", plastic);  // nodes at p = H / all
     BemStage stage = solve_;
     stage.periodic = products.periodic;
-    curve.parameters = "Polonsky-Keer " + stage.name().substr(4) +
+    curve.parameters = "BEM " + stage.name().substr(4) +
                        ", area perimeter-corrected (node count in area_fraction_nodes), spots by " +
                        std::to_string(connectivity_) + "-connectivity";
     return curve;
