@@ -59,7 +59,12 @@ void register_errors(py::module_& m) {
         x.attr("line") = e.line();
       });
     } catch (const SceneError& e) {
-      raise(scene_error, e.what(), [&](py::object& x) { x.attr("problems") = py::cast(e.problems()); });
+      raise(scene_error, e.what(), [&](py::object& x) {
+        py::list problems;
+        for (const std::string& problem : e.problems())
+          problems.append(problem);
+        x.attr("problems") = problems;
+      });
     } catch (const Error& e) {
       raise(error, e.what(), [](py::object&) {});
     }

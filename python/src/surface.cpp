@@ -120,8 +120,10 @@ void register_surface(py::module_& m) {
           },
           py::kw_only(), py::arg("threads") = 1,
           "spectral_moments(self): profile moments, Hann window when not periodic (docs/theory.md section 1)")
-      .def("write", &write_surface, py::arg("path"),
-           "writes the project's lossless text format (read back bit for bit by read_topography)")
+      .def(
+          "write", [](const Surface& s, const std::filesystem::path& path) { write_surface(path, s); },
+          py::arg("path"),
+          "writes the project's lossless text format (read back bit for bit by read_topography)")
       .def("__repr__", [](const Surface& s) {
         return "Surface(" + std::to_string(s.nx()) + " x " + std::to_string(s.ny()) + " points, " +
                std::string(py::repr(py::float_(s.grid().lx))) + " x " +
