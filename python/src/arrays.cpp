@@ -67,6 +67,12 @@ py::array view_of(const std::vector<Index>& values, const py::handle& owner) {
   return vector_view(values, owner);
 }
 
+int checked_threads(int threads) {
+  if (threads < 1 || threads > 1024)
+    throw Error("threads: accepted values are whole numbers from 1 to 1024, got " + std::to_string(threads));
+  return threads;
+}
+
 void check_signals() {
   if (PyErr_CheckSignals() != 0) throw py::error_already_set();
 }

@@ -36,7 +36,7 @@ class BemSolver {
       : modulus_(modulus),
         labeller_(Topology::for_surface(connectivity == 8 ? Connectivity::eight : Connectivity::four,
                                         periodic.value_or(surface.grid().periodic)),
-                  threads) {
+                  checked_threads(threads)) {
     if (!(std::isfinite(modulus) && modulus > 0))
       throw Error("modulus: E* must be finite and > 0 Pa, got " + std::to_string(modulus));
     if (connectivity != 4 && connectivity != 8)

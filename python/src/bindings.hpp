@@ -34,6 +34,9 @@ py::array view_of(const HeightMap& map, const py::handle& owner);
 py::array view_of(const std::vector<Real>& values, const py::handle& owner);
 py::array view_of(const std::vector<Index>& values, const py::handle& owner);
 
+// `threads` as the CLI accepts it (--threads): 1 to 1024, else Error naming the argument.
+int checked_threads(int threads);
+
 // Releases the GIL while `work` runs; afterwards raises KeyboardInterrupt (or whatever a signal handler
 // raised) if Ctrl-C was pressed meanwhile.
 void check_signals();

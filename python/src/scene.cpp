@@ -20,6 +20,7 @@ namespace contactbench::python {
 namespace {
 
 SceneReport run(const Scene& scene, int threads, bool progress) {
+  checked_threads(threads);
   py::gil_scoped_release unlocked;
   return run_scene(scene, {.threads = threads, .progress = progress ? &std::cerr : nullptr});
 }

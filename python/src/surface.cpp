@@ -27,6 +27,7 @@ Surface surface_from_array(const py::handle& heights, Real lx, std::optional<Rea
 // grid itself or, with refine, on a finer one (the same realisation, never a new one).
 Surface generate(const Grid& grid, const SelfAffinePsd& psd, std::uint64_t seed, std::optional<Index> refine,
                  std::optional<Index> refine_y, int threads) {
+  checked_threads(threads);
   const SpectrumMap hhat = generate_coefficients(grid, psd, seed);
   const Index nx = refine.value_or(grid.nx);
   const Index ny = refine_y.value_or(refine.value_or(grid.ny));
@@ -115,6 +116,7 @@ void register_surface(py::module_& m) {
       .def(
           "moments",
           [](const Surface& s, int threads) {
+            checked_threads(threads);
             py::gil_scoped_release unlocked;
             return spectral_moments(s, threads);
           },
@@ -146,7 +148,8 @@ void register_surface(py::module_& m) {
       "measured data and to the stored flag for the project's format. Heights come back in metres as stored "
       "(no mean removed). A bad file raises contactbench.InputError naming the file and line.");
   m.def(
-      "spectral_moments", [](const Surface& s, int threads) { return spectral_moments(s, threads); },
+      "spectral_moments",
+      [](const Surface& s, int threads) { return spectral_moments(s, checked_threads(threads)); },
       py::arg("surface"), py::kw_only(), py::arg("threads") = 1,
       "Profile moments m0 [m^2], m2x, m2y [-], m4x, m4y [1/m^2] (docs/theory.md section 1).");
   m.def(
@@ -186,6 +189,7 @@ void register_surface(py::module_& m) {
   m.def(
       "refine",
       [](const Surface& s, Index nx, std::optional<Index> ny, int threads) {
+        checked_threads(threads);
         py::gil_scoped_release unlocked;
         return refine(s, nx, ny.value_or(nx), threads);
       },

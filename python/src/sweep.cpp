@@ -65,6 +65,7 @@ void register_sweep(py::module_& m) {
       "sweep",
       [](const Surface& surface, const py::object& levels, int connectivity, std::optional<bool> periodic,
          int threads) {
+        checked_threads(threads);
         const SweepLevels parsed = parse_levels(levels);
         const Topology t = topology(connectivity, periodic.value_or(surface.grid().periodic));
         py::gil_scoped_release unlocked;

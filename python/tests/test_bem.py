@@ -73,3 +73,22 @@ def test_results_are_independent_of_later_solves():
     kept = first.pressure.copy()
     solver.solve(0.02 * MODULUS)
     assert np.array_equal(first.pressure, kept)  # each result owns its fields
+
+
+def test_ctrl_c_stops_between_loads():
+    # SIGINT arrives while solve_loads works through many loads (each a few tens of ms on 256^2): the call ends
+    # with KeyboardInterrupt after the load in progress, long before the last load.
+    import os
+    import signal
+    import threading
+    import time
+
+    solver = cb.BemSolver(cb.surface_a(seed=6), MODULUS)
+    loads = list(np.linspace(1e-3, 5e-2, 400))
+    timer = threading.Timer(0.2, os.kill, (os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        solver.solve_loads(loads)
+    timer.join()
+    assert time.monotonic() - start < 10

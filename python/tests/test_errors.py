@@ -43,6 +43,10 @@ def test_bad_sizes_and_parameters():
         cb.Surface(np.zeros((4, 4)), lx=-1.0)
     with pytest.raises(ValueError, match="hurst"):
         cb.generate_surface(cb.paper.grid(), cb.SelfAffinePsd(sigma=1e-6, hurst=1.5, qr=1e5))
+    for call in [lambda: cb.surface_a(threads=0), lambda: cb.sweep(surface(), threads=-1),
+                 lambda: cb.BemSolver(surface(), 1e11, threads=0), lambda: surface().moments(threads=2000)]:
+        with pytest.raises(ValueError, match="threads"):
+            call()
     with pytest.raises(ValueError, match="levels"):
         cb.sweep(surface(), levels="everything")
     with pytest.raises(ValueError, match="connectivity"):
