@@ -7,7 +7,11 @@ set(CB_PYTHON_EXECUTABLE "/usr/bin/python3" CACHE FILEPATH
 
 set(Python3_EXECUTABLE "${CB_PYTHON_EXECUTABLE}")
 find_package(Python3 QUIET COMPONENTS Interpreter Development.Module NumPy)
-find_package(pybind11 2.6 QUIET CONFIG)
+# Only with that interpreter found: pybind11's config would otherwise search PATH for its own python (and fail
+# hard on a pyenv shim).
+if(Python3_FOUND AND Python3_NumPy_FOUND)
+  find_package(pybind11 2.6 QUIET CONFIG)
+endif()
 set(_cb_python_default OFF)
 if(Python3_FOUND AND Python3_NumPy_FOUND AND pybind11_FOUND)
   set(_cb_python_default ON)
