@@ -15,6 +15,9 @@ packages=(
   clang-format                    # the formatting check in the test command
   gnuplot-nox                     # load-area and accuracy-vs-time plots
   python3                         # renders benchmark JSON as Markdown tables (scripts/render_bench.py)
+  python3-dev pybind11-dev        # the Python module (python/), built for Debian's /usr/bin/python3
+  python3-numpy python3-pytest    # its arrays and its tests
+  python3-matplotlib              # optional: the plots of examples/python/
 )
 
 # `install-deps.sh fuzz`: also clang with libFuzzer and its OpenMP runtime (the fuzz preset; CI runs it).

@@ -1,0 +1,28 @@
+"""Shared fixtures: the CLI built beside the module (ctest passes CB_CLI_PATH) and the source tree."""
+import os
+import pathlib
+import subprocess
+
+import pytest
+
+SOURCE_DIR = pathlib.Path(os.environ.get("CB_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
+
+
+@pytest.fixture
+def cli():
+    """Runs the contactbench program with the given arguments; fails the test on a non-zero exit."""
+    path = os.environ.get("CB_CLI_PATH")
+    if not path:
+        pytest.skip("CB_CLI_PATH is not set (ctest sets it to the contactbench program of the build)")
+
+    def run(*args):
+        done = subprocess.run([path, *map(str, args)], capture_output=True, text=True)
+        assert done.returncode == 0, done.stderr
+        return done.stdout
+
+    return run
+
+
+@pytest.fixture
+def source_dir():
+    return SOURCE_DIR
