@@ -326,7 +326,12 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     };
     // Preconditioned: producing the residual r = g - gbar on the elastic set (0 elsewhere), consuming its
     // filtered image, kept on the elastic set only as z (its mean there is taken out in the direction pass).
-    const bool preconditioned = preconditioner_ != nullptr;
+    // The filter serves load control only. Under separation control (and so with a hardness, which is met by
+    // separation control) the residual is not the gap less its mean on the set: preconditioned that way the
+    // iteration stopped after 6 iterations on surface A with a residual of 5 % of the height range and the
+    // load 100 x off, yet "converged". Those solves iterate as plain Polonsky-Keer (python/tests/test_bem.py
+    // checks that separation control gives the load back with the default solver).
+    const bool preconditioned = preconditioner_ != nullptr && kLoad;
     T* const z = z_.data();
     auto residual = [&](Index first, Index rows, T* buffer, Index ld, int thread) {
       Partial& part = partial_[static_cast<std::size_t>(thread)];

@@ -18,6 +18,10 @@
 //   3/4 of a padded pair, as the operator's), far fewer iterations, and a count that grows much more slowly
 //   with the grid (results/bench/bem_solvers.md).
 //
+// preconditioned_cg applies to load-controlled elastic solves; separation control and the hardness cap (met
+// through separation control) iterate as polonsky_keer whichever solver is chosen (polonsky_keer.cpp says
+// why).
+//
 // Stopping criteria, the same tolerance for both:
 // - the relative change of the pressure in one iteration (Polonsky & Keer's),
 //     sum |p_new - p_old| / sum p_new < tolerance;

@@ -13,6 +13,7 @@
 #include "bindings.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
 #include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench::python {
@@ -32,7 +33,7 @@ class BemSolver {
  public:
   BemSolver(const Surface& surface, Real modulus, std::optional<Real> tolerance, Index max_iterations,
             std::optional<Real> hardness, bool single_precision, std::optional<bool> periodic,
-            int connectivity, int threads)
+            int connectivity, const std::string& solver, int threads)
       : modulus_(modulus),
         labeller_(Topology::for_surface(connectivity == 8 ? Connectivity::eight : Connectivity::four,
                                         periodic.value_or(surface.grid().periodic)),
@@ -45,9 +46,8 @@ class BemSolver {
         .tolerance = tolerance.value_or(single_precision ? kSinglePrecisionTolerance : kDefaultTolerance),
         .max_iterations = max_iterations,
         .hardness = hardness,
-        .single_precision = single_precision};
-    // SOLVER OPTION: the solver registry (bem/ branch) adds the `solver` keyword here; until then the solver
-    // is Polonsky-Keer, the only one the C++ library has.
+        .single_precision = single_precision,
+        .solver = solver_kind(solver, "solver")};  // bem/solver_registry.hpp: unknown names list the known
     const Surface solved = periodic ? surface.with_periodic(*periodic) : surface;
     solver_ = std::make_unique<PolonskyKeer>(solved, modulus, options_, threads);
   }
@@ -158,11 +158,11 @@ void register_bem(py::module_& m) {
       "periodic: the half-space (default: the surface's own periodicity); connectivity 4 or 8 for the spot "
       "count; threads for the FFTs.")
       .def(py::init<const Surface&, Real, std::optional<Real>, Index, std::optional<Real>, bool,
-                    std::optional<bool>, int, int>(),
+                    std::optional<bool>, int, const std::string&, int>(),
            py::arg("surface"), py::arg("modulus"), py::kw_only(), py::arg("tolerance") = py::none(),
            py::arg("max_iterations") = 20000, py::arg("hardness") = py::none(),
            py::arg("single_precision") = false, py::arg("periodic") = py::none(), py::arg("connectivity") = 4,
-           py::arg("threads") = 1)
+           py::arg("solver") = std::string(solver_name(kDefaultSolver)), py::arg("threads") = 1)
       .def(
           "solve",
           [](BemSolver& s, Real mean_pressure) { return unlocked([&] { return s.solve(mean_pressure); }); },

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "bindings.hpp"
+#include "contactbench/app/cli.hpp"
 #include "contactbench/app/comparison.hpp"
 #include "contactbench/app/load_area_plots.hpp"
 #include "contactbench/app/output_folder.hpp"
@@ -21,8 +22,9 @@ namespace {
 
 SceneReport run(const Scene& scene, int threads, bool progress) {
   checked_threads(threads);
+  const RunObserver observer = terminal_observer("contactbench (python)");
   py::gil_scoped_release unlocked;
-  return run_scene(scene, {.threads = threads, .progress = progress ? &std::cerr : nullptr});
+  return run_scene(scene, {.threads = threads, .observer = progress ? &observer : nullptr});
 }
 
 // write_report and the plots into `folder`, atomically, as `contactbench run` does; `command` is the
@@ -60,27 +62,45 @@ void register_scene(py::module_& m) {
       .def("to_toml", &to_toml, "the scene with defaults filled in, as TOML that read_scene accepts again")
       .def("to_json", &to_json, "the same as one JSON object");
 
-  py::class_<MethodResult>(m, "MethodResult", "One method's result in a scene report.")
-      .def_readonly("label", &MethodResult::label)
+  py::class_<MethodCurve>(m, "MethodCurve",
+                          "A method's curve at the scene's loads (the loads are the report's, held once).")
       .def_property_readonly(
-          "kind", [](const MethodResult& r) { return std::string(to_string(r.kind)); },
-          "bem, plateau, gw_mccool, bgt, bgt_linear or persson")
-      .def_readonly(
-          "curve", &MethodResult::curve,
-          "LoadAreaCurve at the scene's loads (the BEM's area_fraction is the perimeter-corrected one)")
+          "area_fraction",
+          [](const py::object& self) { return view_of(self.cast<const MethodCurve&>().area_fraction, self); },
+          "A/A0 as compared (MethodResult.compared_area says which area)")
+      .def_property_readonly(
+          "separation",
+          [](const py::object& self) { return view_of(self.cast<const MethodCurve&>().separation, self); },
+          "[m] from the mean plane of the heights; NaN where the method has none")
+      .def_property_readonly(
+          "spots",
+          [](const py::object& self) { return view_of(self.cast<const MethodCurve&>().spots, self); },
+          "contact spots; NaN where the method counts none")
+      .def_readonly("parameters", &MethodCurve::parameters, "the method as run")
       .def_property_readonly(
           "columns",
           [](const py::object& self) {
             py::dict columns;
-            for (const auto& [name, values] : self.cast<const MethodResult&>().columns)
+            for (const auto& [name, values] : self.cast<const MethodCurve&>().columns)
               columns[py::str(name)] = view_of(values, self);
             return columns;
           },
+          "the method's own columns (e.g. iterations, area_fraction_nodes for the BEM): name -> array");
+
+  py::class_<MethodResult>(m, "MethodResult", "One method's result in a scene report.")
+      .def_readonly("label", &MethodResult::label)
+      .def_readonly("method", &MethodResult::method, "the registry name: bem, plateau, gw_mccool, ...")
+      .def_readonly("compared_area", &MethodResult::compared_area, "which area curve.area_fraction is")
+      .def_readonly("curve", &MethodResult::curve, "MethodCurve at the scene's loads (SceneReport.loads)")
+      .def_property_readonly(
+          "columns", [](const py::object& self) { return self.attr("curve").attr("columns"); },
           "the method's own columns (e.g. iterations, area_fraction_nodes for the BEM): name -> array")
       .def_readonly("seconds", &MethodResult::seconds, "wall time of the stages the method needed [s]");
 
   py::class_<SceneReport>(m, "SceneReport", "What running a scene produced (app/scene_run.hpp).")
       .def_readonly("scene", &SceneReport::scene)
+      .def_property_readonly(
+          "loads", [](const SceneReport& r) { return r.loads(); }, "P/(E* A0) of every curve, held once")
       .def_readonly("grid", &SceneReport::grid, "the scene surface's grid (before a method's refinement)")
       .def_readonly("moments", &SceneReport::moments, "the scene surface's profile moments")
       .def_property_readonly(
@@ -102,7 +122,7 @@ void register_scene(py::module_& m) {
               curves[method.attr("label")] = method.attr("curve");
             return curves;
           },
-          "label -> LoadAreaCurve")
+          "label -> MethodCurve")
       .def_readonly("threads", &SceneReport::threads)
       .def_readonly("seconds", &SceneReport::seconds, "the whole run [s]");
 

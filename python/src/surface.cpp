@@ -4,8 +4,11 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <optional>
+#include <string>
 
 #include "bindings.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/formats/surface_repair.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/surface.hpp"
@@ -136,17 +139,35 @@ void register_surface(py::module_& m) {
   m.def(
       "read_topography",
       [](const std::filesystem::path& path, std::optional<Real> lx, std::optional<Real> ly,
-         std::optional<bool> periodic) {
-        return read_topography(path, {.lx = lx, .ly = ly, .periodic = periodic});
+         std::optional<bool> periodic, std::optional<std::string> channel, const std::string& fill,
+         const std::string& level) {
+        TopographyReadOptions options;
+        options.lx = lx;
+        options.ly = ly;
+        options.periodic = periodic;
+        options.channel = std::move(channel);
+        const auto fill_method = parse_fill_method(fill);
+        if (!fill_method)
+          throw Error("fill: expected \"none\", \"harmonic\" or \"mean\", got \"" + fill + "\"");
+        options.fill = *fill_method;
+        const auto levelling = parse_levelling(level);
+        if (!levelling) throw Error("level: expected \"none\", \"mean\" or \"plane\", got \"" + level + "\"");
+        options.level = *levelling;
+        return read_topography(path, options);
       },
       py::arg("path"), py::kw_only(), py::arg("lx") = py::none(), py::arg("ly") = py::none(),
-      py::arg("periodic") = py::none(),
-      "Reads a topography file in any format the project reads (the project's, interferometer exports, "
-      "Gwyddion text exports, plain matrices in metres), detected from its first line. lx, ly [m] are "
-      "required "
-      "for a plain matrix and must agree with a file that states its sizes. periodic defaults to False for "
-      "measured data and to the stored flag for the project's format. Heights come back in metres as stored "
-      "(no mean removed). A bad file raises contactbench.InputError naming the file and line.");
+      py::arg("periodic") = py::none(), py::arg("channel") = py::none(), py::arg("fill") = "none",
+      py::arg("level") = "none",
+      "Reads a topography file in any format the project reads (docs/formats.md: x3p, sdf, npy, MetroPro, "
+      "Nanoscope, Sensofar, Digital Surf, Wyko, NetCDF, the project's, interferometer and Gwyddion text "
+      "exports, "
+      "plain matrices in metres), detected from its content. lx, ly [m] are required for a plain matrix or "
+      "an "
+      "npy array and must agree with a file that states its sizes. periodic defaults to False for measured "
+      "data and to the stored flag for the project's format. channel: a name or a 0-based index as text "
+      "(default: the first height channel). fill: \"none\" (refuse invalid points), \"harmonic\" or "
+      "\"mean\". level: \"none\", \"mean\" or \"plane\". Heights come back in metres (no mean removed "
+      "unless levelled). A bad file raises contactbench.InputError naming the file and line.");
   m.def(
       "spectral_moments",
       [](const Surface& s, int threads) { return spectral_moments(s, checked_threads(threads)); },

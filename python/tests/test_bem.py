@@ -23,7 +23,7 @@ def test_equals_the_cli(cli, tmp_path):
         # Same solver, same inputs, same order: the same iterations; areas to 1e-12 (the CSV prints 17 digits).
         assert result.iterations == int(row["iterations"])
         assert result.spots == int(row["spots"])
-        assert result.area_fraction == pytest.approx(float(row["area_fraction"]), abs=1e-12)
+        assert result.area_fraction == pytest.approx(float(row["area_fraction_nodes"]), abs=1e-12)
         assert result.area_fraction_corrected == pytest.approx(float(row["area_fraction_corrected"]), abs=1e-12)
         assert result.separation == pytest.approx(float(row["separation"]), rel=1e-12)
         assert result.load == pytest.approx(float(row["load"]), rel=1e-15)

@@ -57,7 +57,8 @@ values = [0.005, 0.02]
     assert report.scene.name == "small" and report.grid.nx == 64
     assert all(seconds >= 0 for _, seconds in report.stages) and report.stages
     bem = report.curves["bem"]
-    assert np.array_equal(bem.load, [0.005, 0.02])
+    assert np.array_equal(report.loads, [0.005, 0.02])
+    assert len(bem.area_fraction) == 2
     assert "iterations" in report.methods[0].columns
     assert comparison.reference == "bem"
     assert np.all(comparison.methods[0].relative_error == 0)  # the reference against itself
