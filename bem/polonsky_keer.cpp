@@ -52,6 +52,7 @@ class PolonskyKeer::Engine {
   };
   virtual ~Engine() = default;
   virtual void forget() = 0;
+  void set_between_iterations(std::function<void()> hook) { between_iterations_ = std::move(hook); }
   // Whether a solve would start from a previous solution.
   virtual bool warm() const = 0;
   // The next solve starts from this pressure [Pa] (ny x nx), as from a previous solution.
@@ -74,6 +75,9 @@ class PolonskyKeer::Engine {
   // Of the last solve: the flat's height, and the mean pressure (sum p / points).
   virtual double separation() const = 0;
   virtual double mean_pressure() const = 0;
+
+ protected:
+  std::function<void()> between_iterations_;  // PolonskyKeerOptions::between_iterations
 };
 
 // The iteration of PK's algorithm in scalar T (double, or float for large grids), keeping its state
@@ -434,6 +438,14 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
         }
       }
       if (iteration == max_iterations) break;
+      if (this->between_iterations_) {
+        try {
+          this->between_iterations_();
+        } catch (...) {
+          forget();  // the fields are mid-iteration: nothing to warm-start from
+          throw;
+        }
+      }
       if (kLoad && moments.elastic == 0) throw Error("Polonsky-Keer: the contact set became empty");
       // The gap made zero-mean on the elastic set (load control), the conjugate direction there (PK eq. 11),
       // restarted after the set grew (delta = 0).
@@ -760,6 +772,7 @@ PolonskyKeer::PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOpt
     engine_ = std::make_unique<PolonskyKeerCore<float>>(surface_, modulus, threads, preconditioned);
   else
     engine_ = std::make_unique<PolonskyKeerCore<double>>(surface_, modulus, threads, preconditioned);
+  engine_->set_between_iterations(options_.between_iterations);
 }
 
 PolonskyKeer::~PolonskyKeer() = default;

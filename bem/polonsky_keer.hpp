@@ -105,6 +105,10 @@ struct PolonskyKeerOptions {
   // A cold load-controlled solve starts from the solution of the surface averaged over 2 x 2 blocks, solved
   // to 1e-4 (itself from a coarser one, down to 64 points a side), its pressure injected (docs/solvers.md).
   bool coarse_start = false;
+  // Called before every iteration (none: nothing is called). It may throw to abandon the solve (a user's
+  // Ctrl-C in the Python module): the exception leaves solve() or solve_for_separation(), and the solver
+  // forgets its warm start, so the next solve starts afresh.
+  std::function<void()> between_iterations = nullptr;
 };
 
 // The smallest tolerance single precision accepts: ten times float's epsilon (1.2e-7), with room for the

@@ -1,7 +1,7 @@
 // The boundary-element ground truth as a solver object (bem/polonsky_keer.hpp, bem/contact_statistics.hpp,
-// docs/theory.md section 6). Solves release the GIL. Ctrl-C is honoured between loads of solve_loads; a
-// single solve cannot be interrupted mid-way, because PolonskyKeer offers no per-iteration callback to check
-// it from.
+// docs/theory.md section 6). Solves release the GIL. Ctrl-C is honoured between iterations: the solver's
+// between_iterations hook takes the GIL, lets Python run its signal handlers and abandons the solve with
+// KeyboardInterrupt (the solver then starts its next solve afresh).
 #include <pybind11/stl.h>
 
 #include <cmath>
@@ -47,7 +47,12 @@ class BemSolver {
         .max_iterations = max_iterations,
         .hardness = hardness,
         .single_precision = single_precision,
-        .solver = solver_kind(solver, "solver")};  // bem/solver_registry.hpp: unknown names list the known
+        .solver = solver_kind(solver, "solver")};
+    // Ctrl-C between iterations: a microsecond's check of Python's signal flag per iteration.
+    options_.between_iterations = [] {
+      py::gil_scoped_acquire locked;
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    };  // bem/solver_registry.hpp: unknown names list the known
     const Surface solved = periodic ? surface.with_periodic(*periodic) : surface;
     solver_ = std::make_unique<PolonskyKeer>(solved, modulus, options_, threads);
   }
@@ -168,8 +173,7 @@ void register_bem(py::module_& m) {
           [](BemSolver& s, Real mean_pressure) { return unlocked([&] { return s.solve(mean_pressure); }); },
           py::arg("mean_pressure"),
           "Solves for the mean pressure P/A0 [Pa] (>= 0), warm-started from the previous solve. Releases the "
-          "GIL; "
-          "not interruptible mid-solve.")
+          "GIL; Ctrl-C stops it between iterations (KeyboardInterrupt).")
       .def(
           "solve_for_separation",
           [](BemSolver& s, Real separation) {
@@ -177,7 +181,7 @@ void register_bem(py::module_& m) {
           },
           py::arg("separation"),
           "Solves with the flat at height d [m] above the mean plane of the heights, the load unknown "
-          "(result.mean_pressure). Releases the GIL.")
+          "(result.mean_pressure). Releases the GIL; Ctrl-C stops it between iterations.")
       .def(
           "solve_loads",
           [](BemSolver& s, const std::vector<Real>& loads) {
@@ -188,14 +192,14 @@ void register_bem(py::module_& m) {
             py::list results;
             for (const Real load : loads) {
               results.append(unlocked([&] { return s.solve(load * s.modulus()); }));
-              check_signals();  // Ctrl-C stops between loads
+              check_signals();  // and between loads
             }
             return results;
           },
           py::arg("loads"),
           "Solves each load P/(E* A0) (ascending), like `contactbench bem --loads`: a list of BemResult. "
           "Ctrl-C "
-          "stops between loads (KeyboardInterrupt).")
+          "stops it between iterations (KeyboardInterrupt).")
       .def_property_readonly("modulus", &BemSolver::modulus, "E* [Pa]")
       .def_property_readonly(
           "tolerance", [](const BemSolver& s) { return s.options().tolerance; },

@@ -92,3 +92,25 @@ def test_ctrl_c_stops_between_loads():
         solver.solve_loads(loads)
     timer.join()
     assert time.monotonic() - start < 10
+
+
+def test_ctrl_c_stops_one_long_solve_between_iterations():
+    # One solve that would run for many iterations (a tolerance no solve reaches, an iteration cap of 10^6 on
+    # 512^2, a few ms an iteration): SIGINT after 0.3 s ends it with KeyboardInterrupt within seconds, and the
+    # solver still works afterwards (it starts afresh).
+    import os
+    import signal
+    import threading
+    import time
+
+    surface = cb.refine(cb.surface_a(seed=6), 512, 512)
+    solver = cb.BemSolver(surface, MODULUS, tolerance=1e-300, max_iterations=1_000_000, solver="polonsky_keer")
+    timer = threading.Timer(0.3, os.kill, (os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        solver.solve(0.01 * MODULUS)
+    timer.join()
+    assert time.monotonic() - start < 20
+    small = cb.BemSolver(cb.surface_a(seed=6), MODULUS)
+    assert small.solve(0.01 * MODULUS).converged
