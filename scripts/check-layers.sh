@@ -27,9 +27,9 @@ if git grep -nE '#include "(core|bem|theories|app)/' -- '*.cpp' '*.hpp'; then
   status=1
 fi
 
-# Nothing tracked may name the reference shelf beside the checkout (../shared) or read from it.
+# Nothing tracked may name the team's reference shelf beside the checkout or read from it (the patterns below).
 if git grep -nI -e '\.\./shared' -e 'shared/data/' -e 'shared/THEORY' -- ':!scripts/check-layers.sh'; then
-  echo "check-layers: the files above point outside the project (../shared); put what they need in docs/ or data/" >&2
+  echo "check-layers: the files above point outside the project (the shelf beside the checkout); put what they need in docs/ or data/" >&2
   status=1
 fi
 exit $status
