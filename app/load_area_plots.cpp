@@ -34,7 +34,9 @@ void write_panels(std::ostream& out, const SceneReport& report) {
       const bool reference = label == report.scene.reference;
       out << (m == 0 ? "" : ", \\\n     ") << "'curves.csv' using (strcol(1) eq '" << label
           << "' ? $3 : NaN):4 with linespoints " << (reference ? "lw 3 pt 7 ps 0.8 lc rgb 'black'" : "lw 1.5")
-          << " title '" << label << (reference ? " (reference)" : "") << "'";
+          << " title '" << label << (reference ? " (reference)" : "")
+          << (report.methods[m].method == "plateau_hertz" ? " (Hertz-consistent plateaus, this project)" : "")
+          << "'";
     }
     out << '\n';
   }

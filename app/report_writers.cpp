@@ -145,8 +145,9 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
   for (std::size_t m = 0; m < report.methods.size(); ++m) {
     const MethodResult& r = report.methods[m];
     const MethodComparison& c = comparison.methods[m];
-    out << "| " << r.label << " | " << table_number(r.seconds, "%.3g") << " | "
-        << table_number(c.kappa, "%.3f");
+    out << "| " << r.label
+        << (r.method == "plateau_hertz" ? " (Hertz-consistent plateaus, this project)" : "") << " | "
+        << table_number(r.seconds, "%.3g") << " | " << table_number(c.kappa, "%.3f");
     if (c.kappa_nodes) out << " (nodes " << table_number(*c.kappa_nodes, "%.3f") << ")";
     out << " | " << (r.label == comparison.reference ? "reference" : percent(c.max_abs_relative_error, false))
         << " | " << (r.label == comparison.reference ? "" : percent(c.rms_relative_error, false)) << " |\n";

@@ -41,12 +41,16 @@ std::string field_path(const std::string& prefix, std::size_t k, const char* wha
 }
 
 std::string SweepStage::name() const {
-  return "sweep (" + describe(levels) + ", " + describe(topology) + ")";
+  return "sweep (" +
+         (refine > 0 ? "refined to " + std::to_string(refine) + " x " + std::to_string(refine) + ", "
+                     : std::string()) +
+         describe(levels) + ", " + describe(topology) + ")";
 }
 
 bool SweepStage::same_as(const SweepStage& other) const {
-  return topology.connectivity == other.topology.connectivity && topology.wrap_x == other.topology.wrap_x &&
-         topology.wrap_y == other.topology.wrap_y && levels.kind == other.levels.kind &&
+  return refine == other.refine && topology.connectivity == other.topology.connectivity &&
+         topology.wrap_x == other.topology.wrap_x && topology.wrap_y == other.topology.wrap_y &&
+         levels.kind == other.levels.kind &&
          (levels.kind == SweepLevels::Kind::exact || levels.count == other.levels.count);
 }
 
@@ -65,7 +69,11 @@ std::string BemStage::name() const {
 SweepProducts run_sweep_stage(const SweepStage& stage, const Surface& surface, const StageContext& context) {
   const auto start = Clock::now();
   SweepProducts products;
-  products.sweep = sweep(surface, stage.levels, stage.topology, context.threads);
+  // The same surface on a finer grid (docs/theory.md section 2): the pixel effect of the cut's area and
+  // spot count shrinks, the surface does not change (docs/theory.md section 8).
+  products.sweep = stage.refine > 0 ? sweep(refine(surface, stage.refine, stage.refine, context.threads),
+                                            stage.levels, stage.topology, context.threads)
+                                    : sweep(surface, stage.levels, stage.topology, context.threads);
   products.model = plateau_model(products.sweep);
   products.seconds = seconds_since(start);
   return products;

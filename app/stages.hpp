@@ -24,6 +24,7 @@ namespace contactbench {
 struct SweepStage {
   Topology topology;
   SweepLevels levels;
+  Index refine = 0;          // points a side after Fourier refinement; 0 = the scene's surface as it is
   std::string name() const;  // e.g. "sweep (exact levels, 4-connectivity, periodic in x and y)"
   bool same_as(const SweepStage& other) const;
 };
@@ -31,7 +32,7 @@ struct SweepStage {
 struct SweepProducts {
   SweepCurve sweep;     // A_c(z), N(z) at the stage's levels
   LoadAreaCurve model;  // the plateau model of the sweep (theories/plateau_model.hpp), at the sweep's levels
-  double seconds = 0;
+  double seconds = 0;   // refinement + sweep + model
 };
 
 // One BEM solve of every scene load, warm-started in increasing order. Its defaults are the BEM method's

@@ -665,7 +665,7 @@ std::vector<InvalidCase> invalid_cases() {
       {"PlateauZeroLevels", plateau("levels = 0"), "methods.p.levels", "out of range", "integer count >= 1"},
       {"PlateauFractionalLevels", plateau("levels = 1.5"), "methods.p.levels", "wrong type", "\"paper\""},
       {"UnknownMethod", methods("[methods.x]\nmethod = \"fem\"\n"), "methods.x.method", "unknown method",
-       "bem, plateau, gw_mccool, bgt, bgt_linear, persson"},
+       "bem, plateau, plateau_hertz, gw_mccool, bgt, bgt_linear, persson"},
       {"LabelNeedsAMethod", methods("[methods.x]\n"), "methods.x.method", "missing required key",
        "gw_mccool"},
       {"LabelNamesAnotherMethod", methods("[methods.bgt]\nmethod = \"persson\"\n"), "methods.bgt.method",

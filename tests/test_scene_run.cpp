@@ -167,6 +167,71 @@ refine = 512
   }
 }
 
+TEST(ScenePlan, PlateauRefinesLikeTheBemAndRefusesTheSameWay) {
+  // refine sweeps the surface Fourier-refined: the same as sweeping the surface generated on the finer grid
+  // from the same coefficients (both are the same trigonometric interpolation; equal to rounding, 1e-12,
+  // far below the area of one node, 1/64^2 = 2.4e-4, so the node counts agree exactly but for a tie).
+  const SceneReport refined = run_text("name = \"refined\"\n" + kSmallSurface + R"(
+[methods.plateau_64]
+method = "plateau"
+refine = 64
+[methods.hertz_64]
+method = "plateau_hertz"
+refine = 64
+)");
+  const SceneReport generated = run_text(
+      "name = \"generated\"\n" + replace_all(kSmallSurface, "seed = 2 }", "seed = 2, refine = 64 }") + R"(
+[methods.plateau]
+)");
+  ASSERT_TRUE(ran(refined, "sweep (refined to 64 x 64"));
+  for (std::size_t k = 0; k < refined.loads().size(); ++k)
+    EXPECT_NEAR(refined.methods[0].curve.area_fraction[k], generated.methods[0].curve.area_fraction[k],
+                1e-9 * generated.methods[0].curve.area_fraction[k]);
+  // The refined and unrefined sweeps are different stages, never shared.
+  const SceneReport both = run_text("name = \"both\"\n" + kSmallSurface + R"(
+[methods.plateau]
+[methods.plateau_64]
+method = "plateau"
+refine = 64
+)");
+  EXPECT_EQ(std::count_if(both.stages.begin(), both.stages.end(),
+                          [](const StageRecord& s) { return s.name.rfind("sweep", 0) == 0; }),
+            2);
+  // Same key, same refusals as the BEM's.
+  for (const std::string method : {"plateau", "plateau_hertz"}) {
+    try {
+      run_text("name = \"bad\"\n" + kSmallSurface + "[methods.p]\nmethod = \"" + method +
+               "\"\nrefine = 16\n");
+      ADD_FAILURE() << method << " refined to fewer points";
+    } catch (const SceneError& error) {
+      EXPECT_NE(std::string(error.what()).find("methods.p.refine: out of range: got 16"), std::string::npos)
+          << error.what();
+    }
+  }
+}
+
+TEST(ScenePlan, PlateauHertzIsThePlateauSweepReadAsParaboloids) {
+  // docs/theory.md section 8.3: A_H(P) = A_c(z) / 2 where the paper's model carries sqrt(2) P at z, on the
+  // same sweep (shared). Exact relation between the two methods' answers, to rounding (1e-12).
+  const std::string loads =
+      "[loads]\nvalues = [1e-3, 1.41421356237309515e-3, 1e-2, 1.41421356237309515e-2]\n";
+  const SceneReport report = run_text("name = \"hertz\"\n" + kSmallSurfaceAndMaterial + loads + R"(
+[methods.plateau]
+[methods.hertz]
+method = "plateau_hertz"
+)");
+  EXPECT_EQ(std::count_if(report.stages.begin(), report.stages.end(),
+                          [](const StageRecord& s) { return s.name.rfind("sweep", 0) == 0; }),
+            1);
+  const auto& paper = report.methods[0].curve.area_fraction;
+  const auto& hertz = report.methods[1].curve.area_fraction;
+  EXPECT_NEAR(hertz[0], paper[1] / 2, 1e-12);
+  EXPECT_NEAR(hertz[2], paper[3] / 2, 1e-12);
+  // Named apart from the paper's model wherever it is reported.
+  EXPECT_NE(report.methods[1].curve.parameters.find("not the paper's model"), std::string::npos);
+  EXPECT_NE(report.methods[1].compared_area.find("Hertz-consistent"), std::string::npos);
+}
+
 // The shipped paper scenes at 32 x 32 (BEM at 64 x 64): every method answers at every load, the reference's
 // error is zero, and the three files hold what they promise. Tolerances: none needed, these are structural.
 void expect_complete_run(const std::string& text, const std::filesystem::path& folder) {

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "contactbench/app/methods/method.hpp"
+#include "contactbench/app/methods/refine_key.hpp"
 #include "contactbench/app/output.hpp"
 #include "contactbench/app/scene_keys.hpp"
 #include "contactbench/app/scene_toml.hpp"
@@ -32,16 +33,7 @@ class BemMethod final : public Method {
                       "fields", "connectivity", "solver"});
     std::vector<std::string_view> solvers(solver_names().begin(), solver_names().end());
     if (const auto name = s.choice("solver", solvers)) solve_.solver = solver_kind(*name);
-    const std::int64_t low = context.surface_points.value_or(2);
-    const auto refine = s.integer(
-        "refine", false,
-        {[low](std::int64_t v) { return v == 0 || (v >= low && v <= kMaxPointsASide); },
-         "0 (the surface as is) or an integer in [" + std::to_string(low) + ", " +
-             std::to_string(kMaxPointsASide) + "]" +
-             (context.surface_points
-                  ? " (the surface has " + std::to_string(*context.surface_points) + " points a side)"
-                  : "")});
-    solve_.refine = static_cast<Index>(refine.value_or(solve_.refine));
+    solve_.refine = read_refine_key(s, context, solve_.refine);
     const auto precision = s.choice("precision", {"double", "single"});
     solve_.single_precision = precision == "single";
     // Single precision resolves a relative change of about 1e-7: its default is the smallest it accepts.
@@ -88,7 +80,6 @@ class BemMethod final : public Method {
   }
 
   void preflight(const MethodCheck& check) const override {
-    const Grid& grid = check.surface.grid();
     if (!solve_.fields.empty()) {
       // Field files are never written over a device, a link or a folder (app/output.hpp).
       try {
@@ -100,16 +91,7 @@ class BemMethod final : public Method {
         check.problem("fields", e.what(), "a prefix of new or regular files in an existing folder");
       }
     }
-    if (solve_.refine > 0 && !grid.periodic)
-      check.problem("refine",
-                    "Fourier refinement needs a periodic surface, and this scene's surface is not periodic",
-                    "refine = 0 (solve on the file's own grid)");
-    else if (solve_.refine > 0 && (solve_.refine < grid.nx || solve_.refine < grid.ny))
-      check.problem("refine",
-                    "out of range: got " + std::to_string(solve_.refine) +
-                        ", fewer points than the surface's " + std::to_string(grid.nx) + " x " +
-                        std::to_string(grid.ny),
-                    "0 or at least the surface's points a side");
+    check_refine_key(check, solve_.refine);
     if (solve_.hardness) {
       // A mean pressure at or above H is full plastic contact: nothing to solve (bem/polonsky_keer.hpp).
       std::vector<std::string> refused;

@@ -1,8 +1,10 @@
 // The multi-plateaus model of Wang, Liang and Yan as a method of a scene (theories/plateau_model.hpp;
 // docs/theory.md section 4): one sweep of the surface, the model's load at each level, read at the loads.
+#include "contactbench/app/methods/plateau_method.hpp"
+
 #include <memory>
 
-#include "contactbench/app/methods/method.hpp"
+#include "contactbench/app/methods/refine_key.hpp"
 #include "contactbench/app/scene_keys.hpp"
 #include "contactbench/app/scene_toml.hpp"
 #include "contactbench/theories/plateau_model.hpp"
@@ -13,82 +15,83 @@ namespace {
 
 constexpr std::string_view kLevelsAccepted = "\"exact\", \"paper\" or an integer count >= 1";
 
-class PlateauMethod final : public Method {
- public:
-  std::string_view name() const override { return "plateau"; }
-  std::string compared_area() const override {
-    return "the bearing area of {h > z}, a node count (also in area_fraction_nodes)";
-  }
-
-  void read(const Section& s, const SceneContext&) override {
-    s.reject_unknown({"method", "connectivity", "levels", "periodic"});
-    connectivity_ = static_cast<int>(
-        s.integer("connectivity", false, {[](std::int64_t v) { return v == 4 || v == 8; }, "4, 8"})
-            .value_or(connectivity_));
-    periodic_ = s.boolean("periodic");
-    if (const toml::node* node = s.find("levels")) {
-      if (const auto* text = node->as_string()) {
-        if (text->get() == "exact")
-          levels_ = SweepLevels::exact();
-        else if (text->get() == "paper")
-          levels_ = SweepLevels::paper();
-        else
-          s.problem("levels", "unknown levels \"" + text->get() + "\"", kLevelsAccepted);
-      } else if (const auto* count = node->as_integer()) {
-        if (count->get() >= 1)
-          levels_ = SweepLevels::uniform(static_cast<Index>(count->get()));
-        else
-          s.problem("levels", "out of range: got " + std::to_string(count->get()), kLevelsAccepted);
-      } else {
-        s.wrong_type("levels", "a string or an integer", kLevelsAccepted);
-      }
-    }
-  }
-
-  void write(SceneKeys& keys) const override {
-    keys.put("connectivity", std::int64_t{connectivity_});
-    switch (levels_.kind) {
-      case SweepLevels::Kind::exact:
-        keys.put("levels", "exact");
-        break;
-      case SweepLevels::Kind::paper:  // read() makes only the paper's own count
-        keys.put("levels", "paper");
-        break;
-      case SweepLevels::Kind::uniform:
-        keys.put("levels", std::int64_t{levels_.count});
-        break;
-    }
-    if (periodic_) keys.put("periodic", *periodic_);
-  }
-
-  MethodNeeds needs(const SceneContext& context) const override {
-    const Connectivity connectivity = connectivity_ == 8 ? Connectivity::eight : Connectivity::four;
-    return {
-        .moments = false,
-        .sweep = SweepStage{Topology::for_surface(connectivity, periodic_.value_or(context.surface_periodic)),
-                            levels_},
-        .bem = std::nullopt,
-        .bem_connectivity = 4};
-  }
-
-  // The model answers every positive load (full contact beyond the lowest height; NaN beyond the paper's
-  // last level, said in its parameters): nothing to refuse.
-  void preflight(const MethodCheck&) const override {}
-
-  MethodCurve evaluate(const MethodInputs& in) const override {
-    MethodCurve curve = MethodCurve::from(
-        plateau_curve_at_loads(in.sweep->sweep, in.sweep->model, in.scene.loads), in.scene.loads);
-    curve.columns.emplace_back("area_fraction_nodes", curve.area_fraction);
-    return curve;
-  }
-
- private:
-  int connectivity_ = 4;
-  SweepLevels levels_ = SweepLevels::exact();  // levels = "exact" | "paper" | an integer count (uniform)
-  std::optional<bool> periodic_;               // default: the surface's own periodicity
-};
-
 }  // namespace
+
+std::string PlateauMethod::compared_area() const {
+  return "the bearing area of {h > z}, a node count (also in area_fraction_nodes)";
+}
+
+void PlateauMethod::read(const Section& s, const SceneContext& context) {
+  s.reject_unknown({"method", "connectivity", "levels", "periodic", "refine"});
+  connectivity_ = static_cast<int>(
+      s.integer("connectivity", false, {[](std::int64_t v) { return v == 4 || v == 8; }, "4, 8"})
+          .value_or(connectivity_));
+  periodic_ = s.boolean("periodic");
+  refine_ = read_refine_key(s, context, refine_);
+  if (const toml::node* node = s.find("levels")) {
+    if (const auto* text = node->as_string()) {
+      if (text->get() == "exact")
+        levels_ = SweepLevels::exact();
+      else if (text->get() == "paper")
+        levels_ = SweepLevels::paper();
+      else
+        s.problem("levels", "unknown levels \"" + text->get() + "\"", kLevelsAccepted);
+    } else if (const auto* count = node->as_integer()) {
+      if (count->get() >= 1)
+        levels_ = SweepLevels::uniform(static_cast<Index>(count->get()));
+      else
+        s.problem("levels", "out of range: got " + std::to_string(count->get()), kLevelsAccepted);
+    } else {
+      s.wrong_type("levels", "a string or an integer", kLevelsAccepted);
+    }
+  }
+}
+
+void PlateauMethod::write(SceneKeys& keys) const {
+  keys.put("connectivity", std::int64_t{connectivity_});
+  switch (levels_.kind) {
+    case SweepLevels::Kind::exact:
+      keys.put("levels", "exact");
+      break;
+    case SweepLevels::Kind::paper:  // read() makes only the paper's own count
+      keys.put("levels", "paper");
+      break;
+    case SweepLevels::Kind::uniform:
+      keys.put("levels", std::int64_t{levels_.count});
+      break;
+  }
+  if (periodic_) keys.put("periodic", *periodic_);
+  keys.put("refine", std::int64_t{refine_});
+}
+
+MethodNeeds PlateauMethod::needs(const SceneContext& context) const {
+  const Connectivity connectivity = connectivity_ == 8 ? Connectivity::eight : Connectivity::four;
+  return {.moments = false,
+          .sweep = SweepStage{.topology = Topology::for_surface(connectivity,
+                                                                periodic_.value_or(context.surface_periodic)),
+                              .levels = levels_,
+                              .refine = refine_},
+          .bem = std::nullopt,
+          .bem_connectivity = 4};
+}
+
+void PlateauMethod::preflight(const MethodCheck& check) const {
+  check_refine_key(check, refine_);
+}
+
+std::string PlateauMethod::refinement_text() const {
+  return refine_ > 0 ? ", on the surface Fourier-refined to " + std::to_string(refine_) + " x " +
+                           std::to_string(refine_)
+                     : std::string();
+}
+
+MethodCurve PlateauMethod::evaluate(const MethodInputs& in) const {
+  MethodCurve curve = MethodCurve::from(
+      plateau_curve_at_loads(in.sweep->sweep, in.sweep->model, in.scene.loads), in.scene.loads);
+  curve.parameters += refinement_text();
+  curve.columns.emplace_back("area_fraction_nodes", curve.area_fraction);
+  return curve;
+}
 
 std::unique_ptr<Method> make_plateau_method() {
   return std::make_unique<PlateauMethod>();

@@ -10,6 +10,7 @@ namespace contactbench {
 // The built-in methods, each made by the one function its file defines (app/methods/<name>_method.cpp).
 std::unique_ptr<Method> make_bem_method();
 std::unique_ptr<Method> make_plateau_method();
+std::unique_ptr<Method> make_plateau_hertz_method();
 std::unique_ptr<Method> make_gw_mccool_method();
 std::unique_ptr<Method> make_bgt_method();
 std::unique_ptr<Method> make_bgt_linear_method();
@@ -20,6 +21,7 @@ MethodRegistry& MethodRegistry::global() {
     MethodRegistry built_in;
     built_in.add("bem", make_bem_method);
     built_in.add("plateau", make_plateau_method);
+    built_in.add("plateau_hertz", make_plateau_hertz_method);  // the project's variant, not the paper's
     built_in.add("gw_mccool", make_gw_mccool_method);
     built_in.add("bgt", make_bgt_method);
     built_in.add("bgt_linear", make_bgt_linear_method);

@@ -1,0 +1,38 @@
+// The Hertz-consistent plateaus, the PROJECT's variant of the multi-plateaus model and not the paper's
+// (theories/plateau_hertz.hpp; docs/theory.md section 8.3): the paper's cut and spots, each spot's contact
+// radius that of an elastic paraboloid of the same bearing radius. Same keys and sweep as `plateau`.
+#include <memory>
+
+#include "contactbench/app/methods/plateau_method.hpp"
+#include "contactbench/theories/plateau_hertz.hpp"
+
+namespace contactbench {
+
+namespace {
+
+// How reports name it, so that it is never read as the paper's model.
+constexpr const char* kTitle = "Hertz-consistent plateaus (this project, not the paper's model)";
+
+class PlateauHertzMethod final : public PlateauMethod {
+ public:
+  std::string_view name() const override { return "plateau_hertz"; }
+  std::string compared_area() const override {
+    return std::string(kTitle) +
+           ": half the bearing area of {h > z} at sqrt(2) x the load (docs/theory.md section 8.3)";
+  }
+
+  MethodCurve evaluate(const MethodInputs& in) const override {
+    MethodCurve curve = MethodCurve::from(
+        plateau_hertz_curve_at_loads(in.sweep->sweep, in.sweep->model, in.scene.loads), in.scene.loads);
+    curve.parameters = std::string(kTitle) + ": " + curve.parameters + refinement_text();
+    return curve;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Method> make_plateau_hertz_method() {
+  return std::make_unique<PlateauHertzMethod>();
+}
+
+}  // namespace contactbench
