@@ -20,6 +20,12 @@ Comparison compare(const SceneReport& report) {
     return area_fraction * comparison.rms_gradient / comparison.kappa_load;
   };
 
+  if (reference)
+    for (const auto& [name, values] : reference->curve.columns)
+      if (name == "area_fraction_error")
+        for (std::size_t k = 0; k < values.size(); ++k)
+          comparison.reference_uncertainty.push_back(values[k] / reference->curve.area_fraction[k]);
+
   for (const MethodResult& m : report.methods) {
     MethodComparison c;
     c.label = m.label;

@@ -29,6 +29,9 @@ struct Comparison {
   Real rms_gradient = 0;                  // gbar
   Real kappa_load = 0;                    // the smallest load P/(E* A0), where kappa is evaluated
   std::vector<MethodComparison> methods;  // in the report's order
+  // The reference's own discretisation error relative to its area, at each load (its column
+  // area_fraction_error / its area: a BEM with extrapolate = true); empty when it reports none.
+  std::vector<Real> reference_uncertainty;
 };
 
 Comparison compare(const SceneReport& report);

@@ -1,5 +1,6 @@
 #include "contactbench/app/report_writers.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -53,6 +54,16 @@ JsonObject provenance_json(const Provenance& p) {
   return o;
 }
 
+// "(± x % at most)": the largest of the reference's own relative discretisation errors, when it has them.
+std::string reference_uncertainty_text(const Comparison& comparison) {
+  Real largest = 0;
+  for (const Real u : comparison.reference_uncertainty)
+    if (std::isfinite(u)) largest = std::max(largest, u);
+  return comparison.reference_uncertainty.empty()
+             ? std::string()
+             : " (its own error up to ± " + percent(largest, false) + ")";
+}
+
 }  // namespace
 
 void write_curves_csv(std::ostream& out, const SceneReport& report, const Provenance& provenance) {
@@ -61,7 +72,8 @@ void write_curves_csv(std::ostream& out, const SceneReport& report, const Proven
       << "): " << provenance.command
       << "\n# load = P/(E* A0); separation [m] of the flat from the mean plane of the heights; area_fraction "
          "= A/A0 "
-         "as compared (the BEM's is area_fraction_corrected, the plateau model's area_fraction_nodes); empty "
+         "as compared (the BEM's is area_fraction_corrected, or area_fraction_extrapolated with extrapolate "
+         "= true; the plateau model's area_fraction_nodes); empty "
          "cells: the method has no such value\n";
   // What each method ran (for the BEM: its solver, boundary and tolerance), one comment line each.
   for (const MethodResult& m : report.methods)
@@ -107,6 +119,8 @@ void write_summary_json(std::ostream& out, const SceneReport& report, const Comp
   root.add("reference", comparison.reference);
   root.add("kappa_load", comparison.kappa_load);
   root.add("loads", std::span<const double>(report.loads()));
+  if (!comparison.reference_uncertainty.empty())
+    root.add("reference_relative_uncertainty", std::span<const double>(comparison.reference_uncertainty));
   std::vector<JsonObject> methods;
   for (std::size_t m = 0; m < report.methods.size(); ++m) {
     const MethodResult& r = report.methods[m];
@@ -119,6 +133,10 @@ void write_summary_json(std::ostream& out, const SceneReport& report, const Comp
     o.add("area_fraction", std::span<const double>(r.curve.area_fraction));
     o.add("relative_error", std::span<const double>(c.relative_error));
     o.add("max_abs_relative_error", c.max_abs_relative_error).add("rms_relative_error", c.rms_relative_error);
+    // The BEM's extrapolated area and its discretisation error (extrapolate = true), beside its area.
+    for (const auto& [name, values] : r.curve.columns)
+      if (name == "area_fraction_extrapolated" || name == "area_fraction_error")
+        o.add(name, std::span<const double>(values));
     methods.push_back(std::move(o));
   }
   root.add("methods", std::move(methods));
@@ -149,7 +167,9 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
         << (r.method == "plateau_hertz" ? " (Hertz-consistent plateaus, this project)" : "") << " | "
         << table_number(r.seconds, "%.3g") << " | " << table_number(c.kappa, "%.3f");
     if (c.kappa_nodes) out << " (nodes " << table_number(*c.kappa_nodes, "%.3f") << ")";
-    out << " | " << (r.label == comparison.reference ? "reference" : percent(c.max_abs_relative_error, false))
+    out << " | "
+        << (r.label == comparison.reference ? "reference" + reference_uncertainty_text(comparison)
+                                            : percent(c.max_abs_relative_error, false))
         << " | " << (r.label == comparison.reference ? "" : percent(c.rms_relative_error, false)) << " |\n";
   }
   out << "\nA/A0 at each load" << (comparison.reference.empty() ? "" : " (relative error to the reference)")
@@ -165,6 +185,8 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
     for (std::size_t m = 0; m < report.methods.size(); ++m) {
       const MethodResult& r = report.methods[m];
       out << ' ' << table_number(r.curve.area_fraction[k]);
+      if (r.label == comparison.reference && !comparison.reference_uncertainty.empty())
+        out << " (± " << percent(comparison.reference_uncertainty[k], false) << ")";
       if (!comparison.methods[m].relative_error.empty() && r.label != comparison.reference)
         out << " (" << percent(comparison.methods[m].relative_error[k]) << ")";
       out << " |";

@@ -62,6 +62,7 @@ std::string BemStage::name() const {
        << tolerance;
   if (single_precision) text << ", single precision";
   if (hardness) text << ", hardness " << *hardness << " Pa";
+  if (extrapolate) text << ", again on twice the points a side for the extrapolated area";
   text << ")";
   return text.str();
 }
@@ -79,17 +80,17 @@ SweepProducts run_sweep_stage(const SweepStage& stage, const Surface& surface, c
   return products;
 }
 
-BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real estar,
-                          const std::vector<Real>& mean_pressures, const std::set<int>& connectivities,
-                          const StageContext& context) {
-  const auto start = Clock::now();
+namespace {
+
+// Every load on one grid, warm-started in increasing order; statistics per connectivity. `fields`: prefix
+// of the per-load field files, empty for none.
+void solve_loads(const BemStage& stage, const Surface& solved, Real estar,
+                 const std::vector<Real>& mean_pressures, const std::set<int>& connectivities,
+                 const StageContext& context, const std::string& fields, Clock::time_point start,
+                 std::vector<ContactSolution>& solutions,
+                 std::map<int, std::vector<ContactStatistics>>& statistics) {
   const RunObserver quiet;
   const RunObserver& observer = context.observer ? *context.observer : quiet;
-  BemProducts products;
-  Surface solved = stage.refine > 0 ? refine(surface, stage.refine, stage.refine, context.threads) : surface;
-  if (solved.grid().periodic != stage.periodic) solved = solved.with_periodic(stage.periodic);
-  products.points = solved.grid().points();
-  products.periodic = stage.periodic;
   const std::string name = stage.name();
   PolonskyKeerOptions solver_options{.tolerance = stage.tolerance,
                                      .max_iterations = stage.max_iterations,
@@ -105,21 +106,46 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
   for (std::size_t k = 0; k < mean_pressures.size(); ++k) {
     ContactSolution solution = solver.solve(mean_pressures[k]);
     for (auto& [c, labeller] : labellers)
-      products.statistics[c].push_back(contact_statistics(solution, labeller));
-    if (!stage.fields.empty()) {  // as each load is solved, so that a long run leaves what it has done
-      write_surface(field_path(stage.fields, k + 1, "pressure"), Surface(solved.grid(), solution.pressure));
-      write_surface(field_path(stage.fields, k + 1, "gap"), Surface(solved.grid(), solution.gap));
+      statistics[c].push_back(contact_statistics(solution, labeller));
+    if (!fields.empty()) {  // as each load is solved, so that a long run leaves what it has done
+      write_surface(field_path(fields, k + 1, "pressure"), Surface(solved.grid(), solution.pressure));
+      write_surface(field_path(fields, k + 1, "gap"), Surface(solved.grid(), solution.gap));
     }
     solution.pressure.resize(0, 0);
     solution.gap.resize(0, 0);
     if (seconds_since(start) > kProgressAfterSeconds) {
       std::ostringstream line;
-      line << name << ": load " << k + 1 << " of " << mean_pressures.size()
-           << " (P/(E* A0) = " << mean_pressures[k] / estar << "): " << solution.iterations << " iterations, "
-           << solution.seconds << " s";
+      line << name << ": " << solved.grid().nx << " x " << solved.grid().ny << ": load " << k + 1 << " of "
+           << mean_pressures.size() << " (P/(E* A0) = " << mean_pressures[k] / estar
+           << "): " << solution.iterations << " iterations, " << solution.seconds << " s";
       observer.say(line.str());
     }
-    products.solutions.push_back(std::move(solution));
+    solutions.push_back(std::move(solution));
+  }
+}
+
+}  // namespace
+
+BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real estar,
+                          const std::vector<Real>& mean_pressures, const std::set<int>& connectivities,
+                          const StageContext& context) {
+  const auto start = Clock::now();
+  BemProducts products;
+  Surface solved = stage.refine > 0 ? refine(surface, stage.refine, stage.refine, context.threads) : surface;
+  const Index nx = solved.grid().nx, ny = solved.grid().ny;
+  if (solved.grid().periodic != stage.periodic) solved = solved.with_periodic(stage.periodic);
+  products.points = solved.grid().points();
+  products.periodic = stage.periodic;
+  solve_loads(stage, solved, estar, mean_pressures, connectivities, context, stage.fields, start,
+              products.solutions, products.statistics);
+  if (stage.extrapolate) {
+    // The same surface on twice the points a side (the method's preflight refuses a non-periodic one):
+    // refined from the scene's surface, not from the first grid (the same trigonometric interpolation).
+    Surface fine = refine(surface, 2 * nx, 2 * ny, context.threads);
+    if (fine.grid().periodic != stage.periodic) fine = fine.with_periodic(stage.periodic);
+    products.fine_points = fine.grid().points();
+    solve_loads(stage, fine, estar, mean_pressures, connectivities, context, "", start,
+                products.fine_solutions, products.fine_statistics);
   }
   products.seconds = seconds_since(start);
   return products;

@@ -47,7 +47,10 @@ struct BemStage {
   bool single_precision = false;       // iterate in float (bem/polonsky_keer.hpp)
   std::string fields;                  // prefix of per-load pressure and gap files; empty: none written
   SolverKind solver = kDefaultSolver;  // the BEM iteration (bem/solver_registry.hpp, docs/solvers.md)
-  std::string name() const;            // e.g. "bem (periodic, tolerance 1e-08)"
+  // Solve every load again on the grid of twice the points a side (Fourier-refined, periodic surfaces only),
+  // for the Richardson-extrapolated area and its error estimate (docs/theory.md section 9).
+  bool extrapolate = false;
+  std::string name() const;                                // e.g. "bem (periodic, tolerance 1e-08)"
   bool operator==(const BemStage& other) const = default;  // methods that ask for equal solves share one
 };
 
@@ -58,6 +61,10 @@ struct BemProducts {
   double seconds = 0;                                        // refinement + solves + statistics
   Index points = 0;                                          // nodes of the grid solved on
   bool periodic = true;                                      // the boundary solved
+  // With BemStage::extrapolate: the same loads solved on twice the points a side (fields dropped too).
+  std::vector<ContactSolution> fine_solutions;
+  std::map<int, std::vector<ContactStatistics>> fine_statistics;  // by connectivity
+  Index fine_points = 0;
 };
 
 struct StageContext {
