@@ -116,5 +116,24 @@ TEST(BemExtrapolation, IsRefusedOnANonPeriodicSurface) {
   }
 }
 
+TEST(BemArea, NodesComparesByTheNodeCountAndExcludesExtrapolation) {
+  // area = "nodes": the node count, what a node-based finite-element model at that resolution reports.
+  const std::string scene =
+      "name = \"nodes\"\n[surface]\ngenerate = { sigma = 0.5e-6, hurst = 0.5, qr = 3.14e4, "
+      "size = 200e-6, grid = 32, seed = 2 }\n[material]\nestar = 1e11\n[loads]\nvalues = "
+      "[1e-3, 1e-2]\n";
+  const SceneReport report =
+      run_scene(parse_scene(scene + "[methods.bem]\narea = \"nodes\"\n", "nodes.toml"), {.threads = 1});
+  EXPECT_EQ(report.methods[0].curve.area_fraction, column(report.methods[0], "area_fraction_nodes"));
+  try {
+    parse_scene(scene + "[methods.bem]\narea = \"nodes\"\nextrapolate = true\n", "both.toml");
+    ADD_FAILURE() << "accepted two compared areas";
+  } catch (const SceneError& error) {
+    EXPECT_NE(std::string(error.what()).find("methods.bem.area: area = \"nodes\" and extrapolate = true"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace contactbench

@@ -23,6 +23,9 @@ class BemMethod final : public Method {
  public:
   std::string_view name() const override { return "bem"; }
   std::string compared_area() const override {
+    if (nodes_)
+      return "area_fraction_nodes (contact nodes / all nodes, as a node-based finite-element model reports "
+             "it; area = \"nodes\")";
     if (solve_.extrapolate)
       return "area_fraction_extrapolated (the node counts on the grid and on twice its points a side, "
              "Richardson-extrapolated at order 1; its error estimate is area_fraction_error; docs/theory.md "
@@ -35,7 +38,7 @@ class BemMethod final : public Method {
   // initialisers are the defaults).
   void read(const Section& s, const SceneContext& context) override {
     s.reject_unknown({"method", "refine", "tolerance", "max_iterations", "periodic", "hardness", "precision",
-                      "fields", "connectivity", "solver", "extrapolate"});
+                      "fields", "connectivity", "solver", "extrapolate", "area"});
     std::vector<std::string_view> solvers(solver_names().begin(), solver_names().end());
     if (const auto name = s.choice("solver", solvers)) solve_.solver = solver_kind(*name);
     solve_.refine = read_refine_key(s, context, solve_.refine);
@@ -65,6 +68,10 @@ class BemMethod final : public Method {
         s.integer("connectivity", false, {[](std::int64_t v) { return v == 4 || v == 8; }, "4, 8"})
             .value_or(connectivity_));
     solve_.extrapolate = s.boolean("extrapolate").value_or(solve_.extrapolate);
+    nodes_ = s.choice("area", {"corrected", "nodes"}).value_or("corrected") == "nodes";
+    if (nodes_ && solve_.extrapolate)
+      s.problem("area", "area = \"nodes\" and extrapolate = true ask for two different compared areas",
+                "area = \"corrected\" (the default) with extrapolate = true, or extrapolate = false");
   }
 
   void write(SceneKeys& keys) const override {
@@ -78,6 +85,7 @@ class BemMethod final : public Method {
     keys.put("connectivity", std::int64_t{connectivity_});
     keys.put("solver", std::string(solver_name(solve_.solver)));
     keys.put("extrapolate", solve_.extrapolate);
+    keys.put("area", nodes_ ? "nodes" : "corrected");
   }
 
   MethodNeeds needs(const SceneContext& context) const override {
@@ -158,6 +166,7 @@ class BemMethod final : public Method {
                      {"converged", converged},       {"solve_seconds", seconds}};
     if (solve_.hardness) curve.columns.emplace_back("plastic_fraction", plastic);  // nodes at p = H / all
     if (solve_.extrapolate) extrapolate(products, curve);
+    if (nodes_) curve.area_fraction = nodes;
     BemStage stage = solve_;
     stage.periodic = products.periodic;
     curve.parameters =
@@ -209,6 +218,7 @@ class BemMethod final : public Method {
   BemStage solve_;                // every solver key; periodic resolved against the surface in needs()
   std::optional<bool> periodic_;  // default: the surface's own periodicity
   int connectivity_ = 4;          // for counting contact spots
+  bool nodes_ = false;            // area = "nodes": compared by the node count (a node-based FE model's area)
 };
 
 }  // namespace
