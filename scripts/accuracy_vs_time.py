@@ -105,14 +105,17 @@ def main():
         md.append("| {} | {:.3g} | {:.1f} % | {:.1f} % | {} |".format(
             r["label"], r["seconds"], 100 * r["max_error"], 100 * (r["rms_error"] or float("nan")),
             "yes" if r["label"] in front else ""))
-    md += ["", "Labels: bem_<points a side>_<tolerance>; plateau_<levels> (4-connectivity); the theories by name. "
+    md += ["", "Labels: bem_<points a side>_<tolerance>; bem_x_<n>: extrapolated from n and 2n points a side "
+           "(docs/theory.md section 9); plateau_<levels> (4-connectivity) on 256 points, plateau_<n> exact levels on "
+           "the surface Fourier-refined to n points a side; hertz_<n>: the Hertz-consistent plateaus, this project's "
+           "variant, not the paper's model (docs/theory.md section 8.3); the theories by name. "
            "Each method's parameters are in {}.".format(summary_path), "",
            "![accuracy vs time](accuracy_vs_time.png)", "",
            "Made by `{}` ({}).".format(made_by, stamp), ""]
     write_atomically(os.path.join("results", "accuracy_vs_time.md"), "\n".join(md))
 
     # Plot: max |error| against seconds, log-log; the front as a step line.
-    family = {"bem": 1, "plateau": 2}
+    family = {"bem": 1, "plateau": 2, "plateau_hertz": 4}
     data = "\n".join("{} {} {} {}".format(r["seconds"], max(r["max_error"], 1e-6), r["label"],
                                          family.get(r["method"], 3)) for r in rows)
     front_rows = sorted((r for r in rows if r["label"] in front), key=lambda r: r["seconds"])
@@ -138,6 +141,7 @@ do for [t in "pngcairo svg"] {{
        $points using 1:($4 == 1 ? $2 : NaN) with points pt 7 ps 1.3 lc rgb 'black' title 'BEM (grid, tolerance)', \\
        $points using 1:($4 == 2 ? $2 : NaN) with points pt 5 ps 1.3 lc rgb '#1f77b4' title 'plateau model (levels)', \\
        $points using 1:($4 == 3 ? $2 : NaN) with points pt 9 ps 1.5 lc rgb '#d62728' title 'analytic theories', \\
+       $points using 1:($4 == 4 ? $2 : NaN) with points pt 11 ps 1.5 lc rgb '#2ca02c' title 'Hertz-consistent plateaus (this project)', \\
        $points using 1:2:3 with labels offset 1,0.6 left font ',9' notitle
 }}
 unset output

@@ -6,6 +6,9 @@ perimeter-corrected area, and the observed orders between successive grids.
   - Hertz: a paraboloid h = -r^2/(2R) sampled on a non-periodic grid of 4a a side, a/dx = 8 ... 64.
   - Westergaard: h = D cos(2 pi x/lambda) on a periodic grid, 8 ... 128 points a wavelength, pbar/p* = 0.3.
   - Westergaard refined: the same wave on 16 points, Fourier-refined to 32 ... 256 (what `refine` does).
+  - Hertz bump: a periodic band-limited bump, paraboloidal at its crest, on 128 points Fourier-refined to 256
+    and 512, 8 loads (a = L/16 ... L/10); and Westergaard over 8 loads: the mean error is the systematic part
+    (the order), the rms over loads adds the lattice scatter of a single contact edge.
 
 Run: PYTHONPATH=build/release/python /usr/bin/python3 scripts/studies/bem_area_order.py [threads]
 """
@@ -122,3 +125,25 @@ for k, (n, nodes, corr) in enumerate(rows):
 table("Hertz (R = 1 mm, a = 16 um, box 4a, non-periodic)", hertz_rows())
 table("Westergaard (pbar/p* = 0.3, periodic, sampled)", westergaard_rows(False))
 table("Westergaard (16 points Fourier-refined)", westergaard_rows(True))
+
+print("\nWestergaard, mean and rms over 8 loads pbar/p* = 0.1 ... 0.6 (periodic, sampled)\n")
+print("| points a wavelength | mean error nodes | rms | mean error corrected | rms | Richardson p=1 from n/2 mean | rms |")
+print("|---:|---:|---:|---:|---:|---:|---:|")
+wavelength, amplitude = 1e-4, 1e-7
+p_star = math.pi * E_STAR * amplitude / wavelength
+ratios = np.linspace(0.1, 0.6, 8)
+previous = None
+for n in (16, 32, 64, 128, 256):
+    s = cb.Surface(wave(n, wavelength, amplitude), lx=wavelength, periodic=True)
+    solver = cb.BemSolver(s, E_STAR, tolerance=1e-12, threads=THREADS)
+    nodes, corr = [], []
+    for ratio in ratios:
+        r = solver.solve(ratio * p_star)
+        nodes.append(r.area_fraction / westergaard_exact(ratio) - 1)
+        corr.append(r.area_fraction_corrected / westergaard_exact(ratio) - 1)
+    nodes, corr = np.array(nodes), np.array(corr)
+    ext = 2 * nodes - previous if previous is not None else None
+    e = f"{ext.mean():+.3e} | {np.sqrt((ext**2).mean()):.3e}" if ext is not None else " | "
+    print(f"| {n} | {nodes.mean():+.3e} | {np.sqrt((nodes**2).mean()):.3e} | {corr.mean():+.3e} | "
+          f"{np.sqrt((corr**2).mean()):.3e} | {e} |")
+    previous = nodes
