@@ -20,6 +20,12 @@ plot 'curves.csv' using (strcol(1) eq 'bem_2048_1e-10' ? $3 : NaN):4 with linesp
      'curves.csv' using (strcol(1) eq 'plateau_exact' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_exact', \
      'curves.csv' using (strcol(1) eq 'plateau_500' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_500', \
      'curves.csv' using (strcol(1) eq 'plateau_100' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_100', \
+     'curves.csv' using (strcol(1) eq 'bem_x_256' ? $3 : NaN):4 with linespoints lw 1.5 title 'bem_x_256', \
+     'curves.csv' using (strcol(1) eq 'bem_x_512' ? $3 : NaN):4 with linespoints lw 1.5 title 'bem_x_512', \
+     'curves.csv' using (strcol(1) eq 'plateau_1024' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_1024', \
+     'curves.csv' using (strcol(1) eq 'plateau_2048' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_2048', \
+     'curves.csv' using (strcol(1) eq 'hertz_256' ? $3 : NaN):4 with linespoints lw 1.5 title 'hertz_256 (Hertz-consistent plateaus, this project)', \
+     'curves.csv' using (strcol(1) eq 'hertz_1024' ? $3 : NaN):4 with linespoints lw 1.5 title 'hertz_1024 (Hertz-consistent plateaus, this project)', \
      'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
      'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
      'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
@@ -39,6 +45,12 @@ plot 'curves.csv' using (strcol(1) eq 'bem_2048_1e-10' ? $3 : NaN):4 with linesp
      'curves.csv' using (strcol(1) eq 'plateau_exact' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_exact', \
      'curves.csv' using (strcol(1) eq 'plateau_500' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_500', \
      'curves.csv' using (strcol(1) eq 'plateau_100' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_100', \
+     'curves.csv' using (strcol(1) eq 'bem_x_256' ? $3 : NaN):4 with linespoints lw 1.5 title 'bem_x_256', \
+     'curves.csv' using (strcol(1) eq 'bem_x_512' ? $3 : NaN):4 with linespoints lw 1.5 title 'bem_x_512', \
+     'curves.csv' using (strcol(1) eq 'plateau_1024' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_1024', \
+     'curves.csv' using (strcol(1) eq 'plateau_2048' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_2048', \
+     'curves.csv' using (strcol(1) eq 'hertz_256' ? $3 : NaN):4 with linespoints lw 1.5 title 'hertz_256 (Hertz-consistent plateaus, this project)', \
+     'curves.csv' using (strcol(1) eq 'hertz_1024' ? $3 : NaN):4 with linespoints lw 1.5 title 'hertz_1024 (Hertz-consistent plateaus, this project)', \
      'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
      'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
      'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
@@ -62,6 +74,12 @@ plot 'curves.csv' using (strcol(1) eq 'bem_2048_1e-10' ? $3 : NaN):4 with linesp
      'curves.csv' using (strcol(1) eq 'plateau_exact' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_exact', \
      'curves.csv' using (strcol(1) eq 'plateau_500' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_500', \
      'curves.csv' using (strcol(1) eq 'plateau_100' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_100', \
+     'curves.csv' using (strcol(1) eq 'bem_x_256' ? $3 : NaN):4 with linespoints lw 1.5 title 'bem_x_256', \
+     'curves.csv' using (strcol(1) eq 'bem_x_512' ? $3 : NaN):4 with linespoints lw 1.5 title 'bem_x_512', \
+     'curves.csv' using (strcol(1) eq 'plateau_1024' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_1024', \
+     'curves.csv' using (strcol(1) eq 'plateau_2048' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_2048', \
+     'curves.csv' using (strcol(1) eq 'hertz_256' ? $3 : NaN):4 with linespoints lw 1.5 title 'hertz_256 (Hertz-consistent plateaus, this project)', \
+     'curves.csv' using (strcol(1) eq 'hertz_1024' ? $3 : NaN):4 with linespoints lw 1.5 title 'hertz_1024 (Hertz-consistent plateaus, this project)', \
      'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
      'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
      'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
@@ -81,6 +99,12 @@ plot 'curves.csv' using (strcol(1) eq 'bem_2048_1e-10' ? $3 : NaN):4 with linesp
      'curves.csv' using (strcol(1) eq 'plateau_exact' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_exact', \
      'curves.csv' using (strcol(1) eq 'plateau_500' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_500', \
      'curves.csv' using (strcol(1) eq 'plateau_100' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_100', \
+     'curves.csv' using (strcol(1) eq 'bem_x_256' ? $3 : NaN):4 with linespoints lw 1.5 title 'bem_x_256', \
+     'curves.csv' using (strcol(1) eq 'bem_x_512' ? $3 : NaN):4 with linespoints lw 1.5 title 'bem_x_512', \
+     'curves.csv' using (strcol(1) eq 'plateau_1024' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_1024', \
+     'curves.csv' using (strcol(1) eq 'plateau_2048' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_2048', \
+     'curves.csv' using (strcol(1) eq 'hertz_256' ? $3 : NaN):4 with linespoints lw 1.5 title 'hertz_256 (Hertz-consistent plateaus, this project)', \
+     'curves.csv' using (strcol(1) eq 'hertz_1024' ? $3 : NaN):4 with linespoints lw 1.5 title 'hertz_1024 (Hertz-consistent plateaus, this project)', \
      'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
      'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
      'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
