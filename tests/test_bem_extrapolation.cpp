@@ -6,12 +6,16 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "contactbench/app/comparison.hpp"
+#include "contactbench/app/provenance.hpp"
+#include "contactbench/app/report_writers.hpp"
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/scene_run.hpp"
 #include "contactbench/core/error.hpp"
@@ -96,6 +100,21 @@ TEST(BemExtrapolation, RemovesTheNodeCountBiasOnHertz) {
   const Comparison comparison = compare(report);
   ASSERT_EQ(comparison.reference_uncertainty.size(), loads.size());
   EXPECT_NEAR(comparison.reference_uncertainty[0], estimate[0] / extrapolated[0], 1e-15);
+  // ... and every output file carries the extrapolated area and its error.
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / "contactbench_extrapolation_report";
+  write_report(folder, report, comparison, current_provenance(2, "test"));
+  const auto slurp = [&](const char* name) {
+    std::ifstream in(folder / name);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_NE(slurp("curves.csv").find("area_fraction_extrapolated,area_fraction_error"), std::string::npos);
+  const std::string json = slurp("summary.json");
+  for (const char* key :
+       {"\"area_fraction_extrapolated\"", "\"area_fraction_error\"", "\"reference_relative_uncertainty\""})
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+  EXPECT_NE(slurp("table.md").find("reference (its own error up to ± "), std::string::npos);
+  std::filesystem::remove_all(folder);
 }
 
 TEST(BemExtrapolation, IsRefusedOnANonPeriodicSurface) {
