@@ -18,10 +18,12 @@ def build():
                    check=True, stdout=subprocess.DEVNULL)
 
 
-def run_scene(scene, out, threads, reuse=False):
+def run_scene(scene, out, threads, reuse=False, plots=True):
     """Runs `contactbench run scene --out out` unless reuse and out/summary.json exists; returns the run."""
     if not (reuse and os.path.exists(os.path.join(out, "summary.json"))):
         command = [CONTACTBENCH, "run", scene, "--out", out, "--threads", str(threads), "--quiet"]
+        if not plots:
+            command.append("--no-plots")
         print("running:", " ".join(command), file=sys.stderr)
         subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
     return Run(out)
