@@ -232,7 +232,8 @@ method = "plateau_hertz"
   EXPECT_NE(report.methods[1].compared_area.find("Hertz-consistent"), std::string::npos);
 }
 
-// The shipped paper scenes at 32 x 32 (BEM at 64 x 64): every method answers at every load, the reference's
+// The shipped paper scenes at 32 x 32 (BEM at 64 x 64): every method answers at every load (the
+// Hertz-consistent variant up to the load it names), the reference's
 // error is zero, and the three files hold what they promise. Tolerances: none needed, these are structural.
 void expect_complete_run(const std::string& text, const std::filesystem::path& folder) {
   const Scene scene = parse_scene(text, kSource / "scenes" / "paper" / "scene.toml");
@@ -244,7 +245,13 @@ void expect_complete_run(const std::string& text, const std::filesystem::path& f
   for (std::size_t m = 0; m < report.methods.size(); ++m) {
     const MethodResult& r = report.methods[m];
     ASSERT_EQ(r.curve.area_fraction.size(), scene.loads.size()) << r.label;
+    // The Hertz-consistent variant has no answer above sqrt(2) x the paper model's full-contact load
+    // (docs/theory.md section 8.3), reached on a 32 x 32 grid at the largest loads; it names that load.
+    const bool may_stop_early =
+        r.curve.parameters.find("no answer (NaN) for loads above") != std::string::npos;
+    EXPECT_TRUE(std::isfinite(r.curve.area_fraction.front())) << r.label << " at the smallest load";
     for (std::size_t k = 0; k < scene.loads.size(); ++k) {
+      if (may_stop_early && !std::isfinite(r.curve.area_fraction[k])) continue;
       EXPECT_TRUE(std::isfinite(r.curve.area_fraction[k])) << r.label << " at load " << k;
       EXPECT_TRUE(std::isfinite(comparison.methods[m].relative_error[k])) << r.label << " at load " << k;
     }
