@@ -10,21 +10,21 @@ namespace contactbench {
 
 namespace {
 
-// How reports name it, so that it is never read as the paper's model.
-constexpr const char* kTitle = "Hertz-consistent plateaus (this project, not the paper's model)";
-
 class PlateauHertzMethod final : public PlateauMethod {
  public:
   std::string_view name() const override { return "plateau_hertz"; }
   std::string compared_area() const override {
-    return std::string(kTitle) +
-           ": half the bearing area of {h > z} at sqrt(2) x the load (docs/theory.md section 8.3)";
+    // The parameters (theories/plateau_hertz.cpp) and the table's row title already say it is not the
+    // paper's model; saying it a third time here only lengthens the line.
+    return "the Hertz-consistent area, half the bearing area of {h > z} at sqrt(2) x the load "
+           "(docs/theory.md "
+           "section 8.3)";
   }
 
   MethodCurve evaluate(const MethodInputs& in) const override {
     MethodCurve curve = MethodCurve::from(
         plateau_hertz_curve_at_loads(in.sweep->sweep, in.sweep->model, in.scene.loads), in.scene.loads);
-    curve.parameters = std::string(kTitle) + ": " + curve.parameters + refinement_text();
+    curve.parameters += refinement_text();
     return curve;
   }
 };
