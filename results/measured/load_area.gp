@@ -13,6 +13,7 @@ set grid
 plot 'curves.csv' using (strcol(1) eq 'bem' ? $3 : NaN):4 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title 'bem (reference)', \
      'curves.csv' using (strcol(1) eq 'plateau_4' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_4', \
      'curves.csv' using (strcol(1) eq 'plateau_8' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_8', \
+     'curves.csv' using (strcol(1) eq 'plateau_hertz' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_hertz (Hertz-consistent plateaus, this project)', \
      'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
      'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
      'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
@@ -25,6 +26,7 @@ set grid
 plot 'curves.csv' using (strcol(1) eq 'bem' ? $3 : NaN):4 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title 'bem (reference)', \
      'curves.csv' using (strcol(1) eq 'plateau_4' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_4', \
      'curves.csv' using (strcol(1) eq 'plateau_8' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_8', \
+     'curves.csv' using (strcol(1) eq 'plateau_hertz' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_hertz (Hertz-consistent plateaus, this project)', \
      'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
      'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
      'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
@@ -41,6 +43,7 @@ set grid
 plot 'curves.csv' using (strcol(1) eq 'bem' ? $3 : NaN):4 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title 'bem (reference)', \
      'curves.csv' using (strcol(1) eq 'plateau_4' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_4', \
      'curves.csv' using (strcol(1) eq 'plateau_8' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_8', \
+     'curves.csv' using (strcol(1) eq 'plateau_hertz' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_hertz (Hertz-consistent plateaus, this project)', \
      'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
      'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
      'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
@@ -53,6 +56,7 @@ set grid
 plot 'curves.csv' using (strcol(1) eq 'bem' ? $3 : NaN):4 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title 'bem (reference)', \
      'curves.csv' using (strcol(1) eq 'plateau_4' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_4', \
      'curves.csv' using (strcol(1) eq 'plateau_8' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_8', \
+     'curves.csv' using (strcol(1) eq 'plateau_hertz' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_hertz (Hertz-consistent plateaus, this project)', \
      'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
      'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
      'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
