@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "contactbench/bem/active_set.hpp"
 #include "contactbench/bem/convolution.hpp"
 #include "contactbench/bem/fourier_preconditioner.hpp"
 #include "contactbench/core/error.hpp"
@@ -98,15 +99,18 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
  public:
   // preconditioned: the solver "preconditioned_cg" (the gap filtered by bem/fourier_preconditioner.hpp
   // before it becomes a direction), else plain Polonsky-Keer.
-  PolonskyKeerCore(const Surface& centred, Real modulus, int threads, bool preconditioned)
+  PolonskyKeerCore(const Surface& centred, Real modulus, int threads, SolverKind solver)
       : grid_(centred.grid()),
+        modulus_(modulus),
+        threads_(threads),
+        active_set_(solver == SolverKind::active_set),
         convolution_(make_half_space_convolution<T>(centred.grid(), modulus, threads)),
         n_(grid_.points()),
         h_(static_cast<std::size_t>(n_)),
         g_(static_cast<std::size_t>(n_)),
         t_(static_cast<std::size_t>(n_)),
         partial_(static_cast<std::size_t>(convolution_->threads())) {
-    if (preconditioned) {
+    if (solver == SolverKind::preconditioned_cg) {
       preconditioner_ = make_fourier_preconditioner<T>(centred.grid(), modulus, threads);
       z_.resize(static_cast<std::size_t>(n_));
       if (preconditioner_->threads() > convolution_->threads())
@@ -162,7 +166,8 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
       s_[cur_] = mean_pressure;
     }
     hardness_ = std::numeric_limits<double>::infinity();
-    const Outcome outcome = iterate<true, false>(total, tolerance, max_iterations);
+    const Outcome outcome = active_set_ ? solve_active_set_load(mean_pressure, tolerance, max_iterations)
+                                        : iterate<true, false>(total, tolerance, max_iterations);
     warm_ = true;
     previous_load_ = last_load_;
     last_load_ = mean_pressure;
@@ -289,6 +294,32 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
   struct Moments {
     double change = 0, sum = 0, elastic = 0, plastic = 0, g_mean = 0, g_norm = 0;
   };
+
+  // The solver "active_set" (bem/active_set.hpp): from the start solve_load made (when warm), else from its
+  // own nested coarse start; leaves the state as iterate() does.
+  Outcome solve_active_set_load(double mean_pressure, double tolerance, Index max_iterations) {
+    std::vector<T> pressure;
+    if (warm_) {
+      pressure.resize(static_cast<std::size_t>(n_));
+      const double s = s_[cur_];
+      for (std::size_t k = 0; k < pressure.size(); ++k)
+        pressure[k] = static_cast<T>(s * static_cast<double>(q_[cur_][k]));
+    }
+    ActiveSetOutcome result;
+    try {
+      result = solve_active_set<T>(grid_, h_, modulus_, threads_, mean_pressure, tolerance, max_iterations,
+                                   warm_, pressure, g_, this->between_iterations_);
+    } catch (...) {
+      forget();  // abandoned mid-solve: nothing to warm-start from
+      throw;
+    }
+    q_[cur_] = std::move(pressure);
+    s_[cur_] = 1;
+    last_sum_ = q_sum(q_[cur_]);
+    separation_ = result.separation;
+    gap_offset_ = separation_;  // g holds u - h: the gap is g + d
+    return Outcome{.iterations = result.iterations, .change = result.change, .converged = result.converged};
+  }
 
   // The loop. kLoad: the load `total` (sum of p) is imposed: the gap is made zero-mean on the elastic set,
   // which fixes the flat, and p rescaled to the load. Else the flat's height is separation_: no mean taken
@@ -736,6 +767,9 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
   }
 
   Grid grid_;
+  Real modulus_;
+  int threads_;
+  bool active_set_;  // the solver "active_set": load control by bem/active_set.hpp
   std::unique_ptr<Convolution<T>> convolution_;
   Index n_;
   std::vector<T> h_, g_, t_;
@@ -767,11 +801,10 @@ PolonskyKeer::PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOpt
     throw Error("Polonsky-Keer: single precision cannot reach a relative pressure change of " +
                 std::to_string(options_.tolerance) + " (float resolves about 1e-7); use a tolerance >= " +
                 std::to_string(kSinglePrecisionTolerance) + " or double precision");
-  const bool preconditioned = options_.solver == SolverKind::preconditioned_cg;
   if (options_.single_precision)
-    engine_ = std::make_unique<PolonskyKeerCore<float>>(surface_, modulus, threads, preconditioned);
+    engine_ = std::make_unique<PolonskyKeerCore<float>>(surface_, modulus, threads, options_.solver);
   else
-    engine_ = std::make_unique<PolonskyKeerCore<double>>(surface_, modulus, threads, preconditioned);
+    engine_ = std::make_unique<PolonskyKeerCore<double>>(surface_, modulus, threads, options_.solver);
   engine_->set_between_iterations(options_.between_iterations);
 }
 

@@ -5,7 +5,7 @@
 namespace contactbench {
 
 const std::vector<std::string>& solver_names() {
-  static const std::vector<std::string> names{"polonsky_keer", "preconditioned_cg"};
+  static const std::vector<std::string> names{"polonsky_keer", "preconditioned_cg", "active_set"};
   return names;
 }
 

@@ -15,6 +15,10 @@ enum class SolverKind {
   // The same with the gap filtered by |q| in Fourier space (bem/fourier_preconditioner.hpp) before it
   // becomes a direction: an iteration count that grows far more slowly with the grid.
   preconditioned_cg,
+  // A primal-dual active-set (semismooth Newton) method: the linear problem on a guessed contact set solved
+  // by the preconditioned CG, the set updated from p and the gap, from a nested coarse start
+  // (bem/active_set.hpp).
+  active_set,
 };
 
 // The solver a caller gets when it names none: the fastest that passes every validation (docs/solvers.md).

@@ -224,6 +224,7 @@ TEST(SolverRegistry, NamesRoundTripAndAnUnknownNameListsTheKnownOnes) {
     EXPECT_EQ(solver_name(solver_kind(name)), name);
   EXPECT_EQ(solver_kind("polonsky_keer"), SolverKind::polonsky_keer);
   EXPECT_EQ(solver_kind("preconditioned_cg"), SolverKind::preconditioned_cg);
+  EXPECT_EQ(solver_kind("active_set"), SolverKind::active_set);
   try {
     solver_kind("multigrid", "scene.toml:12: solver");
     FAIL() << "an unknown solver name was accepted";
@@ -253,14 +254,17 @@ TEST(SolverRegistry, ThePreconditionedSolverNeedsFewerIterationsOnARoughSurface)
             amplitude * std::cos(2 * pi * k * (std::cos(angle) * ix + std::sin(angle) * iy) / 128.0 + phase);
   }
   const Surface surface(grid, h);
-  Index iterations[2] = {0, 0};
-  for (const SolverKind kind : {SolverKind::polonsky_keer, SolverKind::preconditioned_cg}) {
+  Index iterations[3] = {0, 0, 0};
+  for (const SolverKind kind :
+       {SolverKind::polonsky_keer, SolverKind::preconditioned_cg, SolverKind::active_set}) {
     PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-10, .solver = kind});
     const ContactSolution& s = solver.solve(0.02 * kModulus * 1e-7 * 2 * pi * 10 / 1e-4);
     ASSERT_TRUE(s.converged);
     iterations[static_cast<int>(kind)] = s.iterations;
   }
   EXPECT_LT(2 * iterations[1], iterations[0]) << iterations[0] << " vs " << iterations[1];
+  // The active-set method too (its count: inner CG iterations plus one per outer step, bem/active_set.hpp).
+  EXPECT_LT(2 * iterations[2], iterations[0]) << iterations[0] << " vs " << iterations[2];
 }
 
 CB_FOR_EACH_SOLVER(BemSolver);

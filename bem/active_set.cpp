@@ -1,0 +1,448 @@
+#include "contactbench/bem/active_set.hpp"
+
+#include <omp.h>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+
+#include "contactbench/bem/convolution.hpp"
+#include "contactbench/bem/fourier_preconditioner.hpp"
+#include "contactbench/bem/half_space.hpp"
+#include "contactbench/core/error.hpp"
+
+namespace contactbench {
+
+namespace {
+
+// Inner solves stop at this relative reduction of the residual's L2 norm while the set still changes: a
+// looser one needs more outer steps, a tighter one solves exactly on a set about to change (measured with a
+// numpy prototype on surface A and an H = 0.8 surface, 256^2 to 1024^2: 0.1 among 0.03 to 0.3).
+constexpr double kInnerReduction = 0.1;
+// The coarsest level of the nested start, and the tolerance its levels are solved to (a start only).
+constexpr Index kCoarsest = 64;
+constexpr double kCoarseTolerance = 1e-3;
+// A guard against a set that cycles: at most this many outer steps (each ends an inner solve).
+constexpr Index kMaxOuter = 500;
+
+template <class T>
+double sum_on(const std::vector<T>& v, const std::vector<std::uint8_t>& in) {
+  double s = 0;
+  for (std::size_t k = 0; k < v.size(); ++k)
+    s += in[k] ? static_cast<double>(v[k]) : 0.0;
+  return s;
+}
+
+// Coarse pixel values on the fine grid: bilinear between coarse pixel centres (fine pixel 2y + a sits at
+// coarse coordinate y + (2a - 1)/4), wrapped when periodic, clamped at the edges otherwise.
+template <class T>
+std::vector<T> interpolate_up(const std::vector<T>& coarse, Index cnx, Index cny, bool periodic) {
+  auto neighbour = [periodic](Index i, Index step, Index n) {
+    const Index j = i + step;
+    if (periodic) return (j + n) % n;
+    return std::clamp<Index>(j, 0, n - 1);
+  };
+  const Index nx = 2 * cnx, ny = 2 * cny;
+  std::vector<T> rows(static_cast<std::size_t>(cny * nx));
+  for (Index y = 0; y < cny; ++y)
+    for (Index x = 0; x < nx; ++x) {
+      const Index c = x / 2, other = neighbour(c, x % 2 == 0 ? -1 : 1, cnx);
+      rows[static_cast<std::size_t>(y * nx + x)] =
+          static_cast<T>(0.75 * static_cast<double>(coarse[static_cast<std::size_t>(y * cnx + c)]) +
+                         0.25 * static_cast<double>(coarse[static_cast<std::size_t>(y * cnx + other)]));
+    }
+  std::vector<T> fine(static_cast<std::size_t>(ny * nx));
+  for (Index y = 0; y < ny; ++y) {
+    const Index c = y / 2, other = neighbour(c, y % 2 == 0 ? -1 : 1, cny);
+    for (Index x = 0; x < nx; ++x)
+      fine[static_cast<std::size_t>(y * nx + x)] =
+          static_cast<T>(0.75 * static_cast<double>(rows[static_cast<std::size_t>(c * nx + x)]) +
+                         0.25 * static_cast<double>(rows[static_cast<std::size_t>(other * nx + x)]));
+  }
+  return fine;
+}
+
+template <class T>
+class ActiveSet {
+ public:
+  ActiveSet(const Grid& grid, const std::vector<T>& heights, Real modulus, int threads)
+      : grid_(grid),
+        h_(heights),
+        modulus_(modulus),
+        threads_(threads),
+        operator_(make_half_space_convolution<T>(grid, modulus, threads)),
+        filter_(make_fourier_preconditioner<T>(grid, modulus, threads)),
+        n_(static_cast<std::size_t>(grid.points())),
+        u_(n_),
+        r_(n_),
+        z_(n_),
+        t_(n_),
+        w_(n_),
+        in_(n_),
+        sums_(static_cast<std::size_t>(std::max({operator_->threads(), filter_->threads(), threads}))) {
+    const auto [low, high] = std::minmax_element(h_.begin(), h_.end());
+    highest_ = static_cast<double>(*high);
+    // The round-off of a gap d - h + u: a few epsilons of T of the largest height.
+    gap_round_off_ = 8 * static_cast<double>(std::numeric_limits<T>::epsilon()) *
+                     std::max(std::abs(static_cast<double>(*low)), std::abs(highest_));
+    height_range_ = highest_ - static_cast<double>(*low);
+    if (!(height_range_ > 0)) height_range_ = 1;  // a flat surface: relative to 1 m, as ContactSolution
+  }
+
+  ActiveSetOutcome solve(double mean_pressure, double tolerance, Index max_iterations, bool warm,
+                         std::vector<T>& p, const std::function<void()>& between) {
+    ActiveSetOutcome outcome;
+    const double total = mean_pressure * static_cast<double>(n_);
+    if (!warm) outcome.coarse_iterations = nested_start(mean_pressure, p, between);
+    scale_to(p, total);
+    // The starting set: {p - k g > 0}, k the stiffness of one pixel, g the gap of the start with the flat
+    // from its mean on the start's own contact set.
+    operator_->apply(p.data(), u_.data());
+    for (std::size_t k = 0; k < n_; ++k)
+      in_[k] = p[k] > 0;
+    double d = flat_height();
+    const double stiffness = 1 / operator_->self_response();
+    Index in_count = 0;
+    for (std::size_t k = 0; k < n_; ++k) {
+      const double g = d + static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
+      in_[k] = static_cast<double>(p[k]) - stiffness * g > 0;
+      in_count += in_[k];
+    }
+    if (in_count == 0) std::fill(in_.begin(), in_.end(), std::uint8_t{1});
+
+    bool final = false;
+    Index inner = 0;
+    for (Index outer = 1; outer <= kMaxOuter; ++outer) {
+      // The linear problem on the set, from the current pressure kept on it and scaled to the load.
+      for (std::size_t k = 0; k < n_; ++k)
+        if (!in_[k]) p[k] = 0;
+      if (!(sum_on(p, in_) > 0))
+        for (std::size_t k = 0; k < n_; ++k)
+          p[k] = in_[k] ? T(1) : T(0);
+      scale_to(p, total);
+      // The residual's scale: the approach of the highest point, max h - d (> 0 in contact; the gaps that
+      // matter are of its order, while the height range can be dominated by a pit nobody touches).
+      const Index steps = cg_on_set(p, final ? 0.0 : kInnerReduction, threshold(tolerance, d),
+                                    final ? tolerance : 0.0, max_iterations - inner - outer, between);
+      inner += steps;
+      // A fresh gap (the CG's recursively updated one drifts), and the set update.
+      operator_->apply(p.data(), u_.data());
+      d = flat_height();
+      // Nodes enter when they penetrate by more than the tolerance, leave when their pressure is negative:
+      // nodes at p = 0 and g = 0 within the tolerance would otherwise flip in and out for ever.
+      const double enter_below = -threshold(tolerance, d);
+      double residual = 0;
+      Index changed = 0;
+      for (std::size_t k = 0; k < n_; ++k) {
+        const double g = d + static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
+        const bool stays = in_[k] ? p[k] >= 0 : g < enter_below;
+        if (in_[k]) residual = std::max(residual, std::abs(g));
+        changed += stays != static_cast<bool>(in_[k]);
+        in_[k] = stays;
+      }
+      outcome.outer = outer;
+      outcome.residual = residual / height_range_;
+      outcome.change = last_step_change_;
+      outcome.iterations = inner + outer;
+      if (changed == 0 && residual <= threshold(tolerance, d) && last_step_change_ <= tolerance) {
+        outcome.converged = true;
+        break;
+      }
+      if (changed == 0 && final && steps == 0) break;  // no descent left above the tolerance: stalled
+      final = changed == 0;  // the set settled: the next inner solve runs to the tolerance
+      if (outcome.iterations >= max_iterations) break;
+    }
+    // The pressure of the set it ends on (on convergence, nothing is clipped: p > 0 on the set), its gap.
+    bool clipped = false;
+    for (std::size_t k = 0; k < n_; ++k)
+      if (!in_[k] || p[k] < 0) {
+        clipped = clipped || p[k] != 0;
+        p[k] = 0;
+      }
+    if (clipped) {
+      scale_to(p, total);
+      operator_->apply(p.data(), u_.data());
+      for (std::size_t k = 0; k < n_; ++k)
+        in_[k] = p[k] > 0;
+      d = flat_height();
+    }
+    outcome.separation = d;
+    outcome.iterations += (outcome.coarse_iterations + 3) / 4;
+    return outcome;
+  }
+
+  // G p - h of the last solution.
+  void displacement_minus_heights(std::vector<T>& out) const {
+    out.resize(n_);
+    for (std::size_t k = 0; k < n_; ++k)
+      out[k] = u_[k] - h_[k];
+  }
+
+ private:
+  // The largest |gap| accepted on the contact set: the tolerance times the approach of the highest point,
+  // max h - d (> 0 in contact; the gaps that matter are of its order, while the height range can be made
+  // of a pit nothing touches), but not below the gap's round-off.
+  double threshold(double tolerance, double d) const {
+    return std::max(tolerance * (highest_ - d), gap_round_off_);
+  }
+
+  // The flat's height that makes the gap zero-mean on the set: d = -mean(u - h) there.
+  double flat_height() const {
+    double s = 0, count = 0;
+    for (std::size_t k = 0; k < n_; ++k)
+      if (in_[k]) {
+        s += static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
+        count += 1;
+      }
+    return count > 0 ? -s / count : 0;
+  }
+
+  static void scale_to(std::vector<T>& p, double total) {
+    double s = 0;
+    for (const T v : p)
+      s += static_cast<double>(v);
+    const double factor = s > 0 ? total / s : 0;
+    for (T& v : p)
+      v = static_cast<T>(factor * static_cast<double>(v));
+  }
+
+  // v := v - mean of v on the set, on the set; 0 elsewhere.
+  void centre_on_set(std::vector<T>& v) const {
+    double s = 0, count = 0;
+    for (std::size_t k = 0; k < n_; ++k)
+      if (in_[k]) {
+        s += static_cast<double>(v[k]);
+        count += 1;
+      }
+    const T mean = static_cast<T>(count > 0 ? s / count : 0);
+    for (std::size_t k = 0; k < n_; ++k)
+      v[k] = in_[k] ? v[k] - mean : T(0);
+  }
+
+  // The preconditioned CG for G p = h - d on the set, sum p fixed (the direction has zero sum on the set,
+  // which also leaves d free), from p; u_ ends as G p. Stops when the residual's L2 norm has fallen by
+  // `reduction` (0: never on that count), or when its largest value is at most `absolute` and the last
+  // step's relative change of the pressure at most `step_change`, or after `budget` iterations. Returns the
+  // iterations. The element-wise work rides inside the two convolutions of an iteration
+  // (bem/convolution.hpp), summed per thread and combined in thread order (deterministic for a fixed
+  // thread count); the update is one parallel pass.
+  Index cg_on_set(std::vector<T>& p, double reduction, double absolute, double step_change, Index budget,
+                  const std::function<void()>& between) {
+    operator_->apply(p.data(), u_.data());
+    for (std::size_t k = 0; k < n_; ++k)
+      r_[k] = u_[k] - h_[k];
+    centre_on_set(r_);
+    double r0 = 0, largest = 0;
+    for (const T v : r_) {
+      r0 += static_cast<double>(v) * static_cast<double>(v);
+      largest = std::max(largest, static_cast<double>(std::abs(v)));
+    }
+    r0 = std::sqrt(r0);
+    set_size_ = 0;
+    for (const std::uint8_t v : in_)
+      set_size_ += v;
+    const Index nx = grid_.nx, ny = grid_.ny;
+    const std::uint8_t* const in = in_.data();
+    T* const r = r_.data();
+    T* const z = z_.data();
+    T* const t = t_.data();
+    T* const w = w_.data();
+    T* const u = u_.data();
+    T* const pp = p.data();
+    auto clear = [&] {
+      for (Sums& s : sums_)
+        s = Sums{};
+    };
+    auto combined = [&] {
+      Sums all;
+      for (const Sums& s : sums_) {
+        all.a += s.a;
+        all.b += s.b;
+        all.c += s.c;
+        all.d += s.d;
+        all.e = std::max(all.e, s.e);
+      }
+      return all;
+    };
+    // Filter: the residual in, z = its image kept on the set out; sums z and r z.
+    auto residual_in = [&](Index first, Index rows, T* buffer, Index ld, int) {
+      for (Index y = 0; y < rows; ++y)
+        std::copy_n(r + (first + y) * nx, nx, buffer + y * ld);
+    };
+    auto filtered_out = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
+      Sums& s = sums_[static_cast<std::size_t>(thread)];
+      for (Index y = 0; y < rows; ++y) {
+        const Index i0 = (first + y) * nx;
+        double z_sum = 0, rz = 0, r_sum = 0;
+        for (Index x = 0; x < nx; ++x) {
+          const T zv = in[i0 + x] ? buffer[y * ld + x] : T(0);
+          z[i0 + x] = zv;
+          z_sum += static_cast<double>(zv);
+          rz += static_cast<double>(r[i0 + x]) * static_cast<double>(zv);
+          r_sum += static_cast<double>(r[i0 + x]);
+        }
+        s.a += z_sum;
+        s.b += rz;
+        s.c += r_sum;
+      }
+    };
+    // Operator: the direction t = (z - zbar) + beta t on the set in, w = G t out; sums t, w on the set, t w.
+    T zbar = 0, beta = 0;
+    auto direction_in = [&](Index first, Index rows, T* buffer, Index ld, int thread) {
+      Sums& s = sums_[static_cast<std::size_t>(thread)];
+      const T zb = zbar, b = beta;
+      for (Index y = 0; y < rows; ++y) {
+        const Index i0 = (first + y) * nx;
+        double t_sum = 0;
+        for (Index x = 0; x < nx; ++x) {
+          const T tv = in[i0 + x] ? (z[i0 + x] - zb) + b * t[i0 + x] : T(0);
+          t[i0 + x] = tv;
+          buffer[y * ld + x] = tv;
+          t_sum += static_cast<double>(tv);
+        }
+        s.a += t_sum;
+      }
+    };
+    auto response_out = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
+      Sums& s = sums_[static_cast<std::size_t>(thread)];
+      for (Index y = 0; y < rows; ++y) {
+        const Index i0 = (first + y) * nx;
+        double w_sum = 0, tw = 0;
+        for (Index x = 0; x < nx; ++x) {
+          const T wv = buffer[y * ld + x];
+          w[i0 + x] = wv;
+          w_sum += in[i0 + x] ? static_cast<double>(wv) : 0.0;
+          tw += static_cast<double>(t[i0 + x]) * static_cast<double>(wv);
+        }
+        s.b += w_sum;
+        s.c += tw;
+      }
+    };
+    using Producer = typename Convolution<T>::Producer;
+    using Consumer = typename Convolution<T>::Consumer;
+
+    double rz_old = 0;
+    Index iterations = 0;
+    last_step_change_ = 0;  // no step yet: the pressure has not moved
+    for (double norm = r0; iterations < budget; ++iterations) {
+      if ((largest <= absolute && last_step_change_ <= step_change) || norm <= reduction * r0 || norm == 0)
+        break;
+      if (between) between();
+      clear();
+      filter_->apply(Producer(residual_in), Consumer(filtered_out));
+      Sums f = combined();
+      zbar = static_cast<T>(f.a / set_size_);
+      const double rz = f.b - static_cast<double>(zbar) * f.c;  // <r, z - zbar>
+      if (!(rz > 0)) break;  // no descent left (a set of one node, or round-off)
+      beta = static_cast<T>(rz_old > 0 ? rz / rz_old : 0.0);
+      rz_old = rz;
+      clear();
+      operator_->apply(Producer(direction_in), Consumer(response_out));
+      f = combined();
+      // w restricted to the set with its mean there removed: the operator of the constrained problem.
+      const double w_mean = f.b / set_size_;
+      const double tw = f.c - w_mean * f.a;
+      if (!(tw > 0)) break;
+      const T tau = static_cast<T>(rz / tw), wm = static_cast<T>(w_mean);
+      clear();
+#pragma omp parallel num_threads(static_cast <int>(sums_.size()))
+      {
+        const int thread = omp_get_thread_num(), team = omp_get_num_threads();
+        const Index y0 = ny * thread / team, y1 = ny * (thread + 1) / team;
+        Sums& s = sums_[static_cast<std::size_t>(thread)];
+        double moved = 0, sum = 0, l2 = 0, top = 0;
+        for (Index i = y0 * nx; i < y1 * nx; ++i) {
+          const T step = tau * t[i];
+          moved += std::abs(static_cast<double>(step));
+          pp[i] -= step;
+          sum += std::abs(static_cast<double>(pp[i]));
+          u[i] -= tau * w[i];
+          const T rv = in[i] ? r[i] - tau * (w[i] - wm) : T(0);
+          r[i] = rv;
+          l2 += static_cast<double>(rv) * static_cast<double>(rv);
+          top = std::max(top, static_cast<double>(std::abs(rv)));
+        }
+        s.a = moved;
+        s.b = sum;
+        s.c = l2;
+        s.e = top;
+      }
+      f = combined();
+      last_step_change_ = f.b > 0 ? f.a / f.b : 0;
+      norm = std::sqrt(f.c);
+      largest = f.e;
+    }
+    return iterations;
+  }
+
+  // The nested start: the surface averaged over 2 x 2 blocks solved to kCoarseTolerance (itself nested), its
+  // pressure interpolated. Returns the coarse levels' iterations (0 when the grid is too small or odd: then
+  // the start is the uniform pressure).
+  Index nested_start(double mean_pressure, std::vector<T>& p, const std::function<void()>& between) {
+    p.assign(n_, T(1));
+    const Index nx = grid_.nx, ny = grid_.ny;
+    if (nx % 2 != 0 || ny % 2 != 0 || nx / 2 < kCoarsest || ny / 2 < kCoarsest) return 0;
+    Grid coarse_grid = grid_;
+    coarse_grid.nx = nx / 2;
+    coarse_grid.ny = ny / 2;
+    std::vector<T> coarse_heights(static_cast<std::size_t>(coarse_grid.points()));
+    for (Index y = 0; y < coarse_grid.ny; ++y)
+      for (Index x = 0; x < coarse_grid.nx; ++x) {
+        auto at = [&](Index yy, Index xx) {
+          return static_cast<double>(h_[static_cast<std::size_t>(yy * nx + xx)]);
+        };
+        coarse_heights[static_cast<std::size_t>(y * coarse_grid.nx + x)] =
+            static_cast<T>(0.25 * (at(2 * y, 2 * x) + at(2 * y, 2 * x + 1) + at(2 * y + 1, 2 * x) +
+                                   at(2 * y + 1, 2 * x + 1)));
+      }
+    ActiveSet<T> coarse(coarse_grid, coarse_heights, modulus_, threads_);
+    std::vector<T> coarse_pressure;
+    const ActiveSetOutcome o =
+        coarse.solve(mean_pressure, kCoarseTolerance, 100000, false, coarse_pressure, between);
+    p = interpolate_up(coarse_pressure, coarse_grid.nx, coarse_grid.ny, grid_.periodic);
+    for (T& v : p)
+      v = std::max(v, T(0));
+    return o.iterations;
+  }
+
+  Grid grid_;
+  const std::vector<T>& h_;
+  Real modulus_;
+  int threads_;
+  std::unique_ptr<Convolution<T>> operator_, filter_;
+  std::size_t n_;
+  std::vector<T> u_, r_, z_, t_, w_;
+  std::vector<std::uint8_t> in_;
+  double height_range_ = 1, highest_ = 0, gap_round_off_ = 0;
+  double last_step_change_ = 0;  // sum |tau t| / sum |p| of the last CG iteration
+  // Per-thread sums of a pass (one cache line each).
+  struct alignas(64) Sums {
+    double a = 0, b = 0, c = 0, d = 0, e = 0;
+  };
+  std::vector<Sums> sums_;
+  double set_size_ = 1;  // nodes in the set
+};
+
+}  // namespace
+
+template <class T>
+ActiveSetOutcome solve_active_set(const Grid& grid, const std::vector<T>& heights, Real modulus, int threads,
+                                  double mean_pressure, double tolerance, Index max_iterations, bool warm,
+                                  std::vector<T>& pressure, std::vector<T>& displacement_minus_heights,
+                                  const std::function<void()>& between) {
+  ActiveSet<T> solver(grid, heights, modulus, threads);
+  const ActiveSetOutcome outcome =
+      solver.solve(mean_pressure, tolerance, max_iterations, warm, pressure, between);
+  solver.displacement_minus_heights(displacement_minus_heights);
+  return outcome;
+}
+
+template ActiveSetOutcome solve_active_set<double>(const Grid&, const std::vector<double>&, Real, int, double,
+                                                   double, Index, bool, std::vector<double>&,
+                                                   std::vector<double>&, const std::function<void()>&);
+template ActiveSetOutcome solve_active_set<float>(const Grid&, const std::vector<float>&, Real, int, double,
+                                                  double, Index, bool, std::vector<float>&,
+                                                  std::vector<float>&, const std::function<void()>&);
+
+}  // namespace contactbench

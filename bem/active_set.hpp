@@ -1,0 +1,57 @@
+// The solver "active_set" (bem/solver_registry.hpp; docs/solvers.md): a primal-dual active-set
+// (semismooth Newton) method for the load-controlled elastic contact problem of bem/polonsky_keer.hpp.
+//
+// Guess the contact set A; solve the LINEAR problem on it (gap = 0 on A, p = 0 elsewhere, sum p = the load)
+// by a conjugate gradient preconditioned by the Fourier filter (E*/2)|q| (bem/fourier_preconditioner.hpp),
+// restricted to A with its mean there removed; then update the set, A <- {i in A: p_i > 0} u {i not in A:
+// g_i < 0}, and repeat. The outer steps settle the set; the inner CG sees a fixed set, so it is a plain
+// preconditioned CG whose convergence is not disturbed by nodes entering and leaving. Inner solves stop at a
+// loose relative residual (kInnerReduction) while the set still changes, which is what makes the outer
+// steps cheap; once the set has not changed, the last inner solve runs to the tolerance.
+//
+// A cold solve starts from a nested coarse solution: the surface averaged over 2 x 2 blocks solved the same
+// way (itself from a coarser one, down to kCoarsest points a side), its pressure interpolated bilinearly to
+// the fine grid, and the starting set {p - k g > 0} with k the stiffness of one pixel (1/G(0)): where active
+// set methods get outer iteration counts that barely grow with the grid. A warm start (load stepping) takes
+// the set the same way from the previous pressure scaled to the load.
+//
+// Converged means: the set did not change in the last outer step (so p > 0 on A and g >= 0 off A) AND the
+// complementarity residual max |g| on A, relative to the height range, is at most the tolerance. The
+// stopping test is thus on the residual itself, not on a change that a stalled iteration could make small.
+// The iteration count is the number of inner CG iterations (each one application of G and one of the
+// filter: two FFT pairs, padded for non-periodic grids) plus one per outer step (its fresh gap, one
+// application of G), plus the coarse levels' counts divided by 4 per level (their cost in fine iterations).
+//
+// Load control of the elastic problem only: under separation control and with a hardness (met through
+// separation control) PolonskyKeer iterates as polonsky_keer whichever solver is chosen (polonsky_keer.cpp).
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "contactbench/core/grid.hpp"
+#include "contactbench/core/types.hpp"
+
+namespace contactbench {
+
+struct ActiveSetOutcome {
+  Index iterations = 0;         // inner CG iterations + outer steps (+ coarse levels, see above)
+  Index coarse_iterations = 0;  // of the coarse levels, as they counted (each costs 1/4 of the finer's)
+  Index outer = 0;
+  double residual = 0;    // max |g| on the contact set / height range
+  double change = 0;      // sum |p - p_before| / sum p over the last outer step
+  double separation = 0;  // the flat's height d (g = d - h + G p)
+  bool converged = false;
+};
+
+// Solves load control on `grid` (heights centred, row-major ny x nx) for the mean pressure [Pa]. `pressure`:
+// in, the start when `warm` (scaled to the load), else ignored and a nested coarse start is made; out, the
+// solution. `displacement_minus_heights`: out, G p - h (the gap less the flat's height). `between` is called
+// before every inner iteration (may be empty; may throw).
+template <class T>
+ActiveSetOutcome solve_active_set(const Grid& grid, const std::vector<T>& heights, Real modulus, int threads,
+                                  double mean_pressure, double tolerance, Index max_iterations, bool warm,
+                                  std::vector<T>& pressure, std::vector<T>& displacement_minus_heights,
+                                  const std::function<void()>& between);
+
+}  // namespace contactbench
