@@ -26,14 +26,6 @@ constexpr double kCoarseTolerance = 1e-3;
 // A guard against a set that cycles: at most this many outer steps (each ends an inner solve).
 constexpr Index kMaxOuter = 500;
 
-template <class T>
-double sum_on(const std::vector<T>& v, const std::vector<std::uint8_t>& in) {
-  double s = 0;
-  for (std::size_t k = 0; k < v.size(); ++k)
-    s += in[k] ? static_cast<double>(v[k]) : 0.0;
-  return s;
-}
-
 // Coarse pixel values on the fine grid: bilinear between coarse pixel centres (fine pixel 2y + a sits at
 // coarse coordinate y + (2a - 1)/4), wrapped when periodic, clamped at the edges otherwise.
 template <class T>
@@ -66,9 +58,9 @@ std::vector<T> interpolate_up(const std::vector<T>& coarse, Index cnx, Index cny
 template <class T>
 class ActiveSet {
  public:
-  ActiveSet(const Grid& grid, const std::vector<T>& heights, Real modulus, int threads)
+  ActiveSet(const Grid& grid, std::vector<T> heights, Real modulus, int threads)
       : grid_(grid),
-        h_(heights),
+        h_(std::move(heights)),
         modulus_(modulus),
         threads_(threads),
         operator_(make_half_space_convolution<T>(grid, modulus, threads)),
@@ -88,6 +80,7 @@ class ActiveSet {
                      std::max(std::abs(static_cast<double>(*low)), std::abs(highest_));
     height_range_ = highest_ - static_cast<double>(*low);
     if (!(height_range_ > 0)) height_range_ = 1;  // a flat surface: relative to 1 m, as ContactSolution
+    make_coarse_level();                          // the whole hierarchy, with its FFT plans, made once
   }
 
   ActiveSetOutcome solve(double mean_pressure, double tolerance, Index max_iterations, bool warm,
@@ -115,9 +108,13 @@ class ActiveSet {
     Index inner = 0;
     for (Index outer = 1; outer <= kMaxOuter; ++outer) {
       // The linear problem on the set, from the current pressure kept on it and scaled to the load.
-      for (std::size_t k = 0; k < n_; ++k)
-        if (!in_[k]) p[k] = 0;
-      if (!(sum_on(p, in_) > 0))
+      const Sums kept = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+        for (std::size_t k = begin; k < end; ++k) {
+          if (!in_[k]) p[k] = 0;
+          part.a += static_cast<double>(p[k]);
+        }
+      });
+      if (!(kept.a > 0))
         for (std::size_t k = 0; k < n_; ++k)
           p[k] = in_[k] ? T(1) : T(0);
       scale_to(p, total);
@@ -126,25 +123,29 @@ class ActiveSet {
       const Index steps = cg_on_set(p, final ? 0.0 : kInnerReduction, threshold(tolerance, d),
                                     final ? tolerance : 0.0, max_iterations - inner - outer, between);
       inner += steps;
-      // A fresh gap (the CG's recursively updated one drifts), and the set update.
-      operator_->apply(p.data(), u_.data());
+      // The set update, from the CG's own displacement (updated with each step; a fresh one costs an
+      // application of G, made once at the end).
       d = flat_height();
       // Nodes enter when they penetrate by more than the tolerance, leave when their pressure is negative:
       // nodes at p = 0 and g = 0 within the tolerance would otherwise flip in and out for ever.
       const double enter_below = -threshold(tolerance, d);
-      double residual = 0;
-      Index changed = 0;
-      for (std::size_t k = 0; k < n_; ++k) {
-        const double g = d + static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
-        const bool stays = in_[k] ? p[k] >= 0 : g < enter_below;
-        if (in_[k]) residual = std::max(residual, std::abs(g));
-        changed += stays != static_cast<bool>(in_[k]);
-        in_[k] = stays;
-      }
+      const Sums update = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+        for (std::size_t k = begin; k < end; ++k) {
+          const double g = d + static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
+          const bool stays = in_[k] ? p[k] >= 0 : g < enter_below;
+          if (in_[k]) part.e = std::max(part.e, std::abs(g));
+          part.a += stays != static_cast<bool>(in_[k]) ? 1.0 : 0.0;
+          in_[k] = stays;
+        }
+      });
+      const double residual = update.e;
+      const Index changed = static_cast<Index>(update.a);
       outcome.outer = outer;
       outcome.residual = residual / height_range_;
       outcome.change = last_step_change_;
-      outcome.iterations = inner + outer;
+      // Counted: the CG's iterations, one application of G per outer step (the CG's start) and two more
+      // (the starting set's gap, the final fresh gap), each as a whole iteration.
+      outcome.iterations = inner + outer + 2;
       if (changed == 0 && residual <= threshold(tolerance, d) && last_step_change_ <= tolerance) {
         outcome.converged = true;
         break;
@@ -160,13 +161,11 @@ class ActiveSet {
         clipped = clipped || p[k] != 0;
         p[k] = 0;
       }
-    if (clipped) {
-      scale_to(p, total);
-      operator_->apply(p.data(), u_.data());
-      for (std::size_t k = 0; k < n_; ++k)
-        in_[k] = p[k] > 0;
-      d = flat_height();
-    }
+    if (clipped) scale_to(p, total);
+    operator_->apply(p.data(), u_.data());
+    for (std::size_t k = 0; k < n_; ++k)
+      in_[k] = p[k] > 0;
+    d = flat_height();
     outcome.separation = d;
     outcome.iterations += (outcome.coarse_iterations + 3) / 4;
     return outcome;
@@ -187,37 +186,61 @@ class ActiveSet {
     return std::max(tolerance * (highest_ - d), gap_round_off_);
   }
 
+  // Per-thread sums of a pass (one cache line each), combined in thread order: for a fixed thread count
+  // the same every run.
+  struct alignas(64) Sums {
+    double a = 0, b = 0, c = 0, d = 0, e = 0;  // e is combined as a maximum, the others as sums
+  };
+
+  Sums combined() const {
+    Sums all;
+    for (const Sums& s : sums_) {
+      all.a += s.a;
+      all.b += s.b;
+      all.c += s.c;
+      all.d += s.d;
+      all.e = std::max(all.e, s.e);
+    }
+    return all;
+  }
+
+  // Runs body(begin, end, sums) on a static split of the points over the team; returns the combined sums.
+  template <class Body>
+  Sums over_points(Body body) {
+    for (Sums& s : sums_)
+      s = Sums{};
+#pragma omp parallel num_threads(static_cast <int>(sums_.size()))
+    {
+      const std::size_t thread = static_cast<std::size_t>(omp_get_thread_num());
+      const std::size_t team = static_cast<std::size_t>(omp_get_num_threads());
+      body(n_ * thread / team, n_ * (thread + 1) / team, sums_[thread]);
+    }
+    return combined();
+  }
+
   // The flat's height that makes the gap zero-mean on the set: d = -mean(u - h) there.
-  double flat_height() const {
-    double s = 0, count = 0;
-    for (std::size_t k = 0; k < n_; ++k)
-      if (in_[k]) {
-        s += static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
-        count += 1;
-      }
-    return count > 0 ? -s / count : 0;
+  double flat_height() {
+    const Sums s = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+      for (std::size_t k = begin; k < end; ++k)
+        if (in_[k]) {
+          part.a += static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
+          part.b += 1;
+        }
+    });
+    return s.b > 0 ? -s.a / s.b : 0;
   }
 
-  static void scale_to(std::vector<T>& p, double total) {
-    double s = 0;
-    for (const T v : p)
-      s += static_cast<double>(v);
-    const double factor = s > 0 ? total / s : 0;
-    for (T& v : p)
-      v = static_cast<T>(factor * static_cast<double>(v));
-  }
-
-  // v := v - mean of v on the set, on the set; 0 elsewhere.
-  void centre_on_set(std::vector<T>& v) const {
-    double s = 0, count = 0;
-    for (std::size_t k = 0; k < n_; ++k)
-      if (in_[k]) {
-        s += static_cast<double>(v[k]);
-        count += 1;
-      }
-    const T mean = static_cast<T>(count > 0 ? s / count : 0);
-    for (std::size_t k = 0; k < n_; ++k)
-      v[k] = in_[k] ? v[k] - mean : T(0);
+  // p scaled to the sum `total`.
+  void scale_to(std::vector<T>& p, double total) {
+    const Sums s = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+      for (std::size_t k = begin; k < end; ++k)
+        part.a += static_cast<double>(p[k]);
+    });
+    const double factor = s.a > 0 ? total / s.a : 0;
+    over_points([&](std::size_t begin, std::size_t end, Sums&) {
+      for (std::size_t k = begin; k < end; ++k)
+        p[k] = static_cast<T>(factor * static_cast<double>(p[k]));
+    });
   }
 
   // The preconditioned CG for G p = h - d on the set, sum p fixed (the direction has zero sum on the set,
@@ -230,18 +253,26 @@ class ActiveSet {
   Index cg_on_set(std::vector<T>& p, double reduction, double absolute, double step_change, Index budget,
                   const std::function<void()>& between) {
     operator_->apply(p.data(), u_.data());
-    for (std::size_t k = 0; k < n_; ++k)
-      r_[k] = u_[k] - h_[k];
-    centre_on_set(r_);
-    double r0 = 0, largest = 0;
-    for (const T v : r_) {
-      r0 += static_cast<double>(v) * static_cast<double>(v);
-      largest = std::max(largest, static_cast<double>(std::abs(v)));
-    }
-    r0 = std::sqrt(r0);
-    set_size_ = 0;
-    for (const std::uint8_t v : in_)
-      set_size_ += v;
+    // r = u - h on the set, its mean there removed, 0 elsewhere.
+    const Sums start = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+      for (std::size_t k = begin; k < end; ++k)
+        if (in_[k]) {
+          part.a += static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
+          part.b += 1;
+        }
+    });
+    set_size_ = start.b;
+    const T r_mean = static_cast<T>(start.b > 0 ? start.a / start.b : 0);
+    const Sums norms = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+      for (std::size_t k = begin; k < end; ++k) {
+        const T rv = in_[k] ? (u_[k] - h_[k]) - r_mean : T(0);
+        r_[k] = rv;
+        part.a += static_cast<double>(rv) * static_cast<double>(rv);
+        part.e = std::max(part.e, static_cast<double>(std::abs(rv)));
+      }
+    });
+    const double r0 = std::sqrt(norms.a);
+    double largest = norms.e;
     const Index nx = grid_.nx, ny = grid_.ny;
     const std::uint8_t* const in = in_.data();
     T* const r = r_.data();
@@ -253,17 +284,6 @@ class ActiveSet {
     auto clear = [&] {
       for (Sums& s : sums_)
         s = Sums{};
-    };
-    auto combined = [&] {
-      Sums all;
-      for (const Sums& s : sums_) {
-        all.a += s.a;
-        all.b += s.b;
-        all.c += s.c;
-        all.d += s.d;
-        all.e = std::max(all.e, s.e);
-      }
-      return all;
     };
     // Filter: the residual in, z = its image kept on the set out; sums z and r z.
     auto residual_in = [&](Index first, Index rows, T* buffer, Index ld, int) {
@@ -381,33 +401,35 @@ class ActiveSet {
   // the start is the uniform pressure).
   Index nested_start(double mean_pressure, std::vector<T>& p, const std::function<void()>& between) {
     p.assign(n_, T(1));
-    const Index nx = grid_.nx, ny = grid_.ny;
-    if (nx % 2 != 0 || ny % 2 != 0 || nx / 2 < kCoarsest || ny / 2 < kCoarsest) return 0;
-    Grid coarse_grid = grid_;
-    coarse_grid.nx = nx / 2;
-    coarse_grid.ny = ny / 2;
-    std::vector<T> coarse_heights(static_cast<std::size_t>(coarse_grid.points()));
-    for (Index y = 0; y < coarse_grid.ny; ++y)
-      for (Index x = 0; x < coarse_grid.nx; ++x) {
-        auto at = [&](Index yy, Index xx) {
-          return static_cast<double>(h_[static_cast<std::size_t>(yy * nx + xx)]);
-        };
-        coarse_heights[static_cast<std::size_t>(y * coarse_grid.nx + x)] =
-            static_cast<T>(0.25 * (at(2 * y, 2 * x) + at(2 * y, 2 * x + 1) + at(2 * y + 1, 2 * x) +
-                                   at(2 * y + 1, 2 * x + 1)));
-      }
-    ActiveSet<T> coarse(coarse_grid, coarse_heights, modulus_, threads_);
+    if (!coarse_) return 0;
     std::vector<T> coarse_pressure;
     const ActiveSetOutcome o =
-        coarse.solve(mean_pressure, kCoarseTolerance, 100000, false, coarse_pressure, between);
-    p = interpolate_up(coarse_pressure, coarse_grid.nx, coarse_grid.ny, grid_.periodic);
+        coarse_->solve(mean_pressure, kCoarseTolerance, 100000, false, coarse_pressure, between);
+    p = interpolate_up(coarse_pressure, grid_.nx / 2, grid_.ny / 2, grid_.periodic);
     for (T& v : p)
       v = std::max(v, T(0));
     return o.iterations;
   }
 
+  // The next coarser level (null when the grid is too small or odd): the surface averaged over 2 x 2 blocks.
+  void make_coarse_level() {
+    const Index nx = grid_.nx, ny = grid_.ny;
+    if (nx % 2 != 0 || ny % 2 != 0 || nx / 2 < kCoarsest || ny / 2 < kCoarsest) return;
+    Grid coarse_grid = grid_;
+    coarse_grid.nx = nx / 2;
+    coarse_grid.ny = ny / 2;
+    std::vector<T> coarse_heights(static_cast<std::size_t>(coarse_grid.points()));
+    auto at = [&](Index y, Index x) { return static_cast<double>(h_[static_cast<std::size_t>(y * nx + x)]); };
+    for (Index y = 0; y < coarse_grid.ny; ++y)
+      for (Index x = 0; x < coarse_grid.nx; ++x)
+        coarse_heights[static_cast<std::size_t>(y * coarse_grid.nx + x)] =
+            static_cast<T>(0.25 * (at(2 * y, 2 * x) + at(2 * y, 2 * x + 1) + at(2 * y + 1, 2 * x) +
+                                   at(2 * y + 1, 2 * x + 1)));
+    coarse_ = std::make_unique<ActiveSet<T>>(coarse_grid, std::move(coarse_heights), modulus_, threads_);
+  }
+
   Grid grid_;
-  const std::vector<T>& h_;
+  std::vector<T> h_;
   Real modulus_;
   int threads_;
   std::unique_ptr<Convolution<T>> operator_, filter_;
@@ -416,33 +438,37 @@ class ActiveSet {
   std::vector<std::uint8_t> in_;
   double height_range_ = 1, highest_ = 0, gap_round_off_ = 0;
   double last_step_change_ = 0;  // sum |tau t| / sum |p| of the last CG iteration
-  // Per-thread sums of a pass (one cache line each).
-  struct alignas(64) Sums {
-    double a = 0, b = 0, c = 0, d = 0, e = 0;
-  };
   std::vector<Sums> sums_;
-  double set_size_ = 1;  // nodes in the set
+  double set_size_ = 1;                   // nodes in the set
+  std::unique_ptr<ActiveSet<T>> coarse_;  // the next coarser level of the nested start, once made
 };
 
 }  // namespace
 
 template <class T>
-ActiveSetOutcome solve_active_set(const Grid& grid, const std::vector<T>& heights, Real modulus, int threads,
-                                  double mean_pressure, double tolerance, Index max_iterations, bool warm,
-                                  std::vector<T>& pressure, std::vector<T>& displacement_minus_heights,
-                                  const std::function<void()>& between) {
-  ActiveSet<T> solver(grid, heights, modulus, threads);
+struct ActiveSetSolver<T>::Impl {
+  ActiveSet<T> solver;
+};
+
+template <class T>
+ActiveSetSolver<T>::ActiveSetSolver(const Grid& grid, std::vector<T> heights, Real modulus, int threads)
+    : impl_(std::make_unique<Impl>(Impl{ActiveSet<T>(grid, std::move(heights), modulus, threads)})) {}
+
+template <class T>
+ActiveSetSolver<T>::~ActiveSetSolver() = default;
+
+template <class T>
+ActiveSetOutcome ActiveSetSolver<T>::solve(double mean_pressure, double tolerance, Index max_iterations,
+                                           bool warm, std::vector<T>& pressure,
+                                           std::vector<T>& displacement_minus_heights,
+                                           const std::function<void()>& between) {
   const ActiveSetOutcome outcome =
-      solver.solve(mean_pressure, tolerance, max_iterations, warm, pressure, between);
-  solver.displacement_minus_heights(displacement_minus_heights);
+      impl_->solver.solve(mean_pressure, tolerance, max_iterations, warm, pressure, between);
+  impl_->solver.displacement_minus_heights(displacement_minus_heights);
   return outcome;
 }
 
-template ActiveSetOutcome solve_active_set<double>(const Grid&, const std::vector<double>&, Real, int, double,
-                                                   double, Index, bool, std::vector<double>&,
-                                                   std::vector<double>&, const std::function<void()>&);
-template ActiveSetOutcome solve_active_set<float>(const Grid&, const std::vector<float>&, Real, int, double,
-                                                  double, Index, bool, std::vector<float>&,
-                                                  std::vector<float>&, const std::function<void()>&);
+template class ActiveSetSolver<double>;
+template class ActiveSetSolver<float>;
 
 }  // namespace contactbench

@@ -27,6 +27,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "contactbench/core/grid.hpp"
@@ -44,14 +45,27 @@ struct ActiveSetOutcome {
   bool converged = false;
 };
 
-// Solves load control on `grid` (heights centred, row-major ny x nx) for the mean pressure [Pa]. `pressure`:
-// in, the start when `warm` (scaled to the load), else ignored and a nested coarse start is made; out, the
-// solution. `displacement_minus_heights`: out, G p - h (the gap less the flat's height). `between` is called
-// before every inner iteration (may be empty; may throw).
+// Load control on `grid` (heights centred, row-major ny x nx), keeping its FFT plans, arrays and coarse
+// levels from solve to solve.
 template <class T>
-ActiveSetOutcome solve_active_set(const Grid& grid, const std::vector<T>& heights, Real modulus, int threads,
-                                  double mean_pressure, double tolerance, Index max_iterations, bool warm,
-                                  std::vector<T>& pressure, std::vector<T>& displacement_minus_heights,
-                                  const std::function<void()>& between);
+class ActiveSetSolver {
+ public:
+  ActiveSetSolver(const Grid& grid, std::vector<T> heights, Real modulus, int threads);
+  ~ActiveSetSolver();
+  ActiveSetSolver(const ActiveSetSolver&) = delete;
+  ActiveSetSolver& operator=(const ActiveSetSolver&) = delete;
+
+  // Solves for the mean pressure [Pa]. `pressure`: in, the start when `warm` (scaled to the load), else
+  // ignored and a nested coarse start is made; out, the solution. `displacement_minus_heights`: out,
+  // G p - h (the gap less the flat's height). `between` is called before every inner iteration (may be
+  // empty; may throw).
+  ActiveSetOutcome solve(double mean_pressure, double tolerance, Index max_iterations, bool warm,
+                         std::vector<T>& pressure, std::vector<T>& displacement_minus_heights,
+                         const std::function<void()>& between);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace contactbench

@@ -122,6 +122,7 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     for (Index i = 0; i < n_; ++i)
       h_[static_cast<std::size_t>(i)] = static_cast<T>(h.data()[i]);
     height_range_ = h.maxCoeff() - h.minCoeff();
+    if (active_set_) active_set_solver_ = std::make_unique<ActiveSetSolver<T>>(grid_, h_, modulus_, threads);
   }
 
   void forget() override {
@@ -307,8 +308,8 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     }
     ActiveSetOutcome result;
     try {
-      result = solve_active_set<T>(grid_, h_, modulus_, threads_, mean_pressure, tolerance, max_iterations,
-                                   warm_, pressure, g_, this->between_iterations_);
+      result = active_set_solver_->solve(mean_pressure, tolerance, max_iterations, warm_, pressure, g_,
+                                         this->between_iterations_);
     } catch (...) {
       forget();  // abandoned mid-solve: nothing to warm-start from
       throw;
@@ -770,6 +771,7 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
   Real modulus_;
   int threads_;
   bool active_set_;  // the solver "active_set": load control by bem/active_set.hpp
+  std::unique_ptr<ActiveSetSolver<T>> active_set_solver_;  // its solver (null for the others)
   std::unique_ptr<Convolution<T>> convolution_;
   Index n_;
   std::vector<T> h_, g_, t_;
