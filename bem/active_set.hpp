@@ -15,12 +15,18 @@
 // set methods get outer iteration counts that barely grow with the grid. A warm start (load stepping) takes
 // the set the same way from the previous pressure scaled to the load.
 //
-// Converged means: the set did not change in the last outer step (so p > 0 on A and g >= 0 off A) AND the
-// complementarity residual max |g| on A, relative to the height range, is at most the tolerance. The
-// stopping test is thus on the residual itself, not on a change that a stalled iteration could make small.
-// The iteration count is the number of inner CG iterations (each one application of G and one of the
-// filter: two FFT pairs, padded for non-periodic grids) plus one per outer step (its fresh gap, one
-// application of G), plus the coarse levels' counts divided by 4 per level (their cost in fine iterations).
+// Converged means: the set did not change in the last outer step (so p >= 0 on A and no node off A
+// penetrates by more than the threshold below), AND the complementarity residual, the largest |g| on A, is
+// at most the threshold tolerance x (max h - d) (the approach of the highest point: the scale of the gaps
+// that matter, where the height range could be made of a pit nothing touches; never below the gap's
+// round-off), AND the last CG step changed the pressure by at most the tolerance relative (PK's criterion,
+// on a settled set). The test is thus on the residual itself, not only on a change that a stalled
+// iteration could make small. Nodes enter only when they penetrate by more than the threshold (nodes at
+// p = 0 and g = 0 within it would otherwise flip in and out for ever).
+// The iteration count: the inner CG iterations (each one application of G and one of the filter: two FFT
+// pairs, padded for non-periodic grids), plus one per outer step (its CG's start, one application of G),
+// plus two (the starting set's gap and the final gap), plus the coarse levels' counts divided by 4 per
+// level (their cost in fine iterations).
 //
 // Load control of the elastic problem only: under separation control and with a hardness (met through
 // separation control) PolonskyKeer iterates as polonsky_keer whichever solver is chosen (polonsky_keer.cpp).

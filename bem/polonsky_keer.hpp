@@ -8,7 +8,7 @@
 // and mean(p) = the prescribed mean pressure. Each iteration costs two applications of G (two FFT pairs),
 // with all of its element-wise work fused into them (bem/convolution.hpp): about two FFT pairs in all.
 //
-// Two iterations solve this problem (options.solver, bem/solver_registry.hpp; docs/solvers.md):
+// Three iterations solve this problem (options.solver, bem/solver_registry.hpp; docs/solvers.md):
 // - polonsky_keer: PK's constrained CG, the search direction built from the gap on the contact set;
 // - preconditioned_cg: the same loop with the gap residual (its mean on the contact set removed) filtered by
 //   (E*/2)|q| in Fourier space (bem/fourier_preconditioner.hpp), restricted to the contact set again with its
@@ -16,13 +16,18 @@
 //   entering nodes take the overlap times the plain step <t,t>/<t,Gt> (PK's entry step has the wrong
 //   dimension once t is a pressure). One more convolution an iteration (periodic: one FFT pair; non-periodic:
 //   3/4 of a padded pair, as the operator's), far fewer iterations, and a count that grows much more slowly
-//   with the grid (results/bench/bem_solvers.md).
+//   with the grid (results/bench/bem_solvers.md);
+// - active_set: a primal-dual active-set method (bem/active_set.hpp): the linear problem on a guessed contact
+//   set solved by a conjugate gradient with the same filter, the set updated from p and the gap, from a
+//   nested coarse start; a count that barely grows with the grid. It stops on its own criterion (the set
+//   settled, the largest gap on it at most the tolerance times the approach max h - d, the last CG step's
+//   relative change at most the tolerance; bem/active_set.hpp).
 //
-// preconditioned_cg applies to load-controlled elastic solves; separation control and the hardness cap (met
-// through separation control) iterate as polonsky_keer whichever solver is chosen (polonsky_keer.cpp says
-// why).
+// preconditioned_cg and active_set apply to load-controlled elastic solves; separation control and the
+// hardness cap (met through separation control) iterate as polonsky_keer whichever solver is chosen
+// (polonsky_keer.cpp says why).
 //
-// Stopping criteria, the same tolerance for both:
+// Stopping criteria of polonsky_keer and preconditioned_cg, the same tolerance for both (active_set: above):
 // - the relative change of the pressure in one iteration (Polonsky & Keer's),
 //     sum |p_new - p_old| / sum p_new < tolerance;
 // - preconditioned_cg also requires that no node entered or left the contact set in that iteration: the
