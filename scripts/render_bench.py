@@ -170,8 +170,11 @@ def bem_solvers(data):
     for s in solvers:
         head += f" {s} iterations | {s} [s] | {s} tol | {s} FFT pairs / it |"
         rule += "---|---|---|---|"
-    if len(solvers) > 1:
-        head += f" iterations {solvers[0]} / {solvers[1]} | time {solvers[0]} / {solvers[1]} |"
+    # Ratios against plain Polonsky-Keer (the yardstick of issue 12), else against the first solver.
+    base_solver = "polonsky_keer" if "polonsky_keer" in solvers else solvers[0]
+    others = [s for s in solvers if s != base_solver]
+    for s in others:
+        head += f" iterations {base_solver} / {s} | time {base_solver} / {s} |"
         rule += "---|---|"
     lines += [head, rule]
     for key in sorted(cases):
@@ -189,8 +192,8 @@ def bem_solvers(data):
                     continue
                 line += (f" {fmt(row.get('iterations'))} | {fmt(row.get('seconds'))} | "
                          f"{row.get('tolerance', 0):.0e} | {fmt(row.get('fft_pairs_per_iteration'))} |")
-            if len(solvers) > 1:
-                a, b = r.get(solvers[0], {}), r.get(solvers[1], {})
+            for s in others:
+                a, b = r.get(base_solver, {}), r.get(s, {})
                 ok = all(x.get("iterations") and not x.get("error_occurred") for x in (a, b))
                 line += (f" {fmt(a['iterations'] / b['iterations'])} | {fmt(a['seconds'] / b['seconds'])} |"
                          if ok else " - | - |")
