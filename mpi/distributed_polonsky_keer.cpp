@@ -16,7 +16,7 @@ void refuse(bool unsupported, const std::string& what) {
   if (unsupported)
     throw Error("distributed Polonsky-Keer: " + what +
                 " is not distributed yet (docs/mpi.md); it supports load control, elastic, double precision, "
-                "solver = polonsky_keer, load_path = scaled, no coarse_start");
+                "load_path = scaled, no coarse_start");
 }
 
 double max_over_ranks(double value, MPI_Comm comm) {
@@ -49,7 +49,6 @@ DistributedPolonskyKeer::DistributedPolonskyKeer(const Grid& grid, const HeightM
     : grid_(grid), comm_(comm), options_(std::move(options)), operator_(grid, modulus, comm) {
   if (!(options_.tolerance > 0) || options_.max_iterations < 1)
     throw Error("Polonsky-Keer: tolerance must be > 0 and max_iterations >= 1");
-  refuse(options_.solver != SolverKind::polonsky_keer, "solver = preconditioned_cg");
   refuse(options_.hardness.has_value(), "a hardness");
   refuse(options_.single_precision, "single precision");
   refuse(options_.coarse_start, "coarse_start");
@@ -71,6 +70,10 @@ DistributedPolonskyKeer::DistributedPolonskyKeer(const Grid& grid, const HeightM
   u_.assign(n, 0.0);
   q_[0].assign(n, 0.0);
   q_[1].assign(n, 0.0);
+  if (options_.solver == SolverKind::preconditioned_cg) {
+    preconditioner_ = make_distributed_preconditioner(grid, modulus, comm);
+    z_.assign(n, 0.0);
+  }
   const double local_max =
       n ? *std::max_element(h_.begin(), h_.end()) : -std::numeric_limits<double>::infinity();
   const double local_min =
@@ -140,17 +143,20 @@ DistributedPolonskyKeer::Moments DistributedPolonskyKeer::gap_pass(const std::ve
   return m;
 }
 
-// bem/polonsky_keer.cpp's iterate<kLoad = true, kHard = false>, plain (not preconditioned), pass by pass.
+// bem/polonsky_keer.cpp's iterate<kLoad = true, kHard = false>, plain or preconditioned, pass by pass.
 void DistributedPolonskyKeer::iterate(double total) {
   const double tolerance = options_.tolerance;
   const Index max_iterations = options_.max_iterations;
   const double self_response = operator_.self_response();
+  const bool preconditioned = preconditioner_ != nullptr;
   const std::size_t n = h_.size();
 
   apply(q_[cur_], u_);
   Moments moments = gap_pass(q_[cur_], q_[cur_], s_[cur_], s_[cur_]);
 
-  double g_norm_old = 1, delta = 0, change = 0;
+  double g_norm_old = 1, delta = 0, change = 0;  // delta = 0: the first step is steepest descent
+  double rz_old = 1;                             // preconditioned: <r, z> of the last direction
+  double entered = 0;                            // nodes that entered the set in the last update
   // Step damping after kStall iterations without a new lowest change (bem/polonsky_keer.cpp says why).
   constexpr Index kStall = 25;
   double damping = 1, lowest_change = std::numeric_limits<double>::infinity();
@@ -161,7 +167,8 @@ void DistributedPolonskyKeer::iterate(double total) {
     if (iteration > 0) {
       change = moments.sum > 0 ? moments.change / moments.sum
                                : (moments.change == 0 ? 0.0 : std::numeric_limits<double>::infinity());
-      if (change < tolerance) {
+      // Preconditioned, the contact set must also have settled (docs/solvers.md).
+      if (change < tolerance && (!preconditioned || entered == 0)) {
         converged = true;
         break;
       }
@@ -179,31 +186,66 @@ void DistributedPolonskyKeer::iterate(double total) {
     if (moments.elastic == 0) throw Error("Polonsky-Keer: the contact set became empty");
     const std::vector<double>& q_cur = q_[cur_];
     const double s_cur = s_[cur_], gbar = moments.g_mean;
-    const double beta = delta > 0 && g_norm_old > 0 ? moments.g_norm / g_norm_old : 0.0;
-    g_norm_old = moments.g_norm;
 
-    // The direction t = g - gbar + beta t on the contact set (PK eq. 11), and r = G t.
-    double step_sums[4] = {0, 0, 0, 0};  // sum (g - gbar) t, sum t, sum r on the set, t . r
-    for (std::size_t i = 0; i < n; ++i) {
-      const double gc = g_[i] - gbar;
-      const double tv = q_cur[i] > 0 ? gc + beta * t_[i] : 0.0;
-      t_[i] = tv;
-      step_sums[0] += gc * tv;
-      step_sums[1] += tv;
+    // The direction on the contact set, and r = G t. Plain: t = g - gbar + beta t (PK eq. 11).
+    // Preconditioned: z = the filtered residual g - gbar on the set, t = z - zbar + beta t
+    // (bem/polonsky_keer.cpp).
+    double beta = 0;
+    double step_sums[5] = {0, 0, 0, 0, 0};  // sum (g - gbar) t, sum t, sum t^2, sum r on the set, t . r
+    if (preconditioned) {
+      for (std::size_t i = 0; i < n; ++i)
+        u_[i] = q_cur[i] > 0 ? g_[i] - gbar : 0.0;
+      double residual_sums[3] = {0, 0, 0};  // sum r, sum z, sum r z on the set
+      for (std::size_t i = 0; i < n; ++i)
+        residual_sums[0] += u_[i];
+      preconditioner_->apply(u_.data(), z_.data());
+      for (std::size_t i = 0; i < n; ++i) {
+        const bool in = q_cur[i] > 0;
+        z_[i] = in ? z_[i] : 0.0;
+        residual_sums[1] += z_[i];
+        residual_sums[2] += in ? (g_[i] - gbar) * z_[i] : 0.0;
+      }
+      sum_over_ranks(residual_sums, comm_);
+      const double zbar = residual_sums[1] / moments.elastic;
+      const double rz = residual_sums[2] - zbar * residual_sums[0];
+      beta = delta > 0 && rz_old > 0 ? rz / rz_old : 0.0;
+      rz_old = rz;
+      for (std::size_t i = 0; i < n; ++i) {
+        const bool in = q_cur[i] > 0;
+        const double tv = in ? (z_[i] - zbar) + beta * t_[i] : 0.0;
+        t_[i] = tv;
+        step_sums[0] += in ? (g_[i] - gbar) * tv : 0.0;
+        step_sums[1] += tv;
+        step_sums[2] += tv * tv;
+      }
+    } else {
+      beta = delta > 0 && g_norm_old > 0 ? moments.g_norm / g_norm_old : 0.0;
+      g_norm_old = moments.g_norm;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double gc = g_[i] - gbar;
+        const double tv = q_cur[i] > 0 ? gc + beta * t_[i] : 0.0;
+        t_[i] = tv;
+        step_sums[0] += gc * tv;
+        step_sums[1] += tv;
+      }
     }
     apply(t_, u_);  // u_ holds r = G t until the next gap pass
     for (std::size_t i = 0; i < n; ++i) {
-      step_sums[2] += q_cur[i] > 0 ? u_[i] : 0.0;
-      step_sums[3] += t_[i] * u_[i];
+      step_sums[3] += q_cur[i] > 0 ? u_[i] : 0.0;
+      step_sums[4] += t_[i] * u_[i];
     }
     sum_over_ranks(step_sums, comm_);
-    const double gt = step_sums[0], t_sum = step_sums[1], r_sum = step_sums[2], t_r = step_sums[3];
-    const double tr = t_r - r_sum / moments.elastic * t_sum;
+    const double gt = step_sums[0], t_sum = step_sums[1], tt = step_sums[2], r_sum = step_sums[3];
+    // t . (r - rbar) on the contact set (t is zero elsewhere).
+    const double tr = step_sums[4] - r_sum / moments.elastic * t_sum;
     const double tau = tr > 0 ? damping * gt / tr : 0.0;
-    const double tau_enter = tr > 0 ? tau : damping / self_response;
+    // Entering nodes: PK's step, or (preconditioned, t a pressure) the plain step of t, <t,t>/<t,Gt>; without
+    // a descent, the stiffness of one pixel.
+    const double tau_enter = preconditioned ? damping * (tr > 0 && tt > 0 ? tt / tr : 1 / self_response)
+                                            : (tr > 0 ? tau : damping / self_response);
 
-    // The update q = max(p - tau t, 0); nodes out of contact that the surface penetrates enter with -tau g
-    // (PK eq. 14). Then the load imposed by rescaling, and the next gap.
+    // The update q = max(p - tau t, 0); nodes out of contact that the surface penetrates enter with
+    // -tau_enter g (PK eq. 14). Then the load imposed by rescaling, and the next gap.
     const int next = 1 - cur_;
     std::vector<double>& q_next = q_[next];
     double update_sums[2] = {0, 0};  // sum q, nodes that entered
@@ -222,7 +264,8 @@ void DistributedPolonskyKeer::iterate(double total) {
     moments = gap_pass(q_next, q_cur, s_new, s_cur);
     cur_ = next;
     s_[cur_] = s_new;
-    delta = update_sums[1] > 0 ? 0 : 1;
+    entered = update_sums[1];
+    delta = entered > 0 ? 0 : 1;
     ++iteration;
   }
   iterations_ = iteration;

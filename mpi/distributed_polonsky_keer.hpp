@@ -37,8 +37,7 @@ struct DistributedContactSolution {
 class DistributedPolonskyKeer {
  public:
   // Collective. local_heights: this rank's slab (slab_of(grid, comm)) of the surface; modulus E* [Pa].
-  // options.solver must be polonsky_keer (plain), and hardness, single_precision, coarse_start, an
-  // extrapolated load path unset (see above).
+  // options: hardness, single_precision, coarse_start and an extrapolated load path unset (see above).
   DistributedPolonskyKeer(const Grid& grid, const HeightMap& local_heights, Real modulus, MPI_Comm comm,
                           PolonskyKeerOptions options);
   ~DistributedPolonskyKeer();
@@ -62,7 +61,8 @@ class DistributedPolonskyKeer {
   PolonskyKeerOptions options_;
   DistributedHalfSpace operator_;
   Index local_points_;
-  std::vector<double> h_, g_, t_, u_, q_[2];
+  std::unique_ptr<DistributedConvolution> preconditioner_;  // null: plain Polonsky-Keer
+  std::vector<double> h_, g_, t_, u_, z_, q_[2];
   double s_[2] = {1, 1};
   int cur_ = 0;
   bool warm_ = false;

@@ -22,20 +22,25 @@ constexpr Real kModulus = 1e11;
 // bem/polonsky_keer.cpp says the same of different thread counts).
 constexpr double kPressureTolerance = 1e-12;
 
-PolonskyKeerOptions plain() {
+PolonskyKeerOptions options_for(SolverKind solver) {
   PolonskyKeerOptions options;
-  options.solver = SolverKind::polonsky_keer;
+  options.solver = solver;
   options.tolerance = 1e-8;
   return options;
 }
 
+PolonskyKeerOptions plain() {
+  return options_for(SolverKind::polonsky_keer);
+}
+
 // Solves the loads in order with both solvers (warm starts), and compares each load's result on rank 0.
-void expect_same_solutions(const Surface& surface, const std::vector<double>& slope_fractions) {
+void expect_same_solutions(const Surface& surface, const std::vector<double>& slope_fractions,
+                           const PolonskyKeerOptions& options) {
   const Grid& grid = surface.grid();
   const Slab slab = slab_of(grid, MPI_COMM_WORLD);
   DistributedPolonskyKeer distributed(grid, testing::rows_of(surface.heights(), slab), kModulus,
-                                      MPI_COMM_WORLD, plain());
-  PolonskyKeer serial(surface, kModulus, plain());
+                                      MPI_COMM_WORLD, options);
+  PolonskyKeer serial(surface, kModulus, options);
   const Real slope = spectral_moments(surface).rms_gradient();
   for (const double fraction : slope_fractions) {
     const Real load = fraction * kModulus * slope;  // about 2 * fraction of the area in contact
@@ -44,7 +49,8 @@ void expect_same_solutions(const Surface& surface, const std::vector<double>& sl
     const HeightMap gap = gather_to_root(d.gap, slab, MPI_COMM_WORLD);
     const ContactSolution& s = serial.solve(load);
     if (rank_of(MPI_COMM_WORLD) != 0) continue;
-    const std::string what = std::to_string(grid.nx) + " x " + std::to_string(grid.ny) +
+    const std::string what = std::string(solver_name(options.solver)) + ", " + std::to_string(grid.nx) +
+                             " x " + std::to_string(grid.ny) +
                              (grid.periodic ? " periodic" : " non-periodic") + ", load " +
                              std::to_string(load);
     EXPECT_TRUE(s.converged && d.converged) << what;
@@ -60,17 +66,43 @@ void expect_same_solutions(const Surface& surface, const std::vector<double>& sl
   }
 }
 
+Surface periodic_surface() {
+  return generate_surface({.nx = 64, .ny = 48, .lx = 1e-4, .ly = 0.75e-4, .periodic = true},
+                          {.sigma = 1e-6, .hurst = 0.7, .qr = 1e5, .qs = std::nullopt}, 4);
+}
+
+Surface non_periodic_surface() {
+  return generate_surface({.nx = 40, .ny = 33, .lx = 1e-4, .ly = 0.8e-4, .periodic = true},
+                          {.sigma = 1e-6, .hurst = 0.8, .qr = 1e5, .qs = std::nullopt}, 8)
+      .with_periodic(false);
+}
+
 TEST(DistributedPolonskyKeer, TakesTheSerialStepsOnAPeriodicSurface) {
-  const Surface surface = generate_surface({.nx = 64, .ny = 48, .lx = 1e-4, .ly = 0.75e-4, .periodic = true},
-                                           {.sigma = 1e-6, .hurst = 0.7, .qr = 1e5, .qs = std::nullopt}, 4);
-  expect_same_solutions(surface, {0.01, 0.03, 0.08});
+  expect_same_solutions(periodic_surface(), {0.01, 0.03, 0.08}, plain());
 }
 
 TEST(DistributedPolonskyKeer, TakesTheSerialStepsOnANonPeriodicSurface) {
-  const Surface surface = generate_surface({.nx = 40, .ny = 33, .lx = 1e-4, .ly = 0.8e-4, .periodic = true},
-                                           {.sigma = 1e-6, .hurst = 0.8, .qr = 1e5, .qs = std::nullopt}, 8)
-                              .with_periodic(false);
-  expect_same_solutions(surface, {0.02, 0.045});
+  expect_same_solutions(non_periodic_surface(), {0.02, 0.045}, plain());
+}
+
+TEST(DistributedPreconditionedCg, TakesTheSerialStepsOnAPeriodicSurface) {
+  expect_same_solutions(periodic_surface(), {0.01, 0.03, 0.08}, options_for(SolverKind::preconditioned_cg));
+}
+
+TEST(DistributedPreconditionedCg, TakesTheSerialStepsOnANonPeriodicSurface) {
+  expect_same_solutions(non_periodic_surface(), {0.02, 0.045}, options_for(SolverKind::preconditioned_cg));
+}
+
+TEST(DistributedPreconditionedCg, IsNotThePlainIteration) {
+  // The comparisons above would pass if both solvers ignored options.solver; the filter must show.
+  const Surface surface = periodic_surface();
+  const Slab slab = slab_of(surface.grid(), MPI_COMM_WORLD);
+  const Real load = 0.01 * kModulus * spectral_moments(surface).rms_gradient();
+  DistributedPolonskyKeer plain_solver(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
+                                       MPI_COMM_WORLD, plain());
+  DistributedPolonskyKeer filtered(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
+                                   MPI_COMM_WORLD, options_for(SolverKind::preconditioned_cg));
+  EXPECT_LT(filtered.solve(load).iterations, plain_solver.solve(load).iterations);
 }
 
 TEST(DistributedPolonskyKeer, ZeroLoadTouchesNothing) {
@@ -89,15 +121,16 @@ TEST(DistributedPolonskyKeer, RefusesWhatIsNotDistributedYetNamingIt) {
   const Grid grid{.nx = 16, .ny = 16, .lx = 1e-4, .ly = 1e-4, .periodic = true};
   const HeightMap local = HeightMap::Zero(slab_of(grid, MPI_COMM_WORLD).count, grid.nx);
   PolonskyKeerOptions options = plain();
-  options.solver = SolverKind::preconditioned_cg;
+  options.hardness = 1e9;
   try {
     DistributedPolonskyKeer solver(grid, local, kModulus, MPI_COMM_WORLD, options);
-    ADD_FAILURE() << "the preconditioned solver was accepted";
+    ADD_FAILURE() << "a hardness was accepted";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("preconditioned_cg"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("hardness"), std::string::npos) << e.what();
   }
   options = plain();
-  options.hardness = 1e9;
+  options.single_precision = true;
+  options.tolerance = 1e-6;
   EXPECT_THROW(DistributedPolonskyKeer(grid, local, kModulus, MPI_COMM_WORLD, options), Error);
 }
 
