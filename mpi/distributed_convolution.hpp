@@ -37,6 +37,11 @@ class DistributedConvolution {
   // G(0): the output at a point of a unit input at that point alone, the sum of M over the full lattice.
   double self_response() const { return self_response_; }
 
+  // Bytes this rank holds for the convolution: the transform's slab, the multiplier, the exchange buffer.
+  std::size_t bytes() const {
+    return fft_->bytes() + sizeof(double) * (multiplier_.capacity() + receive_buffer_.capacity());
+  }
+
   // out = conv(in) on this rank's slab (count x nx, row-major); in and out may be the same array. Collective.
   void apply(const Real* in, Real* out);
 

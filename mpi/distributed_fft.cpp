@@ -22,6 +22,7 @@ DistributedRealFft2d::DistributedRealFft2d(Index nx, Index ny, MPI_Comm comm, in
     throw Error("mpi: FFTW-MPI's split of the rows differs from the slab layout (docs/mpi.md)");
   spectrum_start_ = column_start;
   spectrum_count_ = columns;
+  bytes_ = sizeof(fftw_complex) * static_cast<std::size_t>(std::max<ptrdiff_t>(complex_values, 1));
   data_ = fftw_alloc_complex(static_cast<std::size_t>(std::max<ptrdiff_t>(complex_values, 1)));
   if (!data_)
     throw Error("mpi: out of memory for a slab of " + std::to_string(nx) + " x " + std::to_string(ny));

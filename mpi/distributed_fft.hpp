@@ -5,6 +5,8 @@
 // Conventions as core/fft.hpp: forward unnormalised exp(-i q.x), backward unnormalised exp(+i q.x).
 #pragma once
 
+#include <cstddef>
+
 #include <mpi.h>
 
 #include <fftw3.h>
@@ -33,6 +35,9 @@ class DistributedRealFft2d {
   // This rank's spectral columns: value (kx - spectrum_start, ky) at spectrum()[(kx - start) * ny + ky].
   Complex* spectrum() { return reinterpret_cast<Complex*>(data_); }
 
+  // Bytes this rank holds for the transform (its in-place slab, as FFTW-MPI sizes it).
+  std::size_t bytes() const { return bytes_; }
+
   void forward();   // spectrum() <- forward(real slab); collective
   void backward();  // real slab <- backward(spectrum()); collective
 
@@ -45,6 +50,7 @@ class DistributedRealFft2d {
   MPI_Comm comm_;
   Index spectrum_start_ = 0, spectrum_count_ = 0;
   fftw_complex* data_ = nullptr;
+  std::size_t bytes_ = 0;
   fftw_plan forward_plan_ = nullptr, backward_plan_ = nullptr;
 };
 

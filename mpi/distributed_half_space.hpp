@@ -26,6 +26,8 @@ class DistributedHalfSpace {
   // G(0): the displacement at a pixel of a unit pressure on that pixel alone [m/Pa] (as bem's self_response).
   double self_response() const { return convolution_->self_response(); }
 
+  std::size_t bytes() const { return convolution_->bytes(); }
+
   // displacement = G pressure on this rank's slab (slab().count x nx, row-major); the arrays may be the same.
   // Collective.
   void apply(const Real* pressure, Real* displacement) { convolution_->apply(pressure, displacement); }

@@ -45,8 +45,9 @@ struct DistributedPolonskyKeer::Moments {
 };
 
 DistributedPolonskyKeer::DistributedPolonskyKeer(const Grid& grid, const HeightMap& local_heights,
-                                                 Real modulus, MPI_Comm comm, PolonskyKeerOptions options)
-    : grid_(grid), comm_(comm), options_(std::move(options)), operator_(grid, modulus, comm) {
+                                                 Real modulus, MPI_Comm comm, PolonskyKeerOptions options,
+                                                 int threads)
+    : grid_(grid), comm_(comm), options_(std::move(options)), operator_(grid, modulus, comm, threads) {
   if (!(options_.tolerance > 0) || options_.max_iterations < 1)
     throw Error("Polonsky-Keer: tolerance must be > 0 and max_iterations >= 1");
   refuse(options_.hardness.has_value(), "a hardness");
@@ -71,7 +72,7 @@ DistributedPolonskyKeer::DistributedPolonskyKeer(const Grid& grid, const HeightM
   q_[0].assign(n, 0.0);
   q_[1].assign(n, 0.0);
   if (options_.solver == SolverKind::preconditioned_cg) {
-    preconditioner_ = make_distributed_preconditioner(grid, modulus, comm);
+    preconditioner_ = make_distributed_preconditioner(grid, modulus, comm, threads);
     z_.assign(n, 0.0);
   }
   const double local_max =
@@ -82,6 +83,12 @@ DistributedPolonskyKeer::DistributedPolonskyKeer(const Grid& grid, const HeightM
 }
 
 DistributedPolonskyKeer::~DistributedPolonskyKeer() = default;
+
+std::size_t DistributedPolonskyKeer::bytes() const {
+  std::size_t values = h_.capacity() + g_.capacity() + t_.capacity() + u_.capacity() + z_.capacity() +
+                       q_[0].capacity() + q_[1].capacity();
+  return sizeof(double) * values + operator_.bytes() + (preconditioner_ ? preconditioner_->bytes() : 0);
+}
 
 void DistributedPolonskyKeer::apply(const std::vector<double>& in, std::vector<double>& out) {
   operator_.apply(in.data(), out.data());

@@ -38,8 +38,9 @@ class DistributedPolonskyKeer {
  public:
   // Collective. local_heights: this rank's slab (slab_of(grid, comm)) of the surface; modulus E* [Pa].
   // options: hardness, single_precision, coarse_start and an extrapolated load path unset (see above).
+  // `threads`: FFTW's threads a rank, for the transforms (the element-wise passes run on one).
   DistributedPolonskyKeer(const Grid& grid, const HeightMap& local_heights, Real modulus, MPI_Comm comm,
-                          PolonskyKeerOptions options);
+                          PolonskyKeerOptions options, int threads = 1);
   ~DistributedPolonskyKeer();
 
   // Solves for the mean pressure P/A0 >= 0 [Pa], warm-started from the previous load's solution (scaled), as
@@ -47,6 +48,9 @@ class DistributedPolonskyKeer {
   const DistributedContactSolution& solve(Real mean_pressure);
   const DistributedContactSolution& solution() const { return solution_; }
   const Slab& slab() const { return operator_.slab(); }
+  // Bytes this rank holds for the solve (fields, operator, preconditioner; not the solution's copies): the
+  // memory per rank of docs/mpi.md.
+  std::size_t bytes() const;
 
  private:
   void apply(const std::vector<double>& in, std::vector<double>& out);
