@@ -62,10 +62,11 @@ ContactStatistics distributed_contact_statistics(const Grid& grid, const HeightM
                                                  const HeightMap& local_gap, const Topology& topology,
                                                  MPI_Comm comm) {
   const Slab slab = slab_of(grid, comm);
-  if (local_pressure.rows() != slab.count || local_pressure.cols() != grid.nx ||
-      local_gap.rows() != slab.count || local_gap.cols() != grid.nx)
-    throw Error("mpi: contact statistics: the local pressure and gap must be this rank's slab, " +
-                std::to_string(grid.nx) + " x " + std::to_string(slab.count));
+  throw_on_any_rank(local_pressure.rows() != slab.count || local_pressure.cols() != grid.nx ||
+                        local_gap.rows() != slab.count || local_gap.cols() != grid.nx,
+                    "mpi: contact statistics: the local pressure and gap must be this rank's slab, " +
+                        std::to_string(grid.nx) + " x " + std::to_string(slab.count),
+                    comm);
   const Index nx = grid.nx;
   const BinaryMap contact = (local_pressure > 0).cast<std::uint8_t>();
   Labeller labeller(Topology{topology.connectivity, topology.wrap_x, false});

@@ -171,10 +171,11 @@ SpectralMoments distributed_spectral_moments(const Grid& grid, const HeightMap& 
   validate(grid, "distributed moments grid");
   DistributedRealFft2d fft(grid.nx, grid.ny, comm);
   const Slab& slab = fft.slab();
-  if (local_heights.rows() != slab.count || local_heights.cols() != grid.nx)
-    throw Error("mpi: moments: the local heights are " + std::to_string(local_heights.cols()) + " x " +
-                std::to_string(local_heights.rows()) + " but this rank's slab is " + std::to_string(grid.nx) +
-                " x " + std::to_string(slab.count));
+  throw_on_any_rank(local_heights.rows() != slab.count || local_heights.cols() != grid.nx,
+                    "mpi: moments: the local heights are " + std::to_string(local_heights.cols()) + " x " +
+                        std::to_string(local_heights.rows()) + " but this rank's slab is " +
+                        std::to_string(grid.nx) + " x " + std::to_string(slab.count),
+                    comm);
   const Real mean = sum_over_ranks(local_heights.sum(), comm) / static_cast<Real>(grid.points());
   // The Hann window of core/spectrum.cpp, sin^2(pi (i + 1/2) / n), separable and normalised by its rms.
   auto hann = [](Index i, Index n) {

@@ -55,10 +55,12 @@ DistributedPolonskyKeer::DistributedPolonskyKeer(const Grid& grid, const HeightM
   refuse(options_.coarse_start, "coarse_start");
   refuse(options_.load_path != LoadPathStart::scaled, "load_path = extrapolated");
   const Slab& slab = operator_.slab();
-  if (local_heights.rows() != slab.count || local_heights.cols() != grid.nx)
-    throw Error("distributed Polonsky-Keer: the local heights are " + std::to_string(local_heights.cols()) +
-                " x " + std::to_string(local_heights.rows()) + " but this rank's slab is " +
-                std::to_string(grid.nx) + " x " + std::to_string(slab.count));
+  throw_on_any_rank(local_heights.rows() != slab.count || local_heights.cols() != grid.nx,
+                    "distributed Polonsky-Keer: the local heights are " +
+                        std::to_string(local_heights.cols()) + " x " + std::to_string(local_heights.rows()) +
+                        " but this rank's slab is " + std::to_string(grid.nx) + " x " +
+                        std::to_string(slab.count),
+                    comm);
   local_points_ = slab.points();
   const std::size_t n = static_cast<std::size_t>(local_points_);
   // Centred on the global mean, as the serial solver centres the surface (Surface::centred).

@@ -32,13 +32,15 @@ SweepCurve distributed_sweep(const Grid& grid, const HeightMap& local_heights, c
   const auto slabs = all_slabs(nx, grid.ny, comm);
   const int ranks = size_of(comm), me = rank_of(comm);
   const Slab& slab = slabs[static_cast<std::size_t>(me)];
-  if (local_heights.rows() != slab.count || local_heights.cols() != nx)
-    throw Error("distributed sweep: the local heights are " + std::to_string(local_heights.cols()) + " x " +
-                std::to_string(local_heights.rows()) + " but this rank's slab is " + std::to_string(nx) +
-                " x " + std::to_string(slab.count));
-  if (slab.points() >= SharedForest::kMaxPoints)
-    throw Error("distributed sweep: a slab of " + std::to_string(slab.points()) +
-                " points is more than the sweep's limit of 2^30 a rank: use more ranks");
+  throw_on_any_rank(local_heights.rows() != slab.count || local_heights.cols() != nx,
+                    "distributed sweep: the local heights are " + std::to_string(local_heights.cols()) +
+                        " x " + std::to_string(local_heights.rows()) + " but this rank's slab is " +
+                        std::to_string(nx) + " x " + std::to_string(slab.count),
+                    comm);
+  throw_on_any_rank(slab.points() >= SharedForest::kMaxPoints,
+                    "distributed sweep: a slab of " + std::to_string(slab.points()) +
+                        " points is more than the sweep's limit of 2^30 a rank: use more ranks",
+                    comm);
 
   // The levels, from the whole surface's extremes (or mean), as the serial sweep takes them.
   const bool filled = slab.count > 0;

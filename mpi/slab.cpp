@@ -61,17 +61,18 @@ void slab_offsets(const Slab& slab, MPI_Comm comm, std::vector<int>& counts, std
   }
 }
 
-void check_local(const HeightMap& local, const Slab& slab, const char* what) {
-  if (local.rows() != slab.count || local.cols() != slab.nx)
-    throw Error(std::string("mpi: ") + what + ": the local array is " + std::to_string(local.cols()) + " x " +
-                std::to_string(local.rows()) + " but the slab is " + std::to_string(slab.nx) + " x " +
-                std::to_string(slab.count));
+void check_local(const HeightMap& local, const Slab& slab, const char* what, MPI_Comm comm) {
+  throw_on_any_rank(local.rows() != slab.count || local.cols() != slab.nx,
+                    std::string("mpi: ") + what + ": the local array is " + std::to_string(local.cols()) +
+                        " x " + std::to_string(local.rows()) + " but the slab is " + std::to_string(slab.nx) +
+                        " x " + std::to_string(slab.count),
+                    comm);
 }
 
 }  // namespace
 
 HeightMap gather_to_root(const HeightMap& local, const Slab& slab, MPI_Comm comm) {
-  check_local(local, slab, "gather_to_root");
+  check_local(local, slab, "gather_to_root", comm);
   std::vector<int> counts, offsets;
   slab_offsets(slab, comm, counts, offsets);
   HeightMap whole;
@@ -82,16 +83,31 @@ HeightMap gather_to_root(const HeightMap& local, const Slab& slab, MPI_Comm comm
 }
 
 HeightMap scatter_from_root(const HeightMap& whole, const Slab& slab, MPI_Comm comm) {
-  if (rank_of(comm) == 0 && (whole.rows() != slab.ny || whole.cols() != slab.nx))
-    throw Error("mpi: scatter_from_root: the field on rank 0 is " + std::to_string(whole.cols()) + " x " +
-                std::to_string(whole.rows()) + " but the grid is " + std::to_string(slab.nx) + " x " +
-                std::to_string(slab.ny));
+  throw_on_any_rank(rank_of(comm) == 0 && (whole.rows() != slab.ny || whole.cols() != slab.nx),
+                    "mpi: scatter_from_root: the field on rank 0 is " + std::to_string(whole.cols()) + " x " +
+                        std::to_string(whole.rows()) + " but the grid is " + std::to_string(slab.nx) + " x " +
+                        std::to_string(slab.ny),
+                    comm);
   std::vector<int> counts, offsets;
   slab_offsets(slab, comm, counts, offsets);
   HeightMap local(slab.count, slab.nx);
   MPI_Scatterv(whole.data(), counts.data(), offsets.data(), MPI_DOUBLE, local.data(),
                static_cast<int>(slab.points()), MPI_DOUBLE, 0, comm);
   return local;
+}
+
+void throw_on_any_rank(bool failed, const std::string& message, MPI_Comm comm) {
+  const int ranks = size_of(comm);
+  int first = failed ? rank_of(comm) : ranks;
+  MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, comm);
+  if (first == ranks) return;
+  // The failing rank's message, to every rank.
+  std::string text = failed && rank_of(comm) == first ? message : std::string();
+  int length = static_cast<int>(text.size());
+  MPI_Bcast(&length, 1, MPI_INT, first, comm);
+  text.resize(static_cast<std::size_t>(length));
+  MPI_Bcast(text.data(), length, MPI_CHAR, first, comm);
+  throw Error(ranks > 1 ? text + " (on rank " + std::to_string(first) + ")" : text);
 }
 
 double sum_over_ranks(double value, MPI_Comm comm) {

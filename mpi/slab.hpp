@@ -4,6 +4,7 @@
 // empty). Every distributed field (heights, pressure, gap) is held as its slab alone: count x nx, row-major.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <mpi.h>
@@ -36,6 +37,11 @@ int size_of(MPI_Comm comm);
 HeightMap gather_to_root(const HeightMap& local, const Slab& slab, MPI_Comm comm);
 // This rank's count x nx slab of `whole` (ny x nx, read on rank 0 only; other ranks may pass an empty array).
 HeightMap scatter_from_root(const HeightMap& whole, const Slab& slab, MPI_Comm comm);
+
+// A check that only some ranks can fail, made collective: when `failed` on any rank, every rank throws Error
+// with the message of the lowest failing rank (naming it), so that no rank is left waiting in the next
+// collective call. Collective.
+void throw_on_any_rank(bool failed, const std::string& message, MPI_Comm comm);
 
 // Sum of a value over the ranks (MPI_Allreduce): the one reduction the distributed solvers need.
 double sum_over_ranks(double value, MPI_Comm comm);

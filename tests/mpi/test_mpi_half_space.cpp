@@ -56,6 +56,21 @@ TEST(Slabs, RefuseASlabOfTheWrongShape) {
   EXPECT_THROW(gather_to_root(HeightMap(slab.count + 1, 8), slab, MPI_COMM_WORLD), Error);
 }
 
+TEST(Slabs, AMistakeOnOneRankStopsEveryRankWithItsMessage) {
+  // Only rank 0 passes a wrong slab: every rank must throw (none left waiting in a collective), with rank 0's
+  // reason.
+  const Slab slab = slab_of(8, 8, MPI_COMM_WORLD);
+  const HeightMap local(rank_of(MPI_COMM_WORLD) == 0 ? slab.count + 1 : slab.count, 8);
+  try {
+    gather_to_root(local, slab, MPI_COMM_WORLD);
+    ADD_FAILURE() << "no error on rank " << rank_of(MPI_COMM_WORLD);
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("gather_to_root: the local array is 8 x"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(scatter_from_root(HeightMap(3, 3), slab, MPI_COMM_WORLD), Error);
+}
+
 // The distributed operator on this rank's slab, gathered on rank 0, against the serial operator there.
 void expect_operator_matches_serial(const Grid& grid) {
   const int rank = rank_of(MPI_COMM_WORLD);
