@@ -5,6 +5,7 @@
 
 #include <omp.h>
 
+#include "contactbench/app/mpi_launch.hpp"
 #include "contactbench/app/output.hpp"
 #include "contactbench/app/provenance.hpp"
 #include "contactbench/core/error.hpp"
@@ -42,6 +43,18 @@ int run_cli(int argc, char** argv) {
   add_bem_command(app);
   add_run_command(app);
   add_convert_command(app);
+  // Started as K > 1 MPI ranks: no stage of the command line is distributed yet (docs/mpi.md), and K copies
+  // would each do the whole work and write the same files. Refused, said once (by rank 0).
+  if (const MpiLaunch launch = mpi_launch(); launch.ranks > 1) {
+    if (launch.rank == 0)
+      std::cerr
+          << "contactbench: error: started as " << launch.ranks
+          << " MPI ranks (mpirun / mpiexec), but the command line has no distributed stages yet: each "
+             "rank would run the whole command and write the same files. Run it as one process; the "
+             "distributed solver, generation, statistics and sweep are in the library contactbench::mpi "
+             "(docs/mpi.md)\n";
+    return 1;
+  }
   try {
     app.parse(argc, argv);
     check_standard_output();  // a command whose output was lost must not exit 0

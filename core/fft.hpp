@@ -75,8 +75,11 @@ class ReproducibleInverseFft2d {
   // out(x) = sum_k in_k exp(+i q_k.x); `in` is ny x (nx/2+1), `out` becomes ny x nx. Runs on `threads`.
   void backward(const SpectrumMap& in, HeightMap& out, int threads);
 
- private:
+  // Lines per chunk. The distributed generator (mpi/) repeats these passes on the same chunks of columns
+  // with the same plans, which is what makes its result bit-identical to this one.
   static constexpr Index kLinesPerChunk = 16;
+
+ private:
   Index nx_, ny_;
   SpectrumMap work_;
   HeightMap result_;

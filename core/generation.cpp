@@ -67,37 +67,52 @@ void validate(const SelfAffinePsd& psd, const Grid& grid) {
                 str(std::min(grid.dqx(), grid.dqy())) + " 1/m): no mode would carry height");
 }
 
+SelfAffineModes::SelfAffineModes(const Grid& grid, const SelfAffinePsd& psd)
+    : lattice_(grid),
+      qr_(psd.qr),
+      qs_(psd.cutoff(grid)),
+      gx_(std::min(1.0, std::sqrt(psd.anisotropy))),
+      gy_(std::min(1.0, 1 / std::sqrt(psd.anisotropy))),
+      exponent_(-2 * (1 + psd.hurst)) {
+  validate(psd, grid);
+  const HalfLattice& lattice = lattice_;
+  // Shape of the PSD (C0 = 1) on the half lattice, then its lattice sum (each entry counted with its mirror).
+  using RealMap = Eigen::Array<Real, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  RealMap shape_map(lattice.rows(), lattice.cols());
+  for (Index row = 0; row < lattice.rows(); ++row)
+    for (Index col = 0; col < lattice.cols(); ++col)
+      shape_map(row, col) = shape(row, col);
+  const Real lattice_sum = (shape_map.rowwise() * lattice.multiplicity_row()).sum();
+  if (!(lattice_sum > 0)) throw Error("the PSD leaves no lattice mode with height: widen qs or the grid");
+  // |hhat_k|^2 = C_k dqx dqy with sum_k C_k dqx dqy = sigma^2 (normalised on the lattice).
+  scale_ = psd.sigma / std::sqrt(lattice_sum);
+}
+
+Real SelfAffineModes::shape(Index row, Index col) const {
+  const HalfLattice& lattice = lattice_;
+  const Real q = std::hypot(lattice.qx(col) / gx_, lattice.qy(row) / gy_);
+  const bool excluded = (row == 0 && col == 0) || lattice.nyquist_row(row) || lattice.nyquist_col(col);
+  return (excluded || q > qs_) ? 0.0 : (q < qr_ ? 1.0 : std::pow(q / qr_, exponent_));
+}
+
+Complex SelfAffineModes::coefficient(Index row, Index col, std::uint64_t seed) const {
+  return std::polar(scale_ * std::sqrt(shape(row, col)),
+                    random_phase(seed, lattice_.kx(col), lattice_.ky(row)));
+}
+
 SpectrumMap generate_coefficients(const Grid& grid, const SelfAffinePsd& psd, std::uint64_t seed) {
   validate(psd, grid);
-  // The half spectrum (16 B per value) and its shape (8 B), about half the points each: 12 B per point.
+  // The half spectrum (16 B per value) and the shape's sum (8 B), about half the points each: 12 B per point.
   check_fits_in_memory(
       saturating_product(
           saturating_product(static_cast<std::uintmax_t>(grid.nx), static_cast<std::uintmax_t>(grid.ny)), 12),
       "the spectrum of a " + std::to_string(grid.nx) + " x " + std::to_string(grid.ny) + " grid");
+  const SelfAffineModes modes(grid, psd);
   const HalfLattice lattice(grid);
-  const Real qs = psd.cutoff(grid);
-  const Real gx = std::min(1.0, std::sqrt(psd.anisotropy)), gy = std::min(1.0, 1 / std::sqrt(psd.anisotropy));
-  const Real exponent = -2 * (1 + psd.hurst);
-
-  // Shape of the PSD (C0 = 1) on the half lattice, then its lattice sum (each entry counted with its mirror).
-  using RealMap = Eigen::Array<Real, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  RealMap shape(lattice.rows(), lattice.cols());
-  for (Index row = 0; row < lattice.rows(); ++row)
-    for (Index col = 0; col < lattice.cols(); ++col) {
-      const Real q = std::hypot(lattice.qx(col) / gx, lattice.qy(row) / gy);
-      const bool excluded = (row == 0 && col == 0) || lattice.nyquist_row(row) || lattice.nyquist_col(col);
-      shape(row, col) = (excluded || q > qs) ? 0.0 : (q < psd.qr ? 1.0 : std::pow(q / psd.qr, exponent));
-    }
-  const Real lattice_sum = (shape.rowwise() * lattice.multiplicity_row()).sum();
-  if (!(lattice_sum > 0)) throw Error("the PSD leaves no lattice mode with height: widen qs or the grid");
-
-  // |hhat_k|^2 = C_k dqx dqy with sum_k C_k dqx dqy = sigma^2 (normalised on the lattice).
   SpectrumMap hhat(lattice.rows(), lattice.cols());
-  const Real scale = psd.sigma / std::sqrt(lattice_sum);
   for (Index row = 0; row < lattice.rows(); ++row)
     for (Index col = 0; col < lattice.cols(); ++col)
-      hhat(row, col) = std::polar(scale * std::sqrt(shape(row, col)),
-                                  random_phase(seed, lattice.kx(col), lattice.ky(row)));
+      hhat(row, col) = modes.coefficient(row, col, seed);
   return hhat;
 }
 

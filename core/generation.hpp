@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/surface.hpp"
 
 namespace contactbench {
@@ -27,6 +28,26 @@ struct SelfAffinePsd {
 
 // Throws Error naming the parameter and its accepted range unless psd is usable on grid.
 void validate(const SelfAffinePsd& psd, const Grid& grid);
+
+// The coefficients of a realisation one mode at a time, for code that computes only some of them (the
+// distributed generator, mpi/, where each rank computes the modes it owns): generate_coefficients is this
+// class, mode by mode over the half lattice, so both give the same bits.
+class SelfAffineModes {
+ public:
+  // Validates psd on grid. The normalisation is the lattice sum of the PSD's shape over the whole half
+  // lattice, summed as one array (4 B per grid point, freed on return) so that its rounding never depends on
+  // who asks.
+  SelfAffineModes(const Grid& grid, const SelfAffinePsd& psd);
+
+  // hhat at (row, col) of the half lattice (FFTW order, spectrum.hpp's HalfLattice) for `seed`.
+  Complex coefficient(Index row, Index col, std::uint64_t seed) const;
+
+ private:
+  Real shape(Index row, Index col) const;  // C / C0 at that mode
+  HalfLattice lattice_;
+  Real qr_, qs_, gx_, gy_, exponent_;
+  Real scale_ = 0;  // sigma / sqrt(lattice sum of the shape)
+};
 
 // Fourier-series coefficients hhat_k of a random realisation: deterministic modulus sqrt(C_k dqx dqy),
 // random phase with phi_{-k} = -phi_k. Each phase is a hash of (seed, kx, ky), so the realisation does not

@@ -13,18 +13,23 @@
 #include "contactbench/core/memory_budget.hpp"
 #include "contactbench/core/stripe_components.hpp"
 #include "contactbench/core/stripe_seams.hpp"
+#include "contactbench/core/sweep_levels.hpp"
 
 namespace contactbench {
 
 using sweep_detail::ExcessReader;
 using sweep_detail::ExcessStep;
+using sweep_detail::fixed_levels;
+using sweep_detail::joining_level;
 using sweep_detail::JoinTime;
 using sweep_detail::kNever;
 using sweep_detail::LocalJoin;
 using sweep_detail::SharedForest;
 using sweep_detail::StripeComponents;
+using sweep_detail::StripeReader;
 using sweep_detail::StripeRecord;
 using sweep_detail::StripeRows;
+using sweep_detail::sweep_stripe_levels;
 
 namespace {
 
@@ -75,36 +80,6 @@ void radix_sort(TimedPoint* points, TimedPoint* scratch, Index count) {
   if (from != points) std::copy(from, from + count, points);
 }
 
-// ---- Levels ---------------------------------------------------------------------------------------------
-
-std::vector<Real> fixed_levels(const HeightMap& heights, const SweepLevels& levels) {
-  if (levels.count < 1)
-    throw Error("sweep: the number of levels must be at least 1, got " + std::to_string(levels.count));
-  const Real top = heights.maxCoeff();
-  const Real bottom = levels.kind == SweepLevels::Kind::paper ? heights.mean() : heights.minCoeff();
-  std::vector<Real> z(static_cast<std::size_t>(levels.count) + 1);
-  const Real step = (top - bottom) / static_cast<Real>(levels.count);
-  for (Index k = 0; k <= levels.count; ++k)
-    z[k] = top - static_cast<Real>(k) * step;
-  z.back() = bottom;
-  return z;
-}
-
-// The level at which a point of this height joins: the first with z[k] < height (kNever: none). A guess
-// from the spacing, corrected against the stored levels so that h > z[k] holds exactly as reported.
-JoinTime joining_level(Real height, const std::vector<Real>& z) {
-  const Index levels = static_cast<Index>(z.size());
-  if (!(height > z.back())) return kNever;
-  const Real step = (z.front() - z.back()) / static_cast<Real>(levels - 1);
-  Index k =
-      step > 0 ? std::clamp<Index>(static_cast<Index>((z.front() - height) / step) + 1, 0, levels - 1) : 0;
-  while (k > 0 && height > z[k - 1])
-    --k;
-  while (!(height > z[k]))
-    ++k;
-  return static_cast<JoinTime>(k);
-}
-
 // ---- Sweeping one stripe ---------------------------------------------------------------------------------
 
 constexpr Index kPrefetchDistance = 16;
@@ -150,55 +125,6 @@ void sweep_stripe_exact(const HeightMap& heights, Index first, Index last, Strip
     stripe.add(order[k].index, order[k].time);
   }
 }
-
-// Fixed levels: a stable counting sort of the stripe's points by the level at which they join (points of
-// one level stay in memory order, which the union-find pass then walks with good locality).
-void sweep_stripe_levels(const HeightMap& heights, const std::vector<Real>& z, Index first, Index last,
-                         StripeComponents& stripe) {
-  const Real* h = heights.data();
-  const Index levels = static_cast<Index>(z.size());
-  std::vector<std::int32_t> level(static_cast<std::size_t>(last - first));
-  std::vector<Index> starts(static_cast<std::size_t>(levels) + 2, 0);
-  for (Index i = first; i < last; ++i) {
-    const JoinTime t = joining_level(h[i], z);
-    level[i - first] = t == kNever ? static_cast<std::int32_t>(levels) : static_cast<std::int32_t>(t);
-    ++starts[level[i - first] + 1];
-  }
-  std::partial_sum(starts.begin(), starts.end(), starts.begin());
-  std::vector<std::int32_t> order(static_cast<std::size_t>(starts[levels]));
-  std::vector<Index> next(starts.begin(), starts.end() - 1);
-  for (Index i = first; i < last; ++i)
-    if (level[i - first] < levels) order[next[level[i - first]]++] = static_cast<std::int32_t>(i);
-  const Index count = static_cast<Index>(order.size());
-  for (Index k = 0, l = 0; l < levels; ++l) {
-    if (starts[l] == starts[l + 1]) continue;
-    stripe.record(static_cast<JoinTime>(l));
-    for (; k < starts[l + 1]; ++k) {
-      if (k + kPrefetchDistance < count) stripe.prefetch(order[k + kPrefetchDistance]);
-      stripe.add(order[k], static_cast<JoinTime>(l));
-    }
-  }
-}
-
-// A stripe's state after every point with time <= t: the counts before its first record with time > t.
-class StripeReader {
- public:
-  StripeReader(const std::vector<StripeRecord>& records, Index final_components, Index final_points)
-      : records_(records), final_components_(final_components), final_points_(final_points) {}
-  void advance(JoinTime t) {
-    while (next_ < records_.size() && records_[next_].time <= t)
-      ++next_;
-  }
-  Index components() const {
-    return next_ < records_.size() ? records_[next_].components_before : final_components_;
-  }
-  Index points() const { return next_ < records_.size() ? records_[next_].points_before : final_points_; }
-
- private:
-  const std::vector<StripeRecord>& records_;
-  Index final_components_, final_points_;
-  std::size_t next_ = 0;
-};
 
 // Exact levels: a level at every distinct height, in order, merging the stripes' records by time. At the
 // level of time t, {h > z} holds the times < t: each stripe's state is the one before its first record with
@@ -326,7 +252,12 @@ SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topolo
           (levels.kind == SweepLevels::Kind::exact ? std::string(" at every distinct height")
                                                    : " at " + std::to_string(levels.count) + " levels"));
   const bool exact = levels.kind == SweepLevels::Kind::exact;
-  const std::vector<Real> fixed_z = exact ? std::vector<Real>{} : fixed_levels(heights, levels);
+  // Fixed levels: from the highest height down to the lowest, or (paper) to the mean plane.
+  const std::vector<Real> fixed_z =
+      exact ? std::vector<Real>{}
+            : fixed_levels(heights.maxCoeff(),
+                           levels.kind == SweepLevels::Kind::paper ? heights.mean() : heights.minCoeff(),
+                           levels.count);
   const int team = team_size(n, threads);
 
   // When a point joins {h > z}: its height's descending key (exact) or its level index (kNever: never).

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fails when a library includes a header it must not see (docs/architecture.md: core <- bem, core <- theories,
-# only app and bench see everything; theories never includes bem, so each stays a check on the other), when a
+# (core, bem) <- mpi, only app and bench see everything; theories never includes bem, so each stays a check on the other), when a
 # project header is included without the contactbench/ prefix, or when a tracked file reaches outside the
 # project for its docs or data (the project stands on its own: docs/ and data/ are inside it).
 set -euo pipefail
@@ -16,13 +16,14 @@ forbid() {  # forbid <folder> <library folders it must not include...>
     fi
   done
 }
-forbid core bem theories app bench
-forbid bem theories app bench
-forbid theories bem app bench
-forbid app bench
+forbid core bem theories app bench mpi
+forbid bem theories app bench mpi
+forbid theories bem app bench mpi
+forbid app bench mpi
+forbid mpi theories app bench
 
 # Project headers are reached as "contactbench/<library>/x.hpp", the path they have once installed.
-if git grep -nE '#include "(core|bem|theories|app)/' -- '*.cpp' '*.hpp'; then
+if git grep -nE '#include "(core|bem|theories|app|mpi)/' -- '*.cpp' '*.hpp'; then
   echo "check-layers: include project headers as \"contactbench/<library>/...\"" >&2
   status=1
 fi

@@ -6,6 +6,8 @@ set -euo pipefail
 packages=(
   g++ cmake make pkg-config git   # toolchain
   libfftw3-dev                    # FFT engine (with its OpenMP library, libfftw3_omp)
+  libopenmpi-dev openmpi-bin      # optional distributed build (mpi/, docs/mpi.md): MPI and mpiexec for its tests
+  libfftw3-mpi-dev                # ... with FFTW's distributed transforms; without these, CB_WITH_MPI stays off
   libeigen3-dev                   # array arithmetic and small dense algebra
   libgtest-dev                    # tests
   libbenchmark-dev                # benchmarks

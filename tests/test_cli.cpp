@@ -41,10 +41,11 @@ class Cli : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(folder_); }
 
-  CommandResult run(const std::string& arguments) {
+  // `environment`: VAR=value assignments for the command (the shell's), or empty.
+  CommandResult run(const std::string& arguments, const std::string& environment = "") {
     const auto out = folder_ / "stdout.txt", err = folder_ / "stderr.txt";
-    const std::string command = std::string(CB_CLI_PATH) + " " + arguments + " >" + out.string() + " 2>" +
-                                err.string() + " </dev/null";
+    const std::string command = environment + (environment.empty() ? "" : " ") + std::string(CB_CLI_PATH) +
+                                " " + arguments + " >" + out.string() + " 2>" + err.string() + " </dev/null";
     const int raw = std::system(command.c_str());
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
   }
@@ -61,6 +62,29 @@ double json_value(const std::string& json, const std::string& key) {
 }
 
 const std::string kSurfaceA = "--sigma 0.5e-6 --hurst 0.5 --qr 3.14e4 --size 200e-6 --grid 256 --seed 3";
+
+TEST_F(Cli, RefusesToRunAsSeveralMpiRanksAndSaysWhy) {
+  // As mpiexec -n 2 starts it (Open MPI's and PMI's variables): no stage is distributed yet (docs/mpi.md), so
+  // every rank refuses rather than running the whole command twice; rank 0 says why, the others stay quiet.
+  const auto file = folder_ / "a.txt";
+  for (const std::string environment :
+       {"OMPI_COMM_WORLD_SIZE=2 OMPI_COMM_WORLD_RANK=0", "PMI_SIZE=3 PMI_RANK=0"}) {
+    const CommandResult refused = run("generate " + kSurfaceA + " --out " + file.string(), environment);
+    EXPECT_EQ(refused.status, 1) << environment;
+    EXPECT_NE(refused.err.find("MPI ranks"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("docs/mpi.md"), std::string::npos) << refused.err;
+    EXPECT_FALSE(std::filesystem::exists(file)) << environment;
+  }
+  const CommandResult quiet = run("generate " + kSurfaceA + " --out " + file.string(),
+                                  "OMPI_COMM_WORLD_SIZE=2 OMPI_COMM_WORLD_RANK=1");
+  EXPECT_EQ(quiet.status, 1);
+  EXPECT_TRUE(quiet.err.empty()) << quiet.err;
+  // One rank is an ordinary run.
+  const CommandResult single = run("generate " + kSurfaceA + " --out " + file.string(),
+                                   "OMPI_COMM_WORLD_SIZE=1 OMPI_COMM_WORLD_RANK=0");
+  EXPECT_EQ(single.status, 0) << single.err;
+  EXPECT_TRUE(std::filesystem::exists(file));
+}
 
 TEST_F(Cli, GeneratesSurfaceAAndItsStatsMatchTable2) {
   const auto file = folder_ / "a.txt";

@@ -1,0 +1,155 @@
+// The distributed solver's cost (docs/mpi.md): seconds per iteration, bytes per rank and the time of
+// FFTW-MPI's global transposes, with the serial solver of the same problem as the reference in the same run
+// (on rank 0, the other ranks waiting). Its own timing loop, not Google Benchmark's: Google Benchmark chooses
+// its iteration counts per process, which would let the ranks disagree on how many collective calls to make.
+// Every solve runs a fixed number of iterations (a tolerance no solve reaches), from a cold start, and the
+// median of the repetitions is reported.
+//
+//   mpiexec -n RANKS bench_mpi --n 2048 [--iterations 10] [--repetitions 3] [--threads 1]
+//                              [--solver polonsky_keer|preconditioned_cg] [--no-serial]
+// prints one Markdown table row (rank 0): ranks, threads, n, solver, s/iteration, serial s/iteration, ratio,
+// transposes s/iteration, their share, MiB per rank (largest), serial MiB.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <fftw3-mpi.h>
+
+#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/solver_registry.hpp"
+#include "contactbench/core/generation.hpp"
+#include "contactbench/core/spectrum.hpp"
+#include "contactbench/mpi/distributed_generation.hpp"
+#include "contactbench/mpi/distributed_polonsky_keer.hpp"
+#include "contactbench/mpi/environment.hpp"
+
+using namespace contactbench;
+
+namespace {
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// One global transpose of the half spectrum (ny x (nx/2 + 1) complex values), as FFTW-MPI's transposed-out
+// r2c does once per direction: its median time [s].
+double transpose_seconds(Index nx, Index ny, int repetitions, MPI_Comm comm) {
+  const Index nxh = nx / 2 + 1;
+  ptrdiff_t rows = 0, row_start = 0, columns = 0, column_start = 0;
+  const ptrdiff_t values =
+      fftw_mpi_local_size_2d_transposed(ny, nxh, comm, &rows, &row_start, &columns, &column_start);
+  fftw_complex* data = fftw_alloc_complex(static_cast<std::size_t>(std::max<ptrdiff_t>(values, 1)));
+  std::memset(static_cast<void*>(data), 0, sizeof(fftw_complex) * static_cast<std::size_t>(values));
+  auto* real = reinterpret_cast<double*>(data);
+  fftw_plan plan = fftw_mpi_plan_many_transpose(ny, nxh, 2, FFTW_MPI_DEFAULT_BLOCK, FFTW_MPI_DEFAULT_BLOCK,
+                                                real, real, comm, FFTW_ESTIMATE);
+  std::vector<double> times;
+  for (int r = 0; r < repetitions; ++r) {
+    MPI_Barrier(comm);
+    const auto start = std::chrono::steady_clock::now();
+    fftw_execute(plan);
+    MPI_Barrier(comm);
+    times.push_back(seconds_since(start));
+  }
+  fftw_destroy_plan(plan);
+  fftw_free(data);
+  return median(times);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  mpi::Environment environment(argc, argv);
+  Index n = 1024;
+  int iterations = 10, repetitions = 3, threads = 1;
+  bool serial = true;
+  SolverKind solver = SolverKind::polonsky_keer;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&] { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
+    if (arg == "--n")
+      n = std::stol(value());
+    else if (arg == "--iterations")
+      iterations = std::stoi(value());
+    else if (arg == "--repetitions")
+      repetitions = std::stoi(value());
+    else if (arg == "--threads")
+      threads = std::stoi(value());
+    else if (arg == "--solver")
+      solver = solver_kind(value(), "--solver");
+    else if (arg == "--no-serial")
+      serial = false;
+    else {
+      std::fprintf(stderr, "bench_mpi: unknown argument %s (see bench/bench_mpi.cpp)\n", arg.c_str());
+      return 2;
+    }
+  }
+  const MPI_Comm comm = MPI_COMM_WORLD;
+  const int rank = mpi::rank_of(comm), ranks = mpi::size_of(comm);
+  // Surface A's spectrum (docs/theory.md section 2) on n x n points over 200 um, periodic.
+  const Grid grid{.nx = n, .ny = n, .lx = 200e-6, .ly = 200e-6, .periodic = true};
+  const SelfAffinePsd psd{.sigma = 0.5e-6, .hurst = 0.5, .qr = 3.14e4, .qs = std::nullopt};
+  const HeightMap local = mpi::generate_surface_slab(grid, psd, 1, comm);
+  const Real modulus = 1.1e11;
+  const Real load = 0.02 * modulus * mpi::distributed_spectral_moments(grid, local, comm).rms_gradient();
+  PolonskyKeerOptions options;
+  options.solver = solver;
+  options.tolerance = 1e-300;  // never reached: every solve runs `iterations` iterations
+  options.max_iterations = iterations;
+
+  std::vector<double> times;
+  std::size_t bytes = 0;
+  for (int r = 0; r < repetitions; ++r) {
+    mpi::DistributedPolonskyKeer distributed(grid, local, modulus, comm, options, threads);
+    MPI_Barrier(comm);
+    const auto start = std::chrono::steady_clock::now();
+    const auto& solution = distributed.solve(load);
+    MPI_Barrier(comm);
+    times.push_back(seconds_since(start) / static_cast<double>(solution.iterations));
+    bytes = std::max(bytes, distributed.bytes());
+  }
+  unsigned long long largest = bytes;
+  MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_UNSIGNED_LONG_LONG, MPI_MAX, comm);
+  // Transposes an iteration: two applications of G (plain) or three (with the filter), each two transforms.
+  const int transforms = 2 * (solver == SolverKind::preconditioned_cg ? 3 : 2);
+  const double transposes = transforms * transpose_seconds(n, n, std::max(repetitions, 5), comm);
+
+  double serial_time = 0, serial_mib = 0;
+  if (serial && rank == 0) {
+    const Surface surface = generate_surface(grid, psd, 1, threads);
+    std::vector<double> serial_times;
+    for (int r = 0; r < repetitions; ++r) {
+      PolonskyKeer reference(surface, modulus, options, threads);
+      const auto start = std::chrono::steady_clock::now();
+      const auto& solution = reference.solve(load);
+      serial_times.push_back(seconds_since(start) / static_cast<double>(solution.iterations));
+    }
+    serial_time = median(serial_times);
+    // The serial solver's arrays: heights, gap, direction, two pressures (+ the filtered residual), 8 B each,
+    // and its transform's work (about 8 B per point): an estimate, for comparison only.
+    serial_mib = static_cast<double>(grid.points()) * 8 * (solver == SolverKind::preconditioned_cg ? 7 : 6) /
+                 (1 << 20);
+  }
+  MPI_Barrier(comm);
+  if (rank == 0) {
+    const double t = median(times);
+    auto number = [&](double value) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g", value);
+      return serial ? std::string(text) : std::string("-");
+    };
+    std::printf("| %d | %d | %ld | %s | %.3g | %s | %s | %.3g | %.0f %% | %.0f | %s |\n", ranks, threads,
+                static_cast<long>(n), std::string(solver_name(solver)).c_str(), t,
+                number(serial_time).c_str(), number(t / serial_time).c_str(), transposes,
+                100 * transposes / t, static_cast<double>(largest) / (1 << 20), number(serial_mib).c_str());
+  }
+  return 0;
+}

@@ -1,0 +1,108 @@
+#include "contactbench/mpi/distributed_convolution.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <string>
+
+#include "contactbench/core/error.hpp"
+
+namespace contactbench::mpi {
+
+namespace {
+
+int checked_int(Index values) {
+  if (values > INT_MAX) throw Error("mpi: more than 2^31 values between two ranks in one exchange");
+  return static_cast<int>(values);
+}
+
+// How many rows two row ranges share, below `limit`.
+Index shared_rows(Index start_a, Index count_a, Index start_b, Index count_b, Index limit) {
+  return std::max<Index>(std::min({start_a + count_a, start_b + count_b, limit}) - std::max(start_a, start_b),
+                         0);
+}
+
+}  // namespace
+
+DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MPI_Comm comm, int threads)
+    : slab_(slab_of(grid, comm)),
+      comm_(comm),
+      padded_(padded),
+      lx_(padded ? 2 * grid.nx : grid.nx),
+      ly_(padded ? 2 * grid.ny : grid.ny),
+      fft_(std::make_unique<DistributedRealFft2d>(lx_, ly_, comm, threads)),
+      multiplier_(static_cast<std::size_t>(fft_->spectrum_count() * ly_), 0.0) {
+  if (!padded) return;
+  // The exchange plan: this rank's grid rows to the transform slabs that hold them. Both layouts are in rank
+  // order, so what a rank sends (receives) is contiguous and in row order.
+  const Index nx = grid.nx, ny = grid.ny;
+  const auto grid_slabs = all_slabs(nx, ny, comm);
+  const auto transform_slabs = all_slabs(lx_, ly_, comm);
+  const Slab& mine = transform_slabs[static_cast<std::size_t>(rank_of(comm))];
+  Index sent = 0, received = 0;
+  for (std::size_t r = 0; r < grid_slabs.size(); ++r) {
+    const Index out =
+        shared_rows(slab_.start, slab_.count, transform_slabs[r].start, transform_slabs[r].count, ny);
+    const Index in = shared_rows(grid_slabs[r].start, grid_slabs[r].count, mine.start, mine.count, ny);
+    send_counts_.push_back(checked_int(out * nx));
+    send_offsets_.push_back(checked_int(sent));
+    receive_counts_.push_back(checked_int(in * nx));
+    receive_offsets_.push_back(checked_int(received));
+    sent += out * nx;
+    received += in * nx;
+  }
+  receive_buffer_.resize(static_cast<std::size_t>(std::max<Index>(received, 1)));
+}
+
+DistributedConvolution::~DistributedConvolution() = default;
+
+void DistributedConvolution::set_multiplier(std::vector<double> multiplier) {
+  if (multiplier.size() != multiplier_.size())
+    throw Error("mpi: the multiplier has " + std::to_string(multiplier.size()) + " values, this rank's " +
+                std::to_string(fft_->spectrum_count()) + " spectral columns need " +
+                std::to_string(multiplier_.size()));
+  multiplier_ = std::move(multiplier);
+  // Each stored column kx stands for +kx and -kx, except kx = 0 and the Nyquist column (even lx).
+  double sum = 0;
+  for (Index c = 0; c < fft_->spectrum_count(); ++c) {
+    const Index kx = fft_->spectrum_start() + c;
+    const double weight = (kx == 0 || (lx_ % 2 == 0 && kx == lx_ / 2)) ? 1.0 : 2.0;
+    for (Index row = 0; row < ly_; ++row)
+      sum += weight * multiplier_[static_cast<std::size_t>(c * ly_ + row)];
+  }
+  self_response_ = sum_over_ranks(sum, comm_);
+}
+
+void DistributedConvolution::apply(const Real* in, Real* out) {
+  const Slab& transform_slab = fft_->slab();
+  const Index nx = slab_.nx, ny = slab_.ny;
+  if (!padded_) {
+    fft_->load(in);
+  } else {
+    // The transform's slab cleared (the last inverse wrote all of it: that is the zero padding), then the
+    // grid rows it owns arrive from their ranks.
+    for (Index r = 0; r < transform_slab.count; ++r)
+      std::fill_n(fft_->real_row(r), lx_, 0.0);
+    MPI_Alltoallv(in, send_counts_.data(), send_offsets_.data(), MPI_DOUBLE, receive_buffer_.data(),
+                  receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, comm_);
+    const Index rows = shared_rows(0, ny, transform_slab.start, transform_slab.count, ny);
+    for (Index r = 0; r < rows; ++r)
+      std::copy_n(receive_buffer_.data() + r * nx, nx, fft_->real_row(r));
+  }
+  fft_->forward();
+  Complex* spectrum = fft_->spectrum();
+  for (std::size_t i = 0; i < multiplier_.size(); ++i)
+    spectrum[i] *= multiplier_[i];
+  fft_->backward();
+  if (!padded_) {
+    fft_->store(out);
+  } else {
+    const Index rows = shared_rows(0, ny, transform_slab.start, transform_slab.count, ny);
+    for (Index r = 0; r < rows; ++r)
+      std::copy_n(fft_->real_row(r), nx, receive_buffer_.data() + r * nx);
+    // The reverse exchange: what was received goes back where it came from.
+    MPI_Alltoallv(receive_buffer_.data(), receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, out,
+                  send_counts_.data(), send_offsets_.data(), MPI_DOUBLE, comm_);
+  }
+}
+
+}  // namespace contactbench::mpi

@@ -1,0 +1,358 @@
+#include "contactbench/mpi/distributed_polonsky_keer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "contactbench/core/error.hpp"
+
+namespace contactbench::mpi {
+
+namespace {
+
+void refuse(bool unsupported, const std::string& what) {
+  if (unsupported)
+    throw Error("distributed Polonsky-Keer: " + what +
+                " is not distributed yet (docs/mpi.md); it supports load control, elastic, double precision, "
+                "load_path = scaled, no coarse_start");
+}
+
+double max_over_ranks(double value, MPI_Comm comm) {
+  double result = 0;
+  MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MAX, comm);
+  return result;
+}
+
+double min_over_ranks(double value, MPI_Comm comm) {
+  double result = 0;
+  MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MIN, comm);
+  return result;
+}
+
+// Several sums over the ranks at once (one MPI_Allreduce for an iteration's step).
+template <std::size_t N>
+void sum_over_ranks(double (&values)[N], MPI_Comm comm) {
+  MPI_Allreduce(MPI_IN_PLACE, values, static_cast<int>(N), MPI_DOUBLE, MPI_SUM, comm);
+}
+
+}  // namespace
+
+// The gap's moments on the contact set, and the pressure's sum and change (bem/polonsky_keer.cpp's Moments).
+struct DistributedPolonskyKeer::Moments {
+  double change = 0, sum = 0, elastic = 0, g_mean = 0, g_norm = 0;
+};
+
+DistributedPolonskyKeer::DistributedPolonskyKeer(const Grid& grid, const HeightMap& local_heights,
+                                                 Real modulus, MPI_Comm comm, PolonskyKeerOptions options,
+                                                 int threads)
+    : grid_(grid), comm_(comm), options_(std::move(options)), operator_(grid, modulus, comm, threads) {
+  if (!(options_.tolerance > 0) || options_.max_iterations < 1)
+    throw Error("Polonsky-Keer: tolerance must be > 0 and max_iterations >= 1");
+  refuse(options_.hardness.has_value(), "a hardness");
+  refuse(options_.single_precision, "single precision");
+  refuse(options_.coarse_start, "coarse_start");
+  refuse(options_.load_path != LoadPathStart::scaled, "load_path = extrapolated");
+  const Slab& slab = operator_.slab();
+  throw_on_any_rank(local_heights.rows() != slab.count || local_heights.cols() != grid.nx,
+                    "distributed Polonsky-Keer: the local heights are " +
+                        std::to_string(local_heights.cols()) + " x " + std::to_string(local_heights.rows()) +
+                        " but this rank's slab is " + std::to_string(grid.nx) + " x " +
+                        std::to_string(slab.count),
+                    comm);
+  local_points_ = slab.points();
+  const std::size_t n = static_cast<std::size_t>(local_points_);
+  // Centred on the global mean, as the serial solver centres the surface (Surface::centred).
+  const double mean = sum_over_ranks(local_heights.sum(), comm) / static_cast<double>(grid.points());
+  h_.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    h_[i] = local_heights.data()[i] - mean;
+  g_.assign(n, 0.0);
+  t_.assign(n, 0.0);
+  u_.assign(n, 0.0);
+  q_[0].assign(n, 0.0);
+  q_[1].assign(n, 0.0);
+  if (options_.solver == SolverKind::preconditioned_cg) {
+    preconditioner_ = make_distributed_preconditioner(grid, modulus, comm, threads);
+    z_.assign(n, 0.0);
+  }
+  const double local_max =
+      n ? *std::max_element(h_.begin(), h_.end()) : -std::numeric_limits<double>::infinity();
+  const double local_min =
+      n ? *std::min_element(h_.begin(), h_.end()) : std::numeric_limits<double>::infinity();
+  height_range_ = max_over_ranks(local_max, comm) - min_over_ranks(local_min, comm);
+}
+
+DistributedPolonskyKeer::~DistributedPolonskyKeer() = default;
+
+std::size_t DistributedPolonskyKeer::bytes() const {
+  std::size_t values = h_.capacity() + g_.capacity() + t_.capacity() + u_.capacity() + z_.capacity() +
+                       q_[0].capacity() + q_[1].capacity();
+  return sizeof(double) * values + operator_.bytes() + (preconditioner_ ? preconditioner_->bytes() : 0);
+}
+
+void DistributedPolonskyKeer::apply(const std::vector<double>& in, std::vector<double>& out) {
+  operator_.apply(in.data(), out.data());
+}
+
+// g = s_new u - h (u = G q_new, in u_), the change of the pressure from s_old q_old, and the moments of the
+// gap on the contact set. Each rank sums about a shift, the first gap in contact it meets, and the ranks'
+// sums are combined exactly in rank order (Chan et al.), as the serial solver combines its threads' (the same
+// on every rank, so that every rank takes the same decisions).
+DistributedPolonskyKeer::Moments DistributedPolonskyKeer::gap_pass(const std::vector<double>& q_new,
+                                                                   const std::vector<double>& q_old,
+                                                                   double s_new, double s_old) {
+  double change = 0, sum = 0, s1 = 0, s2 = 0, elastic = 0, shift = 0;
+  bool has_shift = false;
+  for (std::size_t i = 0; i < h_.size(); ++i) {
+    const double p = s_new * q_new[i];
+    change += std::abs(p - s_old * q_old[i]);
+    sum += p;
+    const double gv = s_new * u_[i] - h_[i];
+    g_[i] = gv;
+    if (p > 0) {
+      if (!has_shift) {
+        shift = gv;
+        has_shift = true;
+      }
+      const double d = gv - shift;
+      s1 += d;
+      s2 += d * d;
+      elastic += 1;
+    }
+  }
+  const int ranks = size_of(comm_);
+  const double mine[6] = {change, sum, elastic, shift, s1, s2};
+  std::vector<double> all(static_cast<std::size_t>(6 * ranks));
+  MPI_Allgather(mine, 6, MPI_DOUBLE, all.data(), 6, MPI_DOUBLE, comm_);
+  Moments m;
+  for (int r = 0; r < ranks; ++r) {
+    m.change += all[6 * r];
+    m.sum += all[6 * r + 1];
+    m.elastic += all[6 * r + 2];
+  }
+  if (m.elastic == 0) return m;
+  double mean = 0;
+  for (int r = 0; r < ranks; ++r) {
+    const double e = all[6 * r + 2];
+    if (e > 0) mean += e * all[6 * r + 3] + all[6 * r + 4];
+  }
+  mean /= m.elastic;
+  double norm = 0;
+  for (int r = 0; r < ranks; ++r) {
+    const double e = all[6 * r + 2], sh = all[6 * r + 3], a = all[6 * r + 4], b = all[6 * r + 5];
+    if (e > 0) {
+      const double own = sh + a / e;
+      norm += b - a * a / e + e * (own - mean) * (own - mean);
+    }
+  }
+  m.g_mean = mean;
+  m.g_norm = std::max(norm, 0.0);
+  return m;
+}
+
+// bem/polonsky_keer.cpp's iterate<kLoad = true, kHard = false>, plain or preconditioned, pass by pass.
+void DistributedPolonskyKeer::iterate(double total) {
+  const double tolerance = options_.tolerance;
+  const Index max_iterations = options_.max_iterations;
+  const double self_response = operator_.self_response();
+  const bool preconditioned = preconditioner_ != nullptr;
+  const std::size_t n = h_.size();
+
+  apply(q_[cur_], u_);
+  Moments moments = gap_pass(q_[cur_], q_[cur_], s_[cur_], s_[cur_]);
+
+  double g_norm_old = 1, delta = 0, change = 0;  // delta = 0: the first step is steepest descent
+  double rz_old = 1;                             // preconditioned: <r, z> of the last direction
+  double entered = 0;                            // nodes that entered the set in the last update
+  // Step damping after kStall iterations without a new lowest change (bem/polonsky_keer.cpp says why).
+  constexpr Index kStall = 25;
+  double damping = 1, lowest_change = std::numeric_limits<double>::infinity();
+  Index since_lowest = 0;
+  Index iteration = 0;
+  bool converged = false;
+  for (;;) {
+    if (iteration > 0) {
+      change = moments.sum > 0 ? moments.change / moments.sum
+                               : (moments.change == 0 ? 0.0 : std::numeric_limits<double>::infinity());
+      // Preconditioned, the contact set must also have settled (docs/solvers.md).
+      if (change < tolerance && (!preconditioned || entered == 0)) {
+        converged = true;
+        break;
+      }
+      if (change < lowest_change) {
+        lowest_change = change;
+        since_lowest = 0;
+      } else if (++since_lowest >= kStall && damping > 0x1p-30) {
+        damping *= 0.5;
+        since_lowest = 0;
+        lowest_change = change;
+      }
+    }
+    if (iteration == max_iterations) break;
+    if (options_.between_iterations) options_.between_iterations();
+    if (moments.elastic == 0) throw Error("Polonsky-Keer: the contact set became empty");
+    const std::vector<double>& q_cur = q_[cur_];
+    const double s_cur = s_[cur_], gbar = moments.g_mean;
+
+    // The direction on the contact set, and r = G t. Plain: t = g - gbar + beta t (PK eq. 11).
+    // Preconditioned: z = the filtered residual g - gbar on the set, t = z - zbar + beta t
+    // (bem/polonsky_keer.cpp).
+    double beta = 0;
+    double step_sums[5] = {0, 0, 0, 0, 0};  // sum (g - gbar) t, sum t, sum t^2, sum r on the set, t . r
+    if (preconditioned) {
+      for (std::size_t i = 0; i < n; ++i)
+        u_[i] = q_cur[i] > 0 ? g_[i] - gbar : 0.0;
+      double residual_sums[3] = {0, 0, 0};  // sum r, sum z, sum r z on the set
+      for (std::size_t i = 0; i < n; ++i)
+        residual_sums[0] += u_[i];
+      preconditioner_->apply(u_.data(), z_.data());
+      for (std::size_t i = 0; i < n; ++i) {
+        const bool in = q_cur[i] > 0;
+        z_[i] = in ? z_[i] : 0.0;
+        residual_sums[1] += z_[i];
+        residual_sums[2] += in ? (g_[i] - gbar) * z_[i] : 0.0;
+      }
+      sum_over_ranks(residual_sums, comm_);
+      const double zbar = residual_sums[1] / moments.elastic;
+      const double rz = residual_sums[2] - zbar * residual_sums[0];
+      beta = delta > 0 && rz_old > 0 ? rz / rz_old : 0.0;
+      rz_old = rz;
+      for (std::size_t i = 0; i < n; ++i) {
+        const bool in = q_cur[i] > 0;
+        const double tv = in ? (z_[i] - zbar) + beta * t_[i] : 0.0;
+        t_[i] = tv;
+        step_sums[0] += in ? (g_[i] - gbar) * tv : 0.0;
+        step_sums[1] += tv;
+        step_sums[2] += tv * tv;
+      }
+    } else {
+      beta = delta > 0 && g_norm_old > 0 ? moments.g_norm / g_norm_old : 0.0;
+      g_norm_old = moments.g_norm;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double gc = g_[i] - gbar;
+        const double tv = q_cur[i] > 0 ? gc + beta * t_[i] : 0.0;
+        t_[i] = tv;
+        step_sums[0] += gc * tv;
+        step_sums[1] += tv;
+      }
+    }
+    apply(t_, u_);  // u_ holds r = G t until the next gap pass
+    for (std::size_t i = 0; i < n; ++i) {
+      step_sums[3] += q_cur[i] > 0 ? u_[i] : 0.0;
+      step_sums[4] += t_[i] * u_[i];
+    }
+    sum_over_ranks(step_sums, comm_);
+    const double gt = step_sums[0], t_sum = step_sums[1], tt = step_sums[2], r_sum = step_sums[3];
+    // t . (r - rbar) on the contact set (t is zero elsewhere).
+    const double tr = step_sums[4] - r_sum / moments.elastic * t_sum;
+    const double tau = tr > 0 ? damping * gt / tr : 0.0;
+    // Entering nodes: PK's step, or (preconditioned, t a pressure) the plain step of t, <t,t>/<t,Gt>; without
+    // a descent, the stiffness of one pixel.
+    const double tau_enter = preconditioned ? damping * (tr > 0 && tt > 0 ? tt / tr : 1 / self_response)
+                                            : (tr > 0 ? tau : damping / self_response);
+
+    // The update q = max(p - tau t, 0); nodes out of contact that the surface penetrates enter with
+    // -tau_enter g (PK eq. 14). Then the load imposed by rescaling, and the next gap.
+    const int next = 1 - cur_;
+    std::vector<double>& q_next = q_[next];
+    double update_sums[2] = {0, 0};  // sum q, nodes that entered
+    for (std::size_t i = 0; i < n; ++i) {
+      const double p = s_cur * q_cur[i];
+      const double gc = g_[i] - gbar;
+      const bool moved = (p <= 0) & (gc < 0);
+      const double v = moved ? -tau_enter * gc : std::max(p - tau * t_[i], 0.0);
+      q_next[i] = v;
+      update_sums[0] += v;
+      update_sums[1] += moved ? 1.0 : 0.0;
+    }
+    sum_over_ranks(update_sums, comm_);
+    const double s_new = update_sums[0] > 0 ? total / update_sums[0] : 0.0;
+    apply(q_next, u_);
+    moments = gap_pass(q_next, q_cur, s_new, s_cur);
+    cur_ = next;
+    s_[cur_] = s_new;
+    entered = update_sums[1];
+    delta = entered > 0 ? 0 : 1;
+    ++iteration;
+  }
+  iterations_ = iteration;
+  change_ = change;
+  converged_ = converged;
+  separation_ = -moments.g_mean;  // the flat, from the mean gap on the contact set
+}
+
+void DistributedPolonskyKeer::write() {
+  const Slab& slab = operator_.slab();
+  solution_.pressure.resize(slab.count, grid_.nx);
+  solution_.gap.resize(slab.count, grid_.nx);
+  const std::vector<double>& q = q_[cur_];
+  double residual = 0, contact = 0;
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const double p = s_[cur_] * q[i];
+    solution_.pressure.data()[i] = p;
+    const double gap = g_[i] + separation_;
+    if (!(p > 0)) {
+      solution_.gap.data()[i] = gap;
+    } else {
+      solution_.gap.data()[i] = 0;
+      contact += 1;
+      residual = std::max(residual, std::abs(gap));
+    }
+  }
+  solution_.contact_points = static_cast<Index>(sum_over_ranks(contact, comm_));
+  solution_.residual = max_over_ranks(residual, comm_) / (height_range_ > 0 ? height_range_ : 1.0);
+  solution_.separation = separation_;
+  solution_.iterations = iterations_;
+  solution_.change = change_;
+  solution_.converged = converged_;
+}
+
+const DistributedContactSolution& DistributedPolonskyKeer::solve(Real mean_pressure) {
+  if (!(std::isfinite(mean_pressure) && mean_pressure >= 0))
+    throw Error("Polonsky-Keer: the mean pressure must be finite and >= 0 Pa, got " +
+                std::to_string(mean_pressure));
+  solution_ = DistributedContactSolution{};
+  solution_.mean_pressure = mean_pressure;
+  if (mean_pressure == 0) {
+    // No load, no contact: the flat rests at the highest point (as the serial solver).
+    const double local_max =
+        h_.empty() ? -std::numeric_limits<double>::infinity() : *std::max_element(h_.begin(), h_.end());
+    separation_ = max_over_ranks(local_max, comm_);
+    std::fill(q_[cur_].begin(), q_[cur_].end(), 0.0);
+    for (std::size_t i = 0; i < h_.size(); ++i)
+      g_[i] = -h_[i];
+    iterations_ = 0;
+    change_ = 0;
+    converged_ = true;
+    warm_ = false;
+    write();
+    return solution_;
+  }
+  const double total = mean_pressure * static_cast<double>(grid_.points());
+  if (warm_) {  // the previous pressure scaled to the new load
+    double sum = 0;
+    for (const double v : q_[cur_])
+      sum += v;
+    s_[cur_] = total / sum_over_ranks(sum, comm_);
+  } else {  // the uniform pressure
+    std::fill(q_[cur_].begin(), q_[cur_].end(), 1.0);
+    s_[cur_] = mean_pressure;
+  }
+  try {
+    iterate(total);
+  } catch (...) {
+    warm_ = false;
+    throw;
+  }
+  warm_ = true;
+  write();
+  if (!converged_ && options_.warning)
+    options_.warning("distributed Polonsky-Keer did not converge at P/A0 = " + std::to_string(mean_pressure) +
+                     " in " + std::to_string(iterations_) +
+                     " iterations; the result is marked converged = false");
+  return solution_;
+}
+
+}  // namespace contactbench::mpi

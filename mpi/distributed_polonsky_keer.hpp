@@ -1,0 +1,80 @@
+// The boundary-element solver on slabs (docs/mpi.md): Polonsky & Keer's constrained conjugate gradient
+// (bem/polonsky_keer.hpp, docs/theory.md section 6) with each rank holding its slab of the heights, pressure,
+// gap and search direction, the half-space operator distributed (mpi/distributed_half_space.hpp), and every
+// global sum of an iteration (the load, the gap's moments on the contact set, the step's products) reduced
+// with MPI_Allreduce. The iteration is the serial one step for step (the same starts, steps, entry rule,
+// damping and stopping criterion), so it takes the same iterations and finds the same contact set; the
+// pressures agree to round-off.
+//
+// Distributed so far: load control, elastic, double precision, plain Polonsky-Keer. Options that need more
+// (a hardness, single precision, the preconditioned solver, separation control, coarse or extrapolated
+// starts) are refused with an error naming them, never run approximately.
+#pragma once
+
+#include <memory>
+
+#include <mpi.h>
+
+#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/core/grid.hpp"
+#include "contactbench/mpi/distributed_half_space.hpp"
+#include "contactbench/mpi/slab.hpp"
+
+namespace contactbench::mpi {
+
+struct DistributedContactSolution {
+  HeightMap pressure;        // this rank's slab [Pa]
+  HeightMap gap;             // this rank's slab [m], 0 on the contact set
+  Real mean_pressure = 0;    // P/A0 [Pa], as prescribed
+  Real separation = 0;       // the flat's height above the mean plane [m]
+  Index contact_points = 0;  // over all ranks
+  Index iterations = 0;
+  Real change = 0;    // the last relative change of the pressure
+  Real residual = 0;  // max |gap| on the contact set / (max h - min h), over all ranks
+  bool converged = false;
+};
+
+class DistributedPolonskyKeer {
+ public:
+  // Collective. local_heights: this rank's slab (slab_of(grid, comm)) of the surface; modulus E* [Pa].
+  // options: hardness, single_precision, coarse_start and an extrapolated load path unset (see above).
+  // `threads`: FFTW's threads a rank, for the transforms (the element-wise passes run on one).
+  DistributedPolonskyKeer(const Grid& grid, const HeightMap& local_heights, Real modulus, MPI_Comm comm,
+                          PolonskyKeerOptions options, int threads = 1);
+  ~DistributedPolonskyKeer();
+
+  // Solves for the mean pressure P/A0 >= 0 [Pa], warm-started from the previous load's solution (scaled), as
+  // the serial solver. Collective.
+  const DistributedContactSolution& solve(Real mean_pressure);
+  const DistributedContactSolution& solution() const { return solution_; }
+  const Slab& slab() const { return operator_.slab(); }
+  // Bytes this rank holds for the solve (fields, operator, preconditioner; not the solution's copies): the
+  // memory per rank of docs/mpi.md.
+  std::size_t bytes() const;
+
+ private:
+  void apply(const std::vector<double>& in, std::vector<double>& out);
+  struct Moments;
+  Moments gap_pass(const std::vector<double>& q_new, const std::vector<double>& q_old, double s_new,
+                   double s_old);
+  void iterate(double total);
+  void write();
+
+  Grid grid_;
+  MPI_Comm comm_;
+  PolonskyKeerOptions options_;
+  DistributedHalfSpace operator_;
+  Index local_points_;
+  std::unique_ptr<DistributedConvolution> preconditioner_;  // null: plain Polonsky-Keer
+  std::vector<double> h_, g_, t_, u_, z_, q_[2];
+  double s_[2] = {1, 1};
+  int cur_ = 0;
+  bool warm_ = false;
+  double height_range_ = 0, separation_ = 0;
+  Index iterations_ = 0;
+  double change_ = 0;
+  bool converged_ = false;
+  DistributedContactSolution solution_;
+};
+
+}  // namespace contactbench::mpi

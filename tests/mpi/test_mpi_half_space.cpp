@@ -1,0 +1,115 @@
+// The distributed layout, gather/scatter and half-space operators against the serial ones
+// (bem/half_space.hpp).
+#include <gtest/gtest.h>
+
+#include "contactbench/bem/half_space.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/mpi/distributed_half_space.hpp"
+#include "mpi_fixtures.hpp"
+
+namespace contactbench::mpi {
+namespace {
+
+using testing::relative_difference;
+using testing::rows_of;
+using testing::test_field;
+
+// The distributed and serial operators do the same transforms in a different order of operations (FFTW-MPI
+// splits the 2D transform into 1D passes around a global transpose; the serial engine uses its own chunked
+// passes): each output is the same sum rounded differently, a few ulp times log2(n) per transform, ~1e-15
+// relative here; 1e-12 leaves a wide margin and still catches any misplaced row or mode (errors of O(1)).
+constexpr double kOperatorTolerance = 1e-12;
+constexpr Real kModulus = 1.1e11;
+
+TEST(Slabs, CoverEveryRowOnceInRankOrder) {
+  for (Index ny : {1, 2, 5, 64, 97}) {
+    const auto slabs = all_slabs(7, ny, MPI_COMM_WORLD);
+    Index next = 0;
+    for (const Slab& s : slabs) {
+      EXPECT_EQ(s.start, next) << ny;
+      EXPECT_GE(s.count, 0);
+      next += s.count;
+    }
+    EXPECT_EQ(next, ny);
+    EXPECT_EQ(slab_of(7, ny, MPI_COMM_WORLD).start,
+              slabs[static_cast<std::size_t>(rank_of(MPI_COMM_WORLD))].start);
+  }
+}
+
+TEST(Slabs, ScatterThenGatherGivesBackTheFieldExactly) {
+  const Index nx = 13, ny = 29;
+  const HeightMap whole = test_field(nx, ny, 3);
+  const Slab slab = slab_of(nx, ny, MPI_COMM_WORLD);
+  const HeightMap local =
+      scatter_from_root(rank_of(MPI_COMM_WORLD) == 0 ? whole : HeightMap(), slab, MPI_COMM_WORLD);
+  EXPECT_TRUE((local == rows_of(whole, slab)).all());
+  const HeightMap back = gather_to_root(local, slab, MPI_COMM_WORLD);
+  if (rank_of(MPI_COMM_WORLD) == 0) {
+    EXPECT_TRUE((back == whole).all());
+  } else {
+    EXPECT_EQ(back.size(), 0);
+  }
+}
+
+TEST(Slabs, RefuseASlabOfTheWrongShape) {
+  const Slab slab = slab_of(8, 8, MPI_COMM_WORLD);
+  EXPECT_THROW(gather_to_root(HeightMap(slab.count + 1, 8), slab, MPI_COMM_WORLD), Error);
+}
+
+TEST(Slabs, AMistakeOnOneRankStopsEveryRankWithItsMessage) {
+  // Only rank 0 passes a wrong slab: every rank must throw (none left waiting in a collective), with rank 0's
+  // reason.
+  const Slab slab = slab_of(8, 8, MPI_COMM_WORLD);
+  const HeightMap local(rank_of(MPI_COMM_WORLD) == 0 ? slab.count + 1 : slab.count, 8);
+  try {
+    gather_to_root(local, slab, MPI_COMM_WORLD);
+    ADD_FAILURE() << "no error on rank " << rank_of(MPI_COMM_WORLD);
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("gather_to_root: the local array is 8 x"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(scatter_from_root(HeightMap(3, 3), slab, MPI_COMM_WORLD), Error);
+}
+
+// The distributed operator on this rank's slab, gathered on rank 0, against the serial operator there.
+void expect_operator_matches_serial(const Grid& grid) {
+  const int rank = rank_of(MPI_COMM_WORLD);
+  DistributedHalfSpace distributed(grid, kModulus, MPI_COMM_WORLD);
+  const Slab& slab = distributed.slab();
+  const HeightMap pressure = test_field(grid.nx, grid.ny, 11) * 1e6;
+  HeightMap local = rows_of(pressure, slab);
+  distributed.apply(local.data(), local.data());  // in place, as the solver uses it
+  const HeightMap displacement = gather_to_root(local, slab, MPI_COMM_WORLD);
+  // Applied twice: the operator keeps no state from one application to the next (the padding is re-zeroed).
+  HeightMap again = rows_of(pressure, slab);
+  distributed.apply(again.data(), again.data());
+  EXPECT_TRUE((again == local).all());
+  if (rank == 0) {
+    HeightMap serial;
+    make_half_space(grid, kModulus)->apply(pressure, serial);
+    EXPECT_LT(relative_difference(displacement, serial), kOperatorTolerance)
+        << grid.nx << " x " << grid.ny << (grid.periodic ? " periodic" : " non-periodic");
+    const double serial_self = make_half_space_convolution<double>(grid, kModulus)->self_response();
+    EXPECT_NEAR(distributed.self_response(), serial_self, kOperatorTolerance * serial_self);
+  }
+}
+
+TEST(DistributedHalfSpace, PeriodicEqualsTheSerialOperator) {
+  expect_operator_matches_serial({.nx = 64, .ny = 64, .lx = 1e-4, .ly = 1e-4, .periodic = true});
+  // Odd and uneven sizes, rectangular pixels: no Nyquist row, slabs of different heights.
+  expect_operator_matches_serial({.nx = 45, .ny = 31, .lx = 2e-4, .ly = 1e-4, .periodic = true});
+}
+
+TEST(DistributedHalfSpace, NonPeriodicEqualsTheSerialOperator) {
+  expect_operator_matches_serial({.nx = 48, .ny = 40, .lx = 1e-4, .ly = 1e-4, .periodic = false});
+  expect_operator_matches_serial({.nx = 27, .ny = 35, .lx = 1e-4, .ly = 2e-4, .periodic = false});
+}
+
+TEST(DistributedHalfSpace, ARankWithoutRowsStillTakesPart) {
+  // 2 rows on up to 3 ranks: FFTW gives blocks of ceil(2 / ranks) rows, so the last rank may own none.
+  expect_operator_matches_serial({.nx = 16, .ny = 2, .lx = 1e-4, .ly = 1e-5, .periodic = true});
+  expect_operator_matches_serial({.nx = 16, .ny = 2, .lx = 1e-4, .ly = 1e-5, .periodic = false});
+}
+
+}  // namespace
+}  // namespace contactbench::mpi

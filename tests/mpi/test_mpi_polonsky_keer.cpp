@@ -1,0 +1,138 @@
+// The distributed Polonsky-Keer solver against the serial one (bem/polonsky_keer.hpp) on the same surface.
+#include <gtest/gtest.h>
+
+#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/generation.hpp"
+#include "contactbench/core/spectrum.hpp"
+#include "contactbench/mpi/distributed_polonsky_keer.hpp"
+#include "mpi_fixtures.hpp"
+
+namespace contactbench::mpi {
+namespace {
+
+constexpr Real kModulus = 1e11;
+// The two solvers take the same steps; only the round-off of the operator (~1e-15 relative,
+// test_mpi_half_space) and of the sums (other orders) differs: measured 4e-16..3e-15 of the peak pressure on
+// these loads, on 1 to 3 ranks; 1e-12 as the issue asks. (A harder load of the non-periodic surface, 0.06 E*
+// gbar, came to 5e-14..8e-13: its last iterations already feel the round-off.) At the scenes' tolerance,
+// 1e-8. Much tighter, the last iterations run at the operator's round-off floor, where any reordering of the
+// sums steers them (measured on the non-periodic case at 1e-10: the trajectories part once the change is
+// ~1e-8 and end one iteration and 4e-11 of the peak pressure apart, within what that tolerance promises;
+// bem/polonsky_keer.cpp says the same of different thread counts).
+constexpr double kPressureTolerance = 1e-12;
+
+PolonskyKeerOptions options_for(SolverKind solver) {
+  PolonskyKeerOptions options;
+  options.solver = solver;
+  options.tolerance = 1e-8;
+  return options;
+}
+
+PolonskyKeerOptions plain() {
+  return options_for(SolverKind::polonsky_keer);
+}
+
+// Solves the loads in order with both solvers (warm starts), and compares each load's result on rank 0.
+void expect_same_solutions(const Surface& surface, const std::vector<double>& slope_fractions,
+                           const PolonskyKeerOptions& options) {
+  const Grid& grid = surface.grid();
+  const Slab slab = slab_of(grid, MPI_COMM_WORLD);
+  DistributedPolonskyKeer distributed(grid, testing::rows_of(surface.heights(), slab), kModulus,
+                                      MPI_COMM_WORLD, options);
+  PolonskyKeer serial(surface, kModulus, options);
+  const Real slope = spectral_moments(surface).rms_gradient();
+  for (const double fraction : slope_fractions) {
+    const Real load = fraction * kModulus * slope;  // about 2 * fraction of the area in contact
+    const DistributedContactSolution& d = distributed.solve(load);
+    const HeightMap pressure = gather_to_root(d.pressure, slab, MPI_COMM_WORLD);
+    const HeightMap gap = gather_to_root(d.gap, slab, MPI_COMM_WORLD);
+    const ContactSolution& s = serial.solve(load);
+    if (rank_of(MPI_COMM_WORLD) != 0) continue;
+    const std::string what = std::string(solver_name(options.solver)) + ", " + std::to_string(grid.nx) +
+                             " x " + std::to_string(grid.ny) +
+                             (grid.periodic ? " periodic" : " non-periodic") + ", load " +
+                             std::to_string(load);
+    EXPECT_TRUE(s.converged && d.converged) << what;
+    EXPECT_EQ(d.iterations, s.iterations) << what;
+    EXPECT_EQ(d.contact_points, s.contact_points) << what;
+    EXPECT_GT(s.contact_points, 0) << what;
+    EXPECT_LT(testing::relative_difference(pressure, s.pressure), kPressureTolerance) << what;
+    // The gap and the flat's height: differences of u - h, so relative to the surface's height range.
+    const Real range = surface.heights().maxCoeff() - surface.heights().minCoeff();
+    EXPECT_LT((gap - s.gap).abs().maxCoeff(), kPressureTolerance * range) << what;
+    EXPECT_NEAR(d.separation, s.separation, kPressureTolerance * range) << what;
+    EXPECT_NEAR(d.residual, s.residual, 1e-9) << what;
+  }
+}
+
+Surface periodic_surface() {
+  return generate_surface({.nx = 64, .ny = 48, .lx = 1e-4, .ly = 0.75e-4, .periodic = true},
+                          {.sigma = 1e-6, .hurst = 0.7, .qr = 1e5, .qs = std::nullopt}, 4);
+}
+
+Surface non_periodic_surface() {
+  return generate_surface({.nx = 40, .ny = 33, .lx = 1e-4, .ly = 0.8e-4, .periodic = true},
+                          {.sigma = 1e-6, .hurst = 0.8, .qr = 1e5, .qs = std::nullopt}, 8)
+      .with_periodic(false);
+}
+
+TEST(DistributedPolonskyKeer, TakesTheSerialStepsOnAPeriodicSurface) {
+  expect_same_solutions(periodic_surface(), {0.01, 0.03, 0.08}, plain());
+}
+
+TEST(DistributedPolonskyKeer, TakesTheSerialStepsOnANonPeriodicSurface) {
+  expect_same_solutions(non_periodic_surface(), {0.02, 0.045}, plain());
+}
+
+TEST(DistributedPreconditionedCg, TakesTheSerialStepsOnAPeriodicSurface) {
+  expect_same_solutions(periodic_surface(), {0.01, 0.03, 0.08}, options_for(SolverKind::preconditioned_cg));
+}
+
+TEST(DistributedPreconditionedCg, TakesTheSerialStepsOnANonPeriodicSurface) {
+  expect_same_solutions(non_periodic_surface(), {0.02, 0.045}, options_for(SolverKind::preconditioned_cg));
+}
+
+TEST(DistributedPreconditionedCg, IsNotThePlainIteration) {
+  // The comparisons above would pass if both solvers ignored options.solver; the filter must show.
+  const Surface surface = periodic_surface();
+  const Slab slab = slab_of(surface.grid(), MPI_COMM_WORLD);
+  const Real load = 0.01 * kModulus * spectral_moments(surface).rms_gradient();
+  DistributedPolonskyKeer plain_solver(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
+                                       MPI_COMM_WORLD, plain());
+  DistributedPolonskyKeer filtered(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
+                                   MPI_COMM_WORLD, options_for(SolverKind::preconditioned_cg));
+  EXPECT_LT(filtered.solve(load).iterations, plain_solver.solve(load).iterations);
+}
+
+TEST(DistributedPolonskyKeer, ZeroLoadTouchesNothing) {
+  const Surface surface = generate_surface({.nx = 32, .ny = 32, .lx = 1e-4, .ly = 1e-4, .periodic = true},
+                                           {.sigma = 1e-6, .hurst = 0.7, .qr = 1e5, .qs = std::nullopt}, 2);
+  const Slab slab = slab_of(surface.grid(), MPI_COMM_WORLD);
+  DistributedPolonskyKeer solver(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
+                                 MPI_COMM_WORLD, plain());
+  const DistributedContactSolution& s = solver.solve(0);
+  EXPECT_EQ(s.contact_points, 0);
+  EXPECT_TRUE((s.pressure == 0).all());
+  EXPECT_NEAR(s.separation, surface.centred().heights().maxCoeff(), 1e-15);
+}
+
+TEST(DistributedPolonskyKeer, RefusesWhatIsNotDistributedYetNamingIt) {
+  const Grid grid{.nx = 16, .ny = 16, .lx = 1e-4, .ly = 1e-4, .periodic = true};
+  const HeightMap local = HeightMap::Zero(slab_of(grid, MPI_COMM_WORLD).count, grid.nx);
+  PolonskyKeerOptions options = plain();
+  options.hardness = 1e9;
+  try {
+    DistributedPolonskyKeer solver(grid, local, kModulus, MPI_COMM_WORLD, options);
+    ADD_FAILURE() << "a hardness was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("hardness"), std::string::npos) << e.what();
+  }
+  options = plain();
+  options.single_precision = true;
+  options.tolerance = 1e-6;
+  EXPECT_THROW(DistributedPolonskyKeer(grid, local, kModulus, MPI_COMM_WORLD, options), Error);
+}
+
+}  // namespace
+}  // namespace contactbench::mpi
