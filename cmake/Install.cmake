@@ -1,4 +1,5 @@
-# `cmake --install`: the libraries contactbench::core, ::bem and ::theories with their headers under
+# `cmake --install`: the libraries contactbench::core, ::bem and ::theories (and ::mpi when built with
+# CB_WITH_MPI) with their headers under
 # <prefix>/include/contactbench/, the contactbench program, and a CMake package so that another project can
 #   find_package(contactbench 0.1 REQUIRED)
 #   target_link_libraries(my_program PRIVATE contactbench::bem)
@@ -8,7 +9,11 @@ include(CMakePackageConfigHelpers)
 
 set(CB_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/contactbench")
 
-install(TARGETS contactbench_core contactbench_bem contactbench_theories
+set(cb_installed_libraries contactbench_core contactbench_bem contactbench_theories)
+if(CB_WITH_MPI)
+  list(APPEND cb_installed_libraries contactbench_mpi)
+endif()
+install(TARGETS ${cb_installed_libraries}
         EXPORT contactbenchTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT runtime
@@ -23,7 +28,7 @@ write_basic_package_version_file("${PROJECT_BINARY_DIR}/package/contactbenchConf
                                  COMPATIBILITY SameMinorVersion)
 install(FILES "${PROJECT_BINARY_DIR}/package/contactbenchConfig.cmake"
               "${PROJECT_BINARY_DIR}/package/contactbenchConfigVersion.cmake"
-              cmake/FFTWTargets.cmake
+              cmake/FFTWTargets.cmake cmake/FFTWMpiTargets.cmake
         DESTINATION ${CB_INSTALL_CMAKEDIR} COMPONENT development)
 install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
 install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)

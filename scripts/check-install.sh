@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The installed package works for another project: installs the build tree given as $1 into a temporary prefix,
 # then configures, builds and runs examples/consumer against it (find_package(contactbench), contactbench::bem).
-# Also checks that the installed program runs and that the headers sit under include/contactbench/.
+# Also checks that the installed program runs, that the headers sit under include/contactbench/, and, for a
+# build with MPI, that contactbench::mpi is installed (the consumer's configure then finds MPI through the
+# package's config).
 # Usage: scripts/check-install.sh BUILD_DIR   (the test command runs it as the CTest test install_and_consume)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,6 +15,13 @@ cmake --install "$build" --prefix "$work/prefix" >"$work/install.log"
 for header in core/surface.hpp bem/polonsky_keer.hpp theories/plateau_model.hpp; do
   [[ -f "$work/prefix/include/contactbench/$header" ]] || { echo "check-install: missing include/contactbench/$header" >&2; exit 1; }
 done
+# Built with MPI (CB_WITH_MPI): the distributed library is installed too, with its headers and target.
+if grep -q '^CB_WITH_MPI:BOOL=ON' "$build/CMakeCache.txt"; then
+  [[ -f "$work/prefix/include/contactbench/mpi/distributed_sweep.hpp" ]] ||
+    { echo "check-install: missing include/contactbench/mpi/distributed_sweep.hpp" >&2; exit 1; }
+  grep -qs 'contactbench::mpi' "$work/prefix"/lib*/cmake/contactbench/contactbenchTargets.cmake ||
+    { echo "check-install: the package does not define contactbench::mpi" >&2; exit 1; }
+fi
 "$work/prefix/bin/contactbench" --version
 
 # The consumer sees only the prefix: nothing of the source or build tree is on its paths.
