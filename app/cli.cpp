@@ -2,9 +2,13 @@
 
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include <omp.h>
 
+#if CONTACTBENCH_WITH_MPI
+#include "contactbench/app/distributed_stages.hpp"
+#endif
 #include "contactbench/app/mpi_launch.hpp"
 #include "contactbench/app/output.hpp"
 #include "contactbench/app/provenance.hpp"
@@ -43,28 +47,37 @@ int run_cli(int argc, char** argv) {
   add_bem_command(app);
   add_run_command(app);
   add_convert_command(app);
-  // Started as K > 1 MPI ranks: no stage of the command line is distributed yet (docs/mpi.md), and K copies
-  // would each do the whole work and write the same files. Refused, said once (by rank 0).
+  auto parse_and_run = [&]() -> int {
+    try {
+      app.parse(argc, argv);
+      check_standard_output();  // a command whose output was lost must not exit 0
+    } catch (const CLI::ParseError& e) {
+      return app.exit(e);  // --help lands here with status 0; a usage error prints its reason
+    } catch (const std::exception& e) {
+      std::cerr << "contactbench: error: " << e.what() << '\n';
+      return 1;
+    }
+    return 0;
+  };
+  // Started as K > 1 MPI ranks (mpirun / mpiexec -np K): `run`, `bem` and `sweep` run their BEM and sweep
+  // stages on slabs across the ranks, rank 0 doing everything else once (app/distributed_stages.hpp). Other
+  // commands have nothing to distribute and K copies would each do the whole work and write the same files:
+  // refused, said once (by rank 0).
   if (const MpiLaunch launch = mpi_launch(); launch.ranks > 1) {
+    const std::string command = argc > 1 ? argv[1] : "";
+    const bool distributable = command == "run" || command == "bem" || command == "sweep";
+#if CONTACTBENCH_WITH_MPI
+    if (distributable) return run_as_mpi_ranks(argc, argv, parse_and_run);
+#endif
     if (launch.rank == 0)
-      std::cerr
-          << "contactbench: error: started as " << launch.ranks
-          << " MPI ranks (mpirun / mpiexec), but the command line has no distributed stages yet: each "
-             "rank would run the whole command and write the same files. Run it as one process; the "
-             "distributed solver, generation, statistics and sweep are in the library contactbench::mpi "
-             "(docs/mpi.md)\n";
+      std::cerr << "contactbench: error: started as " << launch.ranks << " MPI ranks (mpirun / mpiexec), but "
+                << (distributable ? "this contactbench was built without MPI (CB_WITH_MPI=OFF)"
+                                  : "'" + command + "' has no distributed stages (run, bem and sweep have)")
+                << ": each rank would run the whole command and write the same files. Run it as one "
+                   "process (docs/mpi.md)\n";
     return 1;
   }
-  try {
-    app.parse(argc, argv);
-    check_standard_output();  // a command whose output was lost must not exit 0
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);  // --help lands here with status 0; a usage error prints its reason
-  } catch (const std::exception& e) {
-    std::cerr << "contactbench: error: " << e.what() << '\n';
-    return 1;
-  }
-  return 0;
+  return parse_and_run();
 }
 
 }  // namespace contactbench

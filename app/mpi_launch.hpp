@@ -1,6 +1,7 @@
 // Whether the program was started as several ranks of an MPI job (mpirun / mpiexec -np K), read from what the
-// launchers put in each process's environment: the command line has no distributed stages yet (docs/mpi.md),
-// so it refuses to run K independent copies that would each do the whole work and write the same files.
+// launchers put in each process's environment, before MPI is started: `run`, `bem` and `sweep` then run as
+// ranks (app/distributed_stages.hpp), other commands refuse rather than run K copies that would each do the
+// whole work and write the same files (docs/mpi.md).
 #pragma once
 
 namespace contactbench {

@@ -5,7 +5,9 @@
 #include <array>
 #include <ctime>
 #include <fstream>
+#include <string>
 
+#include "contactbench/app/mpi_launch.hpp"
 #include "contactbench/build_info.hpp"
 
 namespace contactbench {
@@ -38,7 +40,9 @@ Provenance current_provenance(int threads, const std::string& command) {
   std::array<char, 256> host{};
   if (gethostname(host.data(), host.size() - 1) != 0) host[0] = '\0';
   p.machine = std::string(host.data()) + " (" + cpu_model() + ")";
-  p.command = command;
+  // Run as K MPI ranks (app/distributed_stages.hpp): the command that reruns it says so.
+  const MpiLaunch launch = mpi_launch();
+  p.command = launch.ranks > 1 ? "mpiexec -np " + std::to_string(launch.ranks) + " " + command : command;
   return p;
 }
 

@@ -10,7 +10,7 @@ struct Provenance {
   std::string date;    // UTC, ISO 8601
   int threads = 1;
   std::string machine;  // host name and CPU model
-  std::string command;  // the command line that made the result
+  std::string command;  // the command line that made the result ("mpiexec -np K ..." when run as K ranks)
 };
 
 Provenance current_provenance(int threads, const std::string& command);

@@ -109,6 +109,12 @@ void write_summary_json(std::ostream& out, const SceneReport& report, const Comp
   surface.add("m4x", report.moments.m4x).add("m4y", report.moments.m4y);
   surface.add("rms_gradient", comparison.rms_gradient);
   root.add("surface", std::move(surface));
+  if (report.ranks > 1) {  // run as several MPI ranks (docs/mpi.md)
+    JsonObject distributed;
+    distributed.add("ranks", static_cast<long long>(report.ranks));
+    distributed.add("bem_bytes_per_rank", static_cast<long long>(report.bytes_per_rank));
+    root.add("distributed", std::move(distributed));
+  }
   std::vector<JsonObject> stages;
   for (const StageRecord& s : report.stages) {
     JsonObject o;

@@ -1,9 +1,13 @@
 #include "contactbench/app/scene_run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <sstream>
 
+#if CONTACTBENCH_WITH_MPI
+#include "contactbench/app/distributed_stages.hpp"
+#endif
 #include "contactbench/app/scene_plan.hpp"
 #include "contactbench/app/scene_toml.hpp"
 
@@ -62,6 +66,17 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
                                     .moments = report.moments,
                                     .key = "methods." + m.label,
                                     .problems = problems});
+#if CONTACTBENCH_WITH_MPI
+  // Run as several MPI ranks: a BEM stage the distributed solver cannot do is refused here, before any work.
+  if (stages_are_distributed()) {
+    report.ranks = distributed_rank_count();
+    for (std::size_t m = 0; m < scene.methods.size(); ++m)
+      if (const int b = plan.of_method[m].bem; b >= 0)
+        if (const std::string refusal = distributed_bem_refusal(plan.bems[static_cast<std::size_t>(b)].stage);
+            !refusal.empty())
+          problems.add(0, "methods." + scene.methods[m].label, refusal);
+  }
+#endif
   problems.throw_if_any();
 
   const StageContext context{.threads = options.threads, .observer = &observer};
@@ -77,6 +92,7 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
     run_stage(report, observer, plan.bems[b].stage.name(), [&] {
       bems[b] = run_bem_stage(plan.bems[b].stage, surface, scene.material.estar, mean_pressures,
                               plan.bems[b].connectivities, context);
+      report.bytes_per_rank = std::max(report.bytes_per_rank, bems[b].bytes_per_rank);
     });
 
   for (std::size_t m = 0; m < scene.methods.size(); ++m) {

@@ -38,6 +38,10 @@ struct SceneReport {
   std::vector<StageRecord> stages;    // every stage that ran, in order
   std::vector<MethodResult> methods;  // in the scene's order
   int threads = 1;
+  // MPI ranks the distributed stages ran on (app/distributed_stages.hpp; 1: one process), and the largest
+  // memory one rank held for a BEM solve [bytes] (0 when none ran distributed).
+  int ranks = 1;
+  std::size_t bytes_per_rank = 0;
   double seconds = 0;  // the whole run
   const std::vector<Real>& loads() const { return scene.loads; }
 };

@@ -1,8 +1,13 @@
 #include "contactbench/app/stages.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
 #include <sstream>
 
+#if CONTACTBENCH_WITH_MPI
+#include "contactbench/app/distributed_stages.hpp"
+#endif
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/labelling.hpp"
 #include "contactbench/core/topography_io.hpp"
@@ -72,9 +77,15 @@ SweepProducts run_sweep_stage(const SweepStage& stage, const Surface& surface, c
   SweepProducts products;
   // The same surface on a finer grid (docs/theory.md section 2): the pixel effect of the cut's area and
   // spot count shrinks, the surface does not change (docs/theory.md section 8).
-  products.sweep = stage.refine > 0 ? sweep(refine(surface, stage.refine, stage.refine, context.threads),
-                                            stage.levels, stage.topology, context.threads)
-                                    : sweep(surface, stage.levels, stage.topology, context.threads);
+  std::optional<Surface> refined;
+  if (stage.refine > 0) refined = refine(surface, stage.refine, stage.refine, context.threads);
+  const Surface& swept = refined ? *refined : surface;
+#if CONTACTBENCH_WITH_MPI
+  if (stages_are_distributed())  // on slabs across the MPI ranks (app/distributed_stages.hpp)
+    products.sweep = sweep_distributed(swept, stage.levels, stage.topology);
+  else
+#endif
+    products.sweep = sweep(swept, stage.levels, stage.topology, context.threads);
   products.model = plateau_model(products.sweep);
   products.seconds = seconds_since(start);
   return products;
@@ -88,10 +99,21 @@ void solve_loads(const BemStage& stage, const Surface& solved, Real estar,
                  const std::vector<Real>& mean_pressures, const std::set<int>& connectivities,
                  const StageContext& context, const std::string& fields, Clock::time_point start,
                  std::vector<ContactSolution>& solutions,
-                 std::map<int, std::vector<ContactStatistics>>& statistics) {
+                 std::map<int, std::vector<ContactStatistics>>& statistics, std::size_t& bytes_per_rank) {
   const RunObserver quiet;
   const RunObserver& observer = context.observer ? *context.observer : quiet;
   const std::string name = stage.name();
+#if CONTACTBENCH_WITH_MPI
+  if (stages_are_distributed()) {  // on slabs across the MPI ranks (app/distributed_stages.hpp)
+    DistributedLoads done =
+        solve_loads_distributed(stage, solved, estar, mean_pressures, connectivities, context.threads, fields,
+                                [&](const std::string& text) { observer.warn(text); });
+    solutions = std::move(done.solutions);
+    statistics = std::move(done.statistics);
+    bytes_per_rank = std::max(bytes_per_rank, done.bytes_per_rank);
+    return;
+  }
+#endif
   PolonskyKeerOptions solver_options{.tolerance = stage.tolerance,
                                      .max_iterations = stage.max_iterations,
                                      .hardness = stage.hardness,  // absent: purely elastic
@@ -137,7 +159,7 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
   products.points = solved.grid().points();
   products.periodic = stage.periodic;
   solve_loads(stage, solved, estar, mean_pressures, connectivities, context, stage.fields, start,
-              products.solutions, products.statistics);
+              products.solutions, products.statistics, products.bytes_per_rank);
   if (stage.extrapolate) {
     // The same surface on twice the points a side (the method's preflight refuses a non-periodic one):
     // refined from the scene's surface, not from the first grid (the same trigonometric interpolation).
@@ -145,7 +167,7 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
     if (fine.grid().periodic != stage.periodic) fine = fine.with_periodic(stage.periodic);
     products.fine_points = fine.grid().points();
     solve_loads(stage, fine, estar, mean_pressures, connectivities, context, "", start,
-                products.fine_solutions, products.fine_statistics);
+                products.fine_solutions, products.fine_statistics, products.bytes_per_rank);
   }
   products.seconds = seconds_since(start);
   return products;

@@ -65,6 +65,9 @@ struct BemProducts {
   std::vector<ContactSolution> fine_solutions;
   std::map<int, std::vector<ContactStatistics>> fine_statistics;  // by connectivity
   Index fine_points = 0;
+  // Run on several MPI ranks (app/distributed_stages.hpp): the largest memory one rank held for a solve
+  // [bytes]; 0 when solved by one process.
+  std::size_t bytes_per_rank = 0;
 };
 
 struct StageContext {

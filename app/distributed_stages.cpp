@@ -1,0 +1,303 @@
+#include "contactbench/app/distributed_stages.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <exception>
+#include <iostream>
+#include <optional>
+
+#include <mpi.h>
+
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/topography_io.hpp"
+#include "contactbench/mpi/distributed_contact_statistics.hpp"
+#include "contactbench/mpi/distributed_polonsky_keer.hpp"
+#include "contactbench/mpi/distributed_sweep.hpp"
+#include "contactbench/mpi/environment.hpp"
+#include "contactbench/mpi/slab.hpp"
+
+namespace contactbench {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// What rank 0 asks the other ranks to do next (one broadcast int).
+enum class Job : int { stop = 0, bem = 1, sweep = 2 };
+
+const MPI_Comm kWorld = MPI_COMM_WORLD;
+int g_ranks = 1;  // set on rank 0 by run_as_mpi_ranks
+
+bool is_root() {
+  return mpi::rank_of(kWorld) == 0;
+}
+
+void announce(Job job) {
+  int code = static_cast<int>(job);
+  MPI_Bcast(&code, 1, MPI_INT, 0, kWorld);
+}
+
+// A job's numbers, packed by rank 0 and broadcast (counts, flags and enums are small integers, exact in a
+// double).
+std::vector<double> broadcast(std::vector<double> values) {
+  std::uint64_t size = values.size();
+  MPI_Bcast(&size, 1, MPI_UINT64_T, 0, kWorld);
+  values.resize(size);
+  MPI_Bcast(values.data(), static_cast<int>(size), MPI_DOUBLE, 0, kWorld);
+  return values;
+}
+
+void pack_grid(std::vector<double>& out, const Grid& grid) {
+  out.insert(out.end(), {static_cast<double>(grid.nx), static_cast<double>(grid.ny), grid.lx, grid.ly,
+                         grid.periodic ? 1.0 : 0.0});
+}
+
+// Reads the packed values in order.
+class Unpacker {
+ public:
+  explicit Unpacker(const std::vector<double>& values) : values_(values) {}
+  double number() { return values_.at(next_++); }
+  Index integer() { return static_cast<Index>(number()); }
+  bool flag() { return number() != 0; }
+  Grid grid() {
+    Grid g;
+    g.nx = integer();
+    g.ny = integer();
+    g.lx = number();
+    g.ly = number();
+    g.periodic = flag();
+    return g;
+  }
+
+ private:
+  const std::vector<double>& values_;
+  std::size_t next_ = 0;
+};
+
+Topology topology_of(int connectivity, bool periodic) {
+  return Topology::for_surface(connectivity == 8 ? Connectivity::eight : Connectivity::four, periodic);
+}
+
+// ---- The BEM job, run by every rank (rank 0 with the surface and the writer of fields)
+// ---------------------
+
+struct BemRequest {
+  Grid grid;
+  Real estar = 0;
+  Real tolerance = 0;
+  Index max_iterations = 0;
+  SolverKind solver = kDefaultSolver;
+  int threads = 1;
+  bool write_fields = false;
+  std::vector<Real> mean_pressures;
+  std::vector<int> connectivities;
+};
+
+BemRequest broadcast_request(const BemRequest& request) {
+  std::vector<double> packed;
+  if (is_root()) {
+    pack_grid(packed, request.grid);
+    packed.insert(
+        packed.end(),
+        {request.estar, request.tolerance, static_cast<double>(request.max_iterations),
+         static_cast<double>(static_cast<int>(request.solver)), static_cast<double>(request.threads),
+         request.write_fields ? 1.0 : 0.0, static_cast<double>(request.mean_pressures.size())});
+    packed.insert(packed.end(), request.mean_pressures.begin(), request.mean_pressures.end());
+    packed.push_back(static_cast<double>(request.connectivities.size()));
+    packed.insert(packed.end(), request.connectivities.begin(), request.connectivities.end());
+  }
+  const std::vector<double> values = broadcast(std::move(packed));
+  Unpacker in(values);
+  BemRequest r;
+  r.grid = in.grid();
+  r.estar = in.number();
+  r.tolerance = in.number();
+  r.max_iterations = in.integer();
+  r.solver = static_cast<SolverKind>(static_cast<int>(in.integer()));
+  r.threads = static_cast<int>(in.integer());
+  r.write_fields = in.flag();
+  for (Index k = in.integer(); k > 0; --k)
+    r.mean_pressures.push_back(in.number());
+  for (Index k = in.integer(); k > 0; --k)
+    r.connectivities.push_back(static_cast<int>(in.integer()));
+  return r;
+}
+
+// Every load on slabs. Rank 0 passes the surface's heights, the field prefix and a warning sink; the others
+// pass nothing and get nothing back. The only work rank 0 does alone between two collective calls is
+// writing fields: a failure there is broadcast before the next load (every rank stops) and rethrown at the
+// end, so no rank is ever left waiting.
+DistributedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, const std::string& fields,
+                         const std::function<void(const std::string&)>& warning) {
+  const BemRequest request = broadcast_request(root_request);
+  const Grid& grid = request.grid;
+  const mpi::Slab slab = mpi::slab_of(grid, kWorld);
+  const HeightMap local = mpi::scatter_from_root(heights ? *heights : HeightMap(), slab, kWorld);
+  PolonskyKeerOptions options{.tolerance = request.tolerance,
+                              .max_iterations = request.max_iterations,
+                              .warning = warning,
+                              .solver = request.solver};
+  mpi::DistributedPolonskyKeer solver(grid, local, request.estar, kWorld, options, request.threads);
+  DistributedLoads result;
+  unsigned long long bytes = solver.bytes();
+  MPI_Reduce(is_root() ? MPI_IN_PLACE : &bytes, &bytes, 1, MPI_UNSIGNED_LONG_LONG, MPI_MAX, 0, kWorld);
+  result.bytes_per_rank = bytes;
+  std::exception_ptr failure;
+  for (std::size_t k = 0; k < request.mean_pressures.size(); ++k) {
+    int go = failure ? 0 : 1;
+    MPI_Bcast(&go, 1, MPI_INT, 0, kWorld);
+    if (!go) break;
+    const auto start = Clock::now();
+    const mpi::DistributedContactSolution& solved = solver.solve(request.mean_pressures[k]);
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    for (const int c : request.connectivities) {
+      const ContactStatistics statistics = mpi::distributed_contact_statistics(
+          grid, solved.pressure, solved.gap, topology_of(c, grid.periodic), kWorld);
+      if (is_root()) result.statistics[c].push_back(statistics);
+    }
+    if (request.write_fields) {
+      const HeightMap pressure = mpi::gather_to_root(solved.pressure, slab, kWorld);
+      const HeightMap gap = mpi::gather_to_root(solved.gap, slab, kWorld);
+      if (is_root()) try {
+          write_surface(field_path(fields, k + 1, "pressure"), Surface(grid, pressure));
+          write_surface(field_path(fields, k + 1, "gap"), Surface(grid, gap));
+        } catch (...) {
+          failure = std::current_exception();
+        }
+    }
+    if (is_root())
+      result.solutions.push_back(ContactSolution{.pressure = {},
+                                                 .gap = {},
+                                                 .mean_pressure = solved.mean_pressure,
+                                                 .separation = solved.separation,
+                                                 .contact_points = solved.contact_points,
+                                                 .iterations = solved.iterations,
+                                                 .coarse_iterations = 0,
+                                                 .change = solved.change,
+                                                 .residual = solved.residual,
+                                                 .converged = solved.converged,
+                                                 .seconds = seconds,
+                                                 .plastic_points = 0});
+  }
+  if (failure) std::rethrow_exception(failure);
+  return result;
+}
+
+// ---- The sweep job ---------------------------------------------------------------------------------------
+
+SweepCurve sweep_job(const Grid& root_grid, const HeightMap* heights, const SweepLevels& root_levels,
+                     const Topology& root_topology) {
+  std::vector<double> packed;
+  if (is_root()) {
+    pack_grid(packed, root_grid);
+    packed.insert(packed.end(), {static_cast<double>(static_cast<int>(root_levels.kind)),
+                                 static_cast<double>(root_levels.count),
+                                 root_topology.connectivity == Connectivity::eight ? 8.0 : 4.0,
+                                 root_topology.wrap_x ? 1.0 : 0.0, root_topology.wrap_y ? 1.0 : 0.0});
+  }
+  const std::vector<double> values = broadcast(std::move(packed));
+  Unpacker in(values);
+  const Grid grid = in.grid();
+  SweepLevels levels;
+  levels.kind = static_cast<SweepLevels::Kind>(static_cast<int>(in.integer()));
+  levels.count = in.integer();
+  Topology topology;
+  topology.connectivity = in.integer() == 8 ? Connectivity::eight : Connectivity::four;
+  topology.wrap_x = in.flag();
+  topology.wrap_y = in.flag();
+  const mpi::Slab slab = mpi::slab_of(grid, kWorld);
+  const HeightMap local = mpi::scatter_from_root(heights ? *heights : HeightMap(), slab, kWorld);
+  return mpi::distributed_sweep(grid, local, levels, topology, kWorld);
+}
+
+// The other ranks: each job rank 0 announces, until it says stop. A job that fails fails on every rank at
+// the same collective call (the distributed classes check collectively); rank 0 reports it.
+void serve() {
+  for (;;) {
+    int code = 0;
+    MPI_Bcast(&code, 1, MPI_INT, 0, kWorld);
+    try {
+      switch (static_cast<Job>(code)) {
+        case Job::stop:
+          return;
+        case Job::bem:
+          bem_job({}, nullptr, "", {});
+          break;
+        case Job::sweep:
+          sweep_job({}, nullptr, {}, {});
+          break;
+      }
+    } catch (const std::exception&) {
+      // rank 0 met the same error and reports it
+    }
+  }
+}
+
+}  // namespace
+
+int run_as_mpi_ranks(int& argc, char**& argv, const std::function<int()>& command) {
+  mpi::Environment environment(argc, argv);
+  if (!is_root()) {
+    serve();
+    return 0;
+  }
+  g_ranks = mpi::size_of(kWorld);
+  int status = 1;
+  try {
+    status = command();
+  } catch (const std::exception& e) {
+    std::cerr << "contactbench: error: " << e.what() << '\n';
+  }
+  announce(Job::stop);
+  g_ranks = 1;
+  return status;
+}
+
+bool stages_are_distributed() {
+  return g_ranks > 1;
+}
+
+int distributed_rank_count() {
+  return g_ranks;
+}
+
+std::string distributed_bem_refusal(const BemStage& stage) {
+  std::vector<std::string> missing;
+  if (stage.hardness) missing.push_back("a hardness");
+  if (stage.single_precision) missing.push_back("single precision (float)");
+  if (stage.solver != SolverKind::polonsky_keer && stage.solver != SolverKind::preconditioned_cg)
+    missing.push_back("solver = \"" + std::string(solver_name(stage.solver)) +
+                      "\" (distributed: polonsky_keer, preconditioned_cg)");
+  if (missing.empty()) return "";
+  std::string text = "the BEM stage has no distributed version with ";
+  for (std::size_t k = 0; k < missing.size(); ++k)
+    text += (k == 0 ? "" : k + 1 == missing.size() ? " and " : ", ") + missing[k];
+  return text + ": run it as one process, or without " + (missing.size() > 1 ? "these" : "it") +
+         " (docs/mpi.md)";
+}
+
+DistributedLoads solve_loads_distributed(const BemStage& stage, const Surface& solved, Real estar,
+                                         const std::vector<Real>& mean_pressures,
+                                         const std::set<int>& connectivities, int threads,
+                                         const std::string& fields,
+                                         const std::function<void(const std::string&)>& warning) {
+  if (const std::string refusal = distributed_bem_refusal(stage); !refusal.empty()) throw Error(refusal);
+  BemRequest request{.grid = solved.grid(),
+                     .estar = estar,
+                     .tolerance = stage.tolerance,
+                     .max_iterations = stage.max_iterations,
+                     .solver = stage.solver,
+                     .threads = threads,
+                     .write_fields = !fields.empty(),
+                     .mean_pressures = mean_pressures,
+                     .connectivities = {connectivities.begin(), connectivities.end()}};
+  announce(Job::bem);
+  return bem_job(request, &solved.heights(), fields, warning);
+}
+
+SweepCurve sweep_distributed(const Surface& surface, const SweepLevels& levels, const Topology& topology) {
+  announce(Job::sweep);
+  return sweep_job(surface.grid(), &surface.heights(), levels, topology);
+}
+
+}  // namespace contactbench

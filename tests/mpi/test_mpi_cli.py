@@ -1,0 +1,126 @@
+"""The command line run as several MPI ranks (app/distributed_stages.hpp, docs/mpi.md) against one process.
+
+Usage: test_mpi_cli.py CONTACTBENCH MPIEXEC RANKS
+
+`bem` and `sweep` under mpiexec write the files a serial run writes: the BEM's areas, spot counts, iterations
+and convergence flags equal, its separation, mean gap, largest pressure and fields to 1e-12 relative (the
+distributed solver takes the serial iteration step for step; only the order of its global sums differs, so
+they agree to round-off: 1e-12 leaves a factor of 1e3 over what 1-3 ranks showed); the sweep's rows equal.
+A run's summary records the ranks and the memory per rank. What has no distributed version is refused.
+"""
+import csv
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+contactbench, mpiexec, ranks = sys.argv[1], sys.argv[2], int(sys.argv[3])
+environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   OMP_NUM_THREADS="1", OMP_WAIT_POLICY="PASSIVE")
+failures = []
+
+
+def run(arguments, distributed, expect_status=0):
+    command = ([mpiexec, "--oversubscribe", "-np", str(ranks)] if distributed else []) + [contactbench] + arguments
+    done = subprocess.run(command, capture_output=True, text=True, env=environment, timeout=120)
+    if done.returncode != expect_status:
+        failures.append(f"{' '.join(command)}: exit {done.returncode}, expected {expect_status}\n{done.stderr}")
+    return done
+
+
+def rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+
+
+def relative(a, b):
+    a, b = float(a), float(b)
+    return abs(a - b) / max(abs(b), 1e-300) if a != b else 0.0
+
+
+def field(path):
+    with open(path) as f:
+        return [float(v) for line in f if not line.startswith("#") for v in line.split()]
+
+
+def same_bem_rows(distributed, serial, what):
+    if len(distributed) != len(serial):
+        failures.append(f"{what}: {len(distributed)} rows against {len(serial)}")
+        return
+    for d, s in zip(distributed, serial):
+        for key in ("load", "area_fraction", "spots", "area_fraction_nodes", "area_fraction_corrected",
+                    "iterations", "converged"):
+            if d[key] != s[key]:
+                failures.append(f"{what}: {key} {d[key]} against {s[key]} at load {s['load']}")
+        for key in ("separation", "mean_gap", "max_pressure"):
+            if relative(d[key], s[key]) > 1e-12:
+                failures.append(f"{what}: {key} {d[key]} against {s[key]} at load {s['load']}")
+
+
+with tempfile.TemporaryDirectory() as work:
+    surface = os.path.join(work, "surface.txt")
+    # 64 x 50 points: 50 rows split 17/17/16 on 3 ranks (uneven slabs).
+    run(["generate", "--sigma", "1e-6", "--hurst", "0.7", "--qr", "1e5", "--size", "1e-4", "--size-y", "0.78125e-4",
+         "--grid", "64", "--grid-y", "50", "--seed", "4", "--out", surface], distributed=False)
+    loads = "1e-3,1e-2,5e-2"
+    for solver in ("polonsky_keer", "preconditioned_cg"):
+        for boundary in ("--periodic", "--non-periodic"):
+            outputs = {}
+            for distributed in (False, True):
+                name = f"{solver}{boundary}{'_mpi' if distributed else ''}"
+                out, fields = os.path.join(work, name + ".csv"), os.path.join(work, name)
+                run(["bem", surface, "--loads", loads, "--solver", solver, boundary, "--threads", "1", "--out", out,
+                     "--fields", fields], distributed)
+                outputs[distributed] = (out, fields)
+            what = f"bem {solver} {boundary} on {ranks} ranks"
+            same_bem_rows(rows(outputs[True][0]), rows(outputs[False][0]), what)
+            for k in (1, 2, 3):
+                for kind in ("pressure", "gap"):
+                    d = field(f"{outputs[True][1]}_load{k}_{kind}.txt")
+                    s = field(f"{outputs[False][1]}_load{k}_{kind}.txt")
+                    scale = max(abs(v) for v in s)
+                    worst = max(abs(a - b) for a, b in zip(d, s)) / scale
+                    if len(d) != len(s) or worst > 1e-12:
+                        failures.append(f"{what}: {kind} field of load {k} off by {worst:.3g} of its largest value")
+
+    for levels in ("exact", "40", "paper"):
+        outs = []
+        for distributed in (False, True):
+            out = os.path.join(work, f"sweep_{levels}{'_mpi' if distributed else ''}.csv")
+            run(["sweep", surface, "--levels", levels, "--connectivity", "8", "--out", out], distributed)
+            outs.append(rows(out))
+        # The paper's levels end at the mean height, a sum over the ranks: its z may differ in the last bits.
+        keys = [k for k in outs[0][0] if k not in ("z", "separation")] if levels == "paper" else list(outs[0][0])
+        if [[r[k] for k in keys] for r in outs[1]] != [[r[k] for k in keys] for r in outs[0]]:
+            failures.append(f"sweep --levels {levels} on {ranks} ranks differs from one process")
+
+    # A scene: its summary records the ranks and the memory a rank held.
+    scene = os.path.join(work, "scene.toml")
+    with open(scene, "w") as f:
+        f.write(f'name = "mpi"\nreference = "bem"\n[surface]\nfile = "{surface}"\n[material]\nE = 100e9\nnu = 0.3\n'
+                '[loads]\nvalues = [1e-3, 1e-2]\n[methods.bem]\n[methods.plateau]\nmethod = "plateau"\n')
+    run(["run", scene, "--out", os.path.join(work, "run"), "--threads", "1", "--quiet"], distributed=True)
+    try:
+        with open(os.path.join(work, "run", "summary.json")) as f:
+            summary = json.load(f)
+        if summary.get("distributed", {}).get("ranks") != ranks or not summary["distributed"]["bem_bytes_per_rank"] > 0:
+            failures.append(f"summary.json: distributed = {summary.get('distributed')}")
+        if not summary["provenance"]["command"].startswith(f"mpiexec -np {ranks} "):
+            failures.append(f"summary.json: the command {summary['provenance']['command']} does not say mpiexec")
+    except (OSError, KeyError, ValueError) as e:
+        failures.append(f"run as {ranks} ranks: no readable summary.json ({e})")
+
+    # Refused, before any work, with the reason: what the distributed solver lacks, and commands with nothing
+    # to distribute.
+    for arguments, reason in ((["bem", surface, "--loads", "1e-3", "--solver", "active_set"], "no distributed version"),
+                              (["bem", surface, "--loads", "1e-3", "--float"], "single precision"),
+                              (["stats", surface], "has no distributed stages")):
+        done = run(arguments, distributed=True, expect_status=1)
+        if reason not in done.stderr:
+            failures.append(f"{' '.join(arguments)} on {ranks} ranks: '{reason}' not in: {done.stderr}")
+
+for failure in failures:
+    print("FAILED:", failure)
+print(f"test_mpi_cli on {ranks} ranks: {len(failures)} failures")
+sys.exit(1 if failures else 0)
