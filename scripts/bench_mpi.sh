@@ -3,7 +3,7 @@
 # results/bench/mpi.md (docs/mpi.md), stamped with the commit, date, machine and this command. Needs the MPI
 # build (CB_WITH_MPI); as root, OpenMPI needs OMPI_ALLOW_RUN_AS_ROOT(_CONFIRM), set here. Takes ~10 minutes.
 # Usage: scripts/bench_mpi.sh [sizes...]   (default: 1024 2048 4096)
-# CB_BENCH_MPI_LARGEST (default 12288; empty: skip) adds the largest grid this machine holds: 2 ranks x 1
+# CB_BENCH_MPI_LARGEST (default 16384; empty: skip) adds the largest grid this machine holds: 2 ranks x 1
 # thread, 2 iterations, without the serial reference (which would not fit beside it), with each rank's peak
 # resident memory measured by /usr/bin/time.
 set -euo pipefail
@@ -40,7 +40,7 @@ for n in ${@:-1024 2048 4096}; do
     done
   done
 done
-largest=${CB_BENCH_MPI_LARGEST-12288}
+largest=${CB_BENCH_MPI_LARGEST-16384}
 if [[ -n "$largest" ]]; then
   peaks=$(mktemp)
   OMP_NUM_THREADS=1 mpiexec --oversubscribe -n 2 /usr/bin/time -a -o "$peaks" -f "%M" build/release/bench/bench_mpi \
@@ -50,9 +50,8 @@ if [[ -n "$largest" ]]; then
     echo "The last row is the largest grid run here ($largest², double precision, 2 ranks): one cold solve of 2"
     echo "iterations, without the serial reference, which would not fit beside it. Peak resident memory per rank"
     echo "(/usr/bin/time): $(sort -n "$peaks" | awk '{printf "%s%.2f GiB", (NR > 1 ? ", " : ""), $1 / 1048576}')."
-    echo "$(awk -v n="$largest" '{ total += $1 } END { printf "16384² in double would need (16384/%d)² times the %.1f GiB of both ranks, %.1f GiB,", n, total / 1048576, total / 1048576 * (16384 / n) ^ 2 }' "$peaks")"
-    echo "more than the machine's 24 GiB leave beside the system; it needs the single-precision solver, which is not"
-    echo "distributed yet (docs/mpi.md)."
+    echo "$(awk '{ total += $1 } END { printf "Both ranks together: %.1f GiB of the machine'"'"'s 24 GiB; the next size up needs single precision,", total / 1048576 }' "$peaks")"
+    echo "which is not distributed yet (docs/mpi.md)."
   } >> "$out.tmp"
   rm -f "$peaks"
 fi
