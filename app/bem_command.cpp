@@ -13,6 +13,7 @@
 #include "contactbench/app/provenance.hpp"
 #include "contactbench/app/report_writers.hpp"
 #include "contactbench/app/scene_run.hpp"
+#include "contactbench/app/unconverged.hpp"
 #include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/error.hpp"
 
@@ -32,6 +33,7 @@ struct BemOptions {
   std::string fields;
   std::optional<int> connectivity;
   std::optional<std::string> solver;  // bem/solver_registry.hpp
+  bool allow_unconverged = false;
   std::string out;
   int threads = 1;
 };
@@ -47,7 +49,8 @@ const FlagNames kFlags = {{"surface.file", "FILE"},
                           {"methods.bem.fields", "--fields"},
                           {"methods.bem.connectivity", "--connectivity"},
                           {"methods.bem.periodic", "--non-periodic"},
-                          {"methods.bem.solver", "--solver"}};
+                          {"methods.bem.solver", "--solver"},
+                          {"methods.bem.allow_unconverged", "--allow-unconverged"}};
 
 // The one-method scene the flags describe: only what was given, so that every default is the scene's.
 toml::table scene_of(const BemOptions& o) {
@@ -68,6 +71,7 @@ toml::table scene_of(const BemOptions& o) {
   if (!o.fields.empty()) bem.insert("fields", o.fields);
   if (o.connectivity) bem.insert("connectivity", *o.connectivity);
   if (o.solver) bem.insert("solver", *o.solver);
+  if (o.allow_unconverged) bem.insert("allow_unconverged", true);
   return toml::table{{"name", "bem"},
                      {"surface", surface_keys(o.topography)},
                      {"material", material},
@@ -75,11 +79,31 @@ toml::table scene_of(const BemOptions& o) {
                      {"methods", toml::table{{"bem", bem}}}};
 }
 
+// The command as given, every option that changes the result included, so that the header reruns it.
 std::string command_line(const BemOptions& o) {
-  std::string text = "contactbench bem " + o.topography.file + " --loads";
+  const TopographyOptions& t = o.topography;
+  std::string text = "contactbench bem " + t.file + " --loads";
   for (std::size_t k = 0; k < o.loads.size(); ++k)
     text += (k ? "," : " ") + json_number(o.loads[k]);
+  auto add = [&](const char* flag, const auto& value) {
+    if (value) text += std::string(" ") + flag + " " + json_number(static_cast<double>(*value));
+  };
+  add("--size", t.size);
+  add("--size-y", t.size_y);
+  if (t.periodic) text += " --periodic";
+  if (o.non_periodic) text += " --non-periodic";
+  if (t.channel) text += " --channel " + *t.channel;
+  if (t.fill != "none") text += " --fill " + t.fill;
+  if (t.level != "none") text += " --level " + t.level;
+  add("--modulus", o.modulus);
+  add("--tolerance", o.tolerance);
+  add("--max-iterations", o.max_iterations);
+  add("--hardness", o.hardness);
+  if (o.single_precision) text += " --float";
+  if (!o.fields.empty()) text += " --fields " + o.fields;
+  add("--connectivity", o.connectivity);
   if (o.solver) text += " --solver " + *o.solver;
+  if (o.allow_unconverged) text += " --allow-unconverged";
   return text + " --threads " + std::to_string(o.threads);
 }
 
@@ -97,6 +121,7 @@ void run_bem(const BemOptions& o) {
   }
   const Provenance provenance = current_provenance(o.threads, command_line(o));
   write_output(o.out, [&](std::ostream& out) { write_curves_csv(out, report, provenance); });
+  throw_if_unconverged(report);  // written and marked, but not a success (app/unconverged.hpp)
 }
 
 }  // namespace
@@ -142,6 +167,9 @@ void add_bem_command(CLI::App& parent) {
                       "the BEM iteration: " + known + " (default " +
                           std::string(solver_name(kDefaultSolver)) +
                           "; docs/solvers.md); recorded in the CSV's header");
+  command->add_flag("--allow-unconverged", options->allow_unconverged,
+                    "exit 0 even when a load did not converge (its row still says converged = 0); without "
+                    "it such a run exits with status 3 after writing its results");
   command->add_option("--out", options->out, "CSV file (default: standard output)")
       ->check(refuse_empty_output_name);
   add_threads_option(*command, options->threads);

@@ -12,6 +12,7 @@
 #include "contactbench/app/mpi_launch.hpp"
 #include "contactbench/app/output.hpp"
 #include "contactbench/app/provenance.hpp"
+#include "contactbench/app/unconverged.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench {
@@ -53,6 +54,9 @@ int run_cli(int argc, char** argv) {
       check_standard_output();  // a command whose output was lost must not exit 0
     } catch (const CLI::ParseError& e) {
       return app.exit(e);  // --help lands here with status 0; a usage error prints its reason
+    } catch (const UnconvergedError& e) {
+      std::cerr << "contactbench: error: " << e.what() << '\n';
+      return kUnconvergedExitStatus;
     } catch (const std::exception& e) {
       std::cerr << "contactbench: error: " << e.what() << '\n';
       return 1;

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cstdio>
 #include <ctime>
 #include <fstream>
 #include <string>
@@ -25,6 +26,27 @@ std::string cpu_model() {
   return "unknown CPU";
 }
 
+// The command as one line of text: a control character of a file name (a newline would end a CSV comment
+// header and start a data row) written as \n, \t or \xNN.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (byte < 0x20 || byte == 0x7f) {
+      char escaped[5];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+      out += escaped;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 Provenance current_provenance(int threads, const std::string& command) {
@@ -42,7 +64,8 @@ Provenance current_provenance(int threads, const std::string& command) {
   p.machine = std::string(host.data()) + " (" + cpu_model() + ")";
   // Run as K MPI ranks (app/distributed_stages.hpp): the command that reruns it says so.
   const MpiLaunch launch = mpi_launch();
-  p.command = launch.ranks > 1 ? "mpiexec -np " + std::to_string(launch.ranks) + " " + command : command;
+  p.command =
+      printable(launch.ranks > 1 ? "mpiexec -np " + std::to_string(launch.ranks) + " " + command : command);
   return p;
 }
 

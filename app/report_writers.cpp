@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contactbench/app/json_writer.hpp"
+#include "contactbench/app/unconverged.hpp"
 #include "contactbench/core/atomic_file.hpp"
 #include "contactbench/core/error.hpp"
 
@@ -143,9 +144,16 @@ void write_summary_json(std::ostream& out, const SceneReport& report, const Comp
     for (const auto& [name, values] : r.curve.columns)
       if (name == "area_fraction_extrapolated" || name == "area_fraction_error")
         o.add(name, std::span<const double>(values));
+    // Where the method's iteration did not converge (app/unconverged.hpp): those loads' answers, and every
+    // error against them when the method is the reference, are not to be trusted.
+    std::vector<double> unconverged;
+    for (const std::size_t k : r.curve.unconverged)
+      unconverged.push_back(report.loads()[k]);
+    o.add("unconverged_loads", std::span<const double>(unconverged));
     methods.push_back(std::move(o));
   }
   root.add("methods", std::move(methods));
+  root.add("converged", describe_unconverged(report).empty());
   root.add("seconds", report.seconds);
   out << root.str() << '\n';
 }
@@ -178,6 +186,10 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
                                             : percent(c.max_abs_relative_error, false))
         << " | " << (r.label == comparison.reference ? "" : percent(c.rms_relative_error, false)) << " |\n";
   }
+  if (const std::string unconverged = describe_unconverged(report); !unconverged.empty())
+    out << "\n**Not converged**: " << unconverged
+        << ". Those areas are marked below; where the reference did not converge, the errors against it "
+           "at those loads are not to be trusted.\n";
   out << "\nA/A0 at each load" << (comparison.reference.empty() ? "" : " (relative error to the reference)")
       << ":\n\n| P/(E* A0) |";
   for (const MethodResult& r : report.methods)
@@ -191,6 +203,8 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
     for (std::size_t m = 0; m < report.methods.size(); ++m) {
       const MethodResult& r = report.methods[m];
       out << ' ' << table_number(r.curve.area_fraction[k]);
+      if (std::find(r.curve.unconverged.begin(), r.curve.unconverged.end(), k) != r.curve.unconverged.end())
+        out << " (not converged)";
       if (r.label == comparison.reference && !comparison.reference_uncertainty.empty())
         out << " (± " << percent(comparison.reference_uncertainty[k], false) << ")";
       if (!comparison.methods[m].relative_error.empty() && r.label != comparison.reference)

@@ -13,6 +13,7 @@
 #include "contactbench/app/report_writers.hpp"
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/scene_run.hpp"
+#include "contactbench/app/unconverged.hpp"
 
 namespace contactbench {
 
@@ -49,6 +50,7 @@ void run_command(const RunCommandOptions& o) {
     std::cout << "\nWritten to " << folder.string() << "/ (curves.csv, summary.json, table.md"
               << (o.plots ? ", load_area.png, load_area.svg" : "") << ").\n";
   }
+  throw_if_unconverged(report);  // written and marked, but not a success (app/unconverged.hpp)
 }
 
 }  // namespace

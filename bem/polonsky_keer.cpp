@@ -823,8 +823,14 @@ void warn_not_converged(const char* what, Real value, const ContactSolution& s,
   std::ostringstream text;
   text << "Polonsky-Keer did not converge at " << what << " = " << value << " in " << s.iterations
        << " iterations (relative pressure change " << s.change << ", tolerance " << options.tolerance
-       << "); the result is marked converged = false";
+       << "; gap on the contact set " << s.residual << " of the height range, accepted up to "
+       << residual_bound(options.tolerance) << "); the result is marked converged = false";
   options.warning(text.str());
+}
+
+// Converged only with a small complementarity residual as well (residual_bound, polonsky_keer.hpp).
+bool residual_settled(const ContactSolution& s, const PolonskyKeerOptions& options) {
+  return s.residual <= residual_bound(options.tolerance);
 }
 
 }  // namespace
@@ -870,7 +876,8 @@ const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
   solution_.iterations = iterations;
   solution_.coarse_iterations = coarse_iterations;
   solution_.change = change;
-  solution_.converged = converged;
+  solution_.converged = converged && residual_settled(solution_, options_);
+  converged = solution_.converged;
   solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!converged) warn_not_converged("P/A0", mean_pressure, solution_, options_);
   return solution_;
@@ -903,9 +910,9 @@ const ContactSolution& PolonskyKeer::solve_for_separation(Real separation) {
   solution_.mean_pressure = engine_->write(solution_);
   solution_.iterations = outcome.iterations;
   solution_.change = outcome.change;
-  solution_.converged = outcome.converged;
+  solution_.converged = outcome.converged && residual_settled(solution_, options_);
   solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!outcome.converged) warn_not_converged("separation [m]", separation, solution_, options_);
+  if (!solution_.converged) warn_not_converged("separation [m]", separation, solution_, options_);
   return solution_;
 }
 

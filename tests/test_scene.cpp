@@ -646,8 +646,12 @@ std::vector<InvalidCase> invalid_cases() {
        "loads.range.spacing", "unknown spacing", "\"log\", \"linear\""},
       {"RangeMissingTo", loads("range = { from = 1e-4, count = 3 }\n"), "loads.range.to",
        "missing required key", ""},
-      {"ToleranceZero", bem("tolerance = 0"), "methods.bem.tolerance", "out of range", "(0, 1)"},
-      {"ToleranceOne", bem("tolerance = 1"), "methods.bem.tolerance", "out of range", "(0, 1)"},
+      // Tolerances outside [1e-13, 1e-2] mean nothing (app/methods/bem_method.cpp): 0, the 1e-20 double
+      // cannot resolve, and 0.5 or 1, which stop far from the solution.
+      {"ToleranceZero", bem("tolerance = 0"), "methods.bem.tolerance", "out of range", "[1e-13, 0.01]"},
+      {"ToleranceTiny", bem("tolerance = 1e-20"), "methods.bem.tolerance", "out of range", "[1e-13, 0.01]"},
+      {"ToleranceHalf", bem("tolerance = 0.5"), "methods.bem.tolerance", "out of range", "[1e-13, 0.01]"},
+      {"ToleranceOne", bem("tolerance = 1"), "methods.bem.tolerance", "out of range", "[1e-13, 0.01]"},
       {"MaxIterationsZero", bem("max_iterations = 0"), "methods.bem.max_iterations", "out of range", "[1, "},
       {"HardnessZero", bem("hardness = 0"), "methods.bem.hardness", "out of range", "> 0"},
       {"BemUnknownSolver", bem("solver = \"multigrid\""), "methods.bem.solver",

@@ -29,7 +29,9 @@ MethodCurve MethodCurve::from(const LoadAreaCurve& curve, const std::vector<Real
           .separation = per_load(curve.separation),
           .spots = per_load(curve.spots),
           .parameters = curve.parameters,
-          .columns = {}};
+          .columns = {},
+          .unconverged = {},
+          .accepts_unconverged = false};
 }
 
 }  // namespace contactbench

@@ -1,0 +1,39 @@
+#include "contactbench/app/unconverged.hpp"
+
+#include "contactbench/app/json_writer.hpp"
+
+namespace contactbench {
+
+namespace {
+
+std::string loads_of(const SceneReport& report, const MethodResult& method) {
+  std::string text;
+  for (const std::size_t k : method.curve.unconverged)
+    text += (text.empty() ? "" : ", ") + json_number(report.loads()[k]);
+  return text;
+}
+
+}  // namespace
+
+std::string describe_unconverged(const SceneReport& report) {
+  std::string text;
+  for (const MethodResult& m : report.methods)
+    if (!m.curve.unconverged.empty())
+      text += (text.empty() ? "" : "; ") + m.label + " at P/(E* A0) = " + loads_of(report, m) +
+              (m.curve.accepts_unconverged ? " (accepted: allow_unconverged = true)" : "");
+  return text;
+}
+
+void throw_if_unconverged(const SceneReport& report) {
+  std::string refused;
+  for (const MethodResult& m : report.methods)
+    if (!m.curve.unconverged.empty() && !m.curve.accepts_unconverged)
+      refused += (refused.empty() ? "" : "; ") + m.label + " at P/(E* A0) = " + loads_of(report, m);
+  if (refused.empty()) return;
+  throw UnconvergedError("did not converge: " + refused +
+                         ". The results are written and marked 'not converged'; raise max_iterations "
+                         "(--max-iterations), or accept them with allow_unconverged = true in the method "
+                         "(--allow-unconverged)");
+}
+
+}  // namespace contactbench
