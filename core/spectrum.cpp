@@ -1,5 +1,8 @@
 #include "contactbench/core/spectrum.hpp"
 
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/scales.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -103,6 +106,16 @@ SpectralMoments spectral_moments(const FourierCoefficients& c) {
 }
 
 SpectralMoments spectral_moments(const Surface& surface, int threads) {
+  // The moments are sums of squared heights (and slopes): refused, not reported as infinity or zero, where
+  // those squares leave double precision (core/scales.hpp).
+  const HeightMap& h = surface.heights();
+  const Real range = h.size() ? h.maxCoeff() - h.minCoeff() : 0;
+  if (!within_magnitudes(range))
+    throw Error("spectral moments: " + magnitude_problem("the heights' range", range, "m") +
+                ": rescale the heights (e.g. to micrometres given in metres)");
+  for (const Real size : {surface.grid().lx, surface.grid().ly})
+    if (!within_magnitudes(size))
+      throw Error("spectral moments: " + magnitude_problem("the lateral size", size, "m"));
   return spectral_moments(fourier_coefficients(surface, threads));
 }
 

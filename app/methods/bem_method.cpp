@@ -14,10 +14,17 @@
 #include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/atomic_file.hpp"
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/scales.hpp"
 
 namespace contactbench {
 
 namespace {
+
+// Loads above this many times (height range / pixel) are refused as full contact whose pressure variation
+// double precision cannot resolve beside the mean (check_magnitudes): the variation is about E* (height range
+// / pixel), the mean load x E*, so at this ratio it is still resolved to 1e6 x 2.2e-16 = 2e-10 of itself,
+// inside the residual the default tolerance accepts (100 x 1e-8); far beyond it, it is lost.
+constexpr Real kFullContactResolution = 1e6;
 
 // The tolerances a scene or the command line may ask for (read() says why).
 constexpr Real kSmallestTolerance = 1e-13;  // double precision
@@ -119,6 +126,7 @@ class BemMethod final : public Method {
       }
     }
     check_refine_key(check, solve_.refine);
+    check_magnitudes(check);
     if (solve_.extrapolate) {
       const Grid& grid = check.surface.grid();
       const Index nx = solve_.refine > 0 ? solve_.refine : grid.nx;
@@ -197,6 +205,41 @@ class BemMethod final : public Method {
                           " nodes, error estimate |extrapolated - corrected area of the finer grid| "
                           "(docs/theory.md section 9); spots and separation of the finer grid";
     return curve;
+  }
+
+  // The solver sums squares of heights, gaps and pressures (core/scales.hpp): each scale of the problem must
+  // keep them inside double precision, or the solve ends "converged" on nonsense (heights of 1e290 m: the
+  // whole grid in contact after one iteration). And far beyond full contact the pressure is its mean plus a
+  // variation of order E* (height range / pixel) that double precision cannot resolve beside that mean: the
+  // answer (area 1) is known but no solve reaches the tolerance, so it is refused with the reason.
+  void check_magnitudes(const MethodCheck& check) const {
+    const HeightMap& h = check.surface.heights();
+    const Real range = h.size() ? h.maxCoeff() - h.minCoeff() : 0;
+    const Grid& grid = check.surface.grid();
+    const Real estar = check.scene.material.estar;
+    const std::string accepted = "quantities within 1e-100 to 1e100 of their SI unit";
+    if (!within_magnitudes(range))
+      check.problem("", magnitude_problem("the surface's height range", range, "m"), accepted);
+    for (const Real size : {grid.lx, grid.ly})
+      if (!within_magnitudes(size))
+        check.problem("", magnitude_problem("the surface's lateral size", size, "m"), accepted);
+    if (!within_magnitudes(estar)) check.problem("", magnitude_problem("E*", estar, "Pa"), accepted);
+    const Real pixel = std::min(grid.lx / static_cast<Real>(grid.nx), grid.ly / static_cast<Real>(grid.ny));
+    const Real slope_scale = range / pixel;  // the height range over one pixel
+    for (const Real load : check.scene.loads) {
+      if (!within_magnitudes(load * estar))
+        check.problem("", magnitude_problem("the mean pressure P/A0 = load E*", load * estar, "Pa"),
+                      accepted);
+      else if (range > 0 && load > kFullContactResolution * slope_scale)
+        check.problem("",
+                      "the load P/(E* A0) = " + exact_number(load) + " is more than " +
+                          exact_number(kFullContactResolution) +
+                          " times the surface's height range per pixel (" + exact_number(slope_scale) +
+                          "): full contact, where the pressure's variation about its mean is below double "
+                          "precision's resolution and no solve can converge",
+                      "loads up to " + exact_number(kFullContactResolution * slope_scale) +
+                          " for this surface (the contact area is 1 above that)");
+    }
   }
 
   // docs/theory.md section 9: the node count overestimates the area by a band along the contact edges, a
