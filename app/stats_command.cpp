@@ -38,6 +38,7 @@ JsonObject conventions(Window window) {
 void run_stats(const StatsOptions& o) {
   const TopographyReading reading = o.topography.read_with_report();
   const Surface& surface = reading.surface;
+  check_summable_heights(surface);  // moments of 1e300 m heights would be printed as null
   const FourierCoefficients coefficients = fourier_coefficients(surface, o.threads);
   const SpectralMoments m = spectral_moments(coefficients);
   const Grid& g = surface.grid();

@@ -105,9 +105,7 @@ SpectralMoments spectral_moments(const FourierCoefficients& c) {
   return m;
 }
 
-SpectralMoments spectral_moments(const Surface& surface, int threads) {
-  // The moments are sums of squared heights (and slopes): refused, not reported as infinity or zero, where
-  // those squares leave double precision (core/scales.hpp).
+void check_summable_heights(const Surface& surface) {
   const HeightMap& h = surface.heights();
   const Real range = h.size() ? h.maxCoeff() - h.minCoeff() : 0;
   if (!within_magnitudes(range))
@@ -116,6 +114,10 @@ SpectralMoments spectral_moments(const Surface& surface, int threads) {
   for (const Real size : {surface.grid().lx, surface.grid().ly})
     if (!within_magnitudes(size))
       throw Error("spectral moments: " + magnitude_problem("the lateral size", size, "m"));
+}
+
+SpectralMoments spectral_moments(const Surface& surface, int threads) {
+  check_summable_heights(surface);
   return spectral_moments(fourier_coefficients(surface, threads));
 }
 

@@ -74,6 +74,10 @@ struct SpectralMoments {
 };
 
 SpectralMoments spectral_moments(const FourierCoefficients& coefficients);
+// The moments are sums of squared heights and slopes: a height range or lateral size outside 1e-100 to
+// 1e100 m would overflow them or make them vanish (core/scales.hpp). Throws Error naming the quantity.
+// spectral_moments(Surface) checks it first; callers that take the coefficients themselves call it.
+void check_summable_heights(const Surface& surface);
 SpectralMoments spectral_moments(const Surface& surface, int threads = 1);  // default_window
 
 // 2D PSD C(q_k) on the half lattice [m^4] (Persson's convention, see the file comment).
