@@ -4,6 +4,7 @@
 // representable ones give the right answer, and a file name cannot break a CSV header.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -175,6 +176,25 @@ TEST_F(HostileInput, MagnitudesOutOfDoubleRangeAreRefusedAndLargeOnesAreRight) {
   EXPECT_EQ(tall[0].at("spots"), "1");
   EXPECT_DOUBLE_EQ(std::stod(tall[0].at("area_fraction_nodes")), 1.0 / 4096);
   EXPECT_EQ(tall[0].at("converged"), "1");
+}
+
+// A BEM request larger than the machine: refused before any work, with its estimate, in well under a second
+// (the solve it would start grows for minutes until the kernel kills it).
+TEST_F(HostileInput, AnOversizedBemIsRefusedBeforeAnyWork) {
+  const fs::path scene = folder_ / "big.toml";
+  std::ofstream(scene) << "name = \"big\"\n[surface]\nfile = " << surface_file("s.txt")
+                       << "\n[material]\nE = 100e9\nnu = 0.3\n[loads]\nvalues = [1e-3]\n"
+                       << "[methods.bem]\nrefine = 32768\nextrapolate = true\n";
+  const auto start = std::chrono::steady_clock::now();
+  const auto refused = run("run " + scene.string() + " --out " + (folder_ / "out").string() + " --no-plots");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_NE(refused.err.find("methods.bem.refine: the BEM solve on 65536 x 65536 points needs about"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("GiB available"), std::string::npos) << refused.err;
+  EXPECT_LT(seconds, 1.0);
+  EXPECT_FALSE(fs::exists(folder_ / "out"));
 }
 
 TEST_F(HostileInput, AFileNameWithANewlineCannotBreakTheCsvHeader) {
