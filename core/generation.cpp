@@ -83,7 +83,16 @@ SelfAffineModes::SelfAffineModes(const Grid& grid, const SelfAffinePsd& psd)
     for (Index col = 0; col < lattice.cols(); ++col)
       shape_map(row, col) = shape(row, col);
   const Real lattice_sum = (shape_map.rowwise() * lattice.multiplicity_row()).sum();
-  if (!(lattice_sum > 0)) throw Error("the PSD leaves no lattice mode with height: widen qs or the grid");
+  if (!(lattice_sum > 0)) {
+    // Every mode's power underflowed: the lattice starts so far above the roll-off that (q/qr)^(-2(1+H))
+    // is below double precision there (a lateral size of 1e-300 m with qr = 1e5 1/m, say).
+    const Real lowest = std::min(grid.dqx(), grid.dqy());
+    throw Error("the PSD leaves no lattice mode with height: the lattice's lowest wavevector 2 pi/L = " +
+                str(lowest) + " 1/m (lateral size " + str(std::max(grid.lx, grid.ly)) + " m) is " +
+                str(lowest / psd.qr) + " times the roll-off qr = " + str(psd.qr) +
+                " 1/m, where the spectrum's power (q/qr)^(-2(1+H)) is below double precision's range (qs = " +
+                str(qs_) + " 1/m): choose qr near or above 2 pi/L, or a larger lateral size");
+  }
   // |hhat_k|^2 = C_k dqx dqy with sum_k C_k dqx dqy = sigma^2 (normalised on the lattice).
   scale_ = psd.sigma / std::sqrt(lattice_sum);
 }

@@ -150,6 +150,22 @@ TEST(Anisotropy, WorksOnNonSquareGridsWithRectangularPixels) {
   EXPECT_NEAR(m.m2x / m.m2y, 3.0, tolerance::anisotropy_ratio * 3.0);
 }
 
+// A lateral size of 1e-300 m puts the whole lattice 1e300 times above qr = 1e5 1/m: every mode's power
+// underflows. The message names the lattice's lowest wavevector, qr and the way out, not only "no mode".
+TEST(Generation, ALatticeFarAboveTheRollOffNamesTheConflict) {
+  const Grid grid{.nx = 64, .ny = 64, .lx = 1e-300, .ly = 1e-300, .periodic = true};
+  const SelfAffinePsd psd{.sigma = 1e-6, .hurst = 0.8, .qr = 1e5, .qs = std::nullopt};
+  try {
+    generate_surface(grid, psd, 1);
+    ADD_FAILURE() << "generated a surface whose every mode underflows";
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    for (const char* part : {"lowest wavevector 2 pi/L = 6.28319e+300 1/m", "qr = 100000 1/m",
+                             "below double precision", "choose qr near or above 2 pi/L"})
+      EXPECT_NE(message.find(part), std::string::npos) << message;
+  }
+}
+
 TEST(Generation, RefusesParametersOutsideTheirRange) {
   const Grid grid = paper::grid();
   auto expect_refused = [&](SelfAffinePsd psd, const char* word) {
