@@ -99,7 +99,8 @@ void solve_loads(const BemStage& stage, const Surface& solved, Real estar,
                  const std::vector<Real>& mean_pressures, const std::set<int>& connectivities,
                  const StageContext& context, const std::string& fields, Clock::time_point start,
                  std::vector<ContactSolution>& solutions,
-                 std::map<int, std::vector<ContactStatistics>>& statistics, std::size_t& bytes_per_rank) {
+                 std::map<int, std::vector<ContactStatistics>>& statistics,
+                 [[maybe_unused]] std::size_t& bytes_per_rank) {
   const RunObserver quiet;
   const RunObserver& observer = context.observer ? *context.observer : quiet;
   const std::string name = stage.name();
