@@ -9,6 +9,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "contactbench/core/formats/binary_view.hpp"
@@ -92,8 +93,8 @@ RawTopography read_ascii(const fs::path& path, std::string_view bytes) {
   };
   const Real points = number("NumPoints");
   const Real profiles = number("NumProfiles");
-  if (points != std::floor(points) || profiles != std::floor(profiles))
-    throw InputError(path, 0, "SDF NumPoints and NumProfiles must be whole numbers");
+  if (points != std::floor(points) || profiles != std::floor(profiles) || !(points >= 1 && profiles >= 1))
+    throw InputError(path, 0, "SDF NumPoints and NumProfiles must be whole numbers >= 1");
   const auto nx = static_cast<long long>(std::min(points, 1e18));
   const auto ny = static_cast<long long>(std::min(profiles, 1e18));
   grid_bytes(path, nx, ny, 1, "SDF header");
@@ -102,11 +103,17 @@ RawTopography read_ascii(const fs::path& path, std::string_view bytes) {
   const Real dz = number("Zscale");
   if (!(std::isfinite(dz) && dz != 0))
     throw InputError(path, 0, "SDF Zscale must be a finite non-zero number");
-  const int type = static_cast<int>(number("DataType"));
-  if (!sdf_item_size(type))
-    throw InputError(
-        path, 0,
-        "unknown SDF DataType " + std::to_string(type) + "; known: 3, 4, 5, 6 (integers), 7, 8 (floats)");
+  // Checked as a number before it becomes an int: a DataType of 5e10 (found by fuzzing) does not fit one.
+  const Real data_type = number("DataType");
+  const int type = data_type >= 0 && data_type <= 255 && data_type == std::floor(data_type)
+                       ? static_cast<int>(data_type)
+                       : -1;
+  if (!sdf_item_size(type)) {
+    std::ostringstream shown;
+    shown << data_type;
+    throw InputError(path, 0,
+                     "unknown SDF DataType " + shown.str() + "; known: 3, 4, 5, 6 (integers), 7, 8 (floats)");
+  }
 
   // Values from after the header's '*' up to the next '*' (or the end).
   std::size_t data_start = bytes.find('\n', header_end);
