@@ -3,8 +3,8 @@
 # layering, fuzzing regressions). The README's test command; .ci/run calls it verbatim.
 # Usage: scripts/test.sh [preset: release|debug|asan]
 # With CB_CI=1 (set by .ci/run) it also fuzzes each parser for a few seconds (preset fuzz, scripts/fuzz.sh); with
-# CB_CI_ASAN=1 as well, it builds and runs the suite under AddressSanitizer + UBSan (preset asan; about 10 to 15
-# minutes on two quiet cores, so not yet on CI's path: `scripts/test.sh asan` runs it by hand).
+# CB_CI_ASAN=1 as well (.ci/run sets it), it builds and runs the suite under AddressSanitizer + UBSan (preset
+# asan). `scripts/test.sh asan` runs it by hand.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 preset=${1:-release}
