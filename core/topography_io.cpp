@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <optional>
 #include <span>
@@ -97,9 +98,46 @@ bool equals_ignoring_case(std::string_view a, std::string_view b) {
   return true;
 }
 
+// A token as a message shows it: control bytes and bytes that are not UTF-8 as \xNN (a NUL would end the
+// message, a raw binary byte garble the terminal), cut after max_quoted_length characters.
 std::string quoted(std::string_view token) {
-  if (token.size() <= max_quoted_length) return "'" + std::string(token) + "'";
-  return "'" + std::string(token.substr(0, max_quoted_length)) + "...'";
+  const bool cut = token.size() > max_quoted_length;
+  if (cut) token = token.substr(0, max_quoted_length);
+  std::string text = "'";
+  for (std::size_t i = 0; i < token.size(); ++i) {
+    const auto byte = static_cast<unsigned char>(token[i]);
+    // A UTF-8 sequence: its lead byte says how many continuation bytes (10xxxxxx) follow.
+    const std::size_t length = byte >= 0xf0 && byte < 0xf8 ? 4 : byte >= 0xe0 ? 3 : byte >= 0xc2 ? 2 : 1;
+    bool sequence = byte >= 0xc2 && byte < 0xf8 && i + length <= token.size();
+    for (std::size_t k = 1; sequence && k < length; ++k)
+      sequence = (static_cast<unsigned char>(token[i + k]) & 0xc0) == 0x80;
+    if (sequence) {
+      text.append(token.substr(i, length));
+      i += length - 1;
+    } else if (byte < 0x20 || byte >= 0x7f) {
+      char escaped[5];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+      text += escaped;
+    } else {
+      text += static_cast<char>(byte);
+    }
+  }
+  return text + (cut ? "...'" : "'");
+}
+
+// Text formats only: UTF-16 text and binary bytes are named as such before any parsing (their first token
+// would otherwise be reported as "not a number", or as a matrix without a size).
+void check_is_text(const fs::path& path, std::string_view bytes) {
+  if (bytes.starts_with("\xff\xfe") || bytes.starts_with("\xfe\xff"))
+    throw InputError(path, 0,
+                     "is UTF-16 text (it starts with a UTF-16 byte order mark): save it as UTF-8 or ASCII "
+                     "text, or give a format contactbench reads (docs/formats.md)");
+  const std::size_t nul = bytes.substr(0, 65536).find('\0');
+  if (nul != std::string_view::npos)
+    throw InputError(path, 0,
+                     "holds binary data (a NUL byte at offset " + std::to_string(nul) +
+                         ") in none of the binary formats contactbench reads (docs/formats.md lists them); a "
+                         "text topography holds numbers as text");
 }
 
 // Shortest decimal that reads back to the same double.
@@ -718,6 +756,7 @@ TopographyReading read_topography_reading(const std::filesystem::path& path,
   if (const BinaryFormat* binary = binary_format_of(path, content))
     return read_binary(path, content, *binary, options);
 
+  check_is_text(path, content);
   const std::vector<Line> lines = non_blank_lines(content);
   const TopographyFormat format = format_of(path, lines);
   // Text formats hold one channel, called "height" (index 0).

@@ -197,6 +197,32 @@ TEST_F(HostileInput, AnOversizedBemIsRefusedBeforeAnyWork) {
   EXPECT_FALSE(fs::exists(folder_ / "out"));
 }
 
+// Not text: said so, not "not a number" with the raw bytes (a NUL used to end the message mid-quote).
+TEST_F(HostileInput, BinaryAndUtf16FilesAreNamedAsSuchAndBadBytesAreEscaped) {
+  auto write = [&](const char* name, const std::string& bytes) {
+    std::ofstream(folder_ / name, std::ios::binary) << bytes;
+    return (folder_ / name).string();
+  };
+  const auto binary = run("stats " +
+                          write("b.txt", std::string("h\0\x01\x02"
+                                                     "ello",
+                                                     8)) +
+                          " --size 1e-4");
+  EXPECT_EQ(binary.status, 1);
+  EXPECT_NE(binary.err.find("holds binary data (a NUL byte at offset 1)"), std::string::npos) << binary.err;
+  const auto utf16 = run("stats " +
+                         write("u.txt", std::string("\xff\xfe"
+                                                    "1\0 \0"
+                                                    "2\0",
+                                                    8)) +
+                         " --size 1e-4");
+  EXPECT_EQ(utf16.status, 1);
+  EXPECT_NE(utf16.err.find("is UTF-16 text"), std::string::npos) << utf16.err;
+  const auto control = run("stats " + write("c.txt", "1 2 3\n4 x\x01y 6\n") + " --size 1e-4");
+  EXPECT_EQ(control.status, 1);
+  EXPECT_NE(control.err.find("c.txt:2: 'x\\x01y' is not a number"), std::string::npos) << control.err;
+}
+
 TEST_F(HostileInput, AFileNameWithANewlineCannotBreakTheCsvHeader) {
   const fs::path odd = folder_ / "new\nline.txt";
   write_surface(odd, small_surface());
