@@ -4,7 +4,7 @@
 # Usage: scripts/test.sh [preset: release|debug|asan]
 # With CB_CI=1 (set by .ci/run) it also fuzzes each parser for a few seconds (preset fuzz, scripts/fuzz.sh); with
 # CB_CI_ASAN=1 as well (.ci/run sets it), it builds and runs the suite under AddressSanitizer + UBSan (preset
-# asan; .ci/run from a fresh clone took 16 minutes on 2 cores with both suites). `scripts/test.sh asan` runs it
+# asan; .ci/run from a fresh clone took 11 minutes on 2 quiet cores with both suites). `scripts/test.sh asan` runs it
 # by hand.
 set -euo pipefail
 cd "$(dirname "$0")/.."
