@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <exception>
 #include <iostream>
-#include <optional>
 
 #include <mpi.h>
 
@@ -78,8 +77,7 @@ Topology topology_of(int connectivity, bool periodic) {
   return Topology::for_surface(connectivity == 8 ? Connectivity::eight : Connectivity::four, periodic);
 }
 
-// ---- The BEM job, run by every rank (rank 0 with the surface and the writer of fields)
-// ---------------------
+// ---- The BEM job, run by every rank (rank 0 with the surface and the writer of fields) ----------------
 
 struct BemRequest {
   Grid grid;

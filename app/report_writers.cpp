@@ -147,7 +147,7 @@ void write_summary_json(std::ostream& out, const SceneReport& report, const Comp
     // Where the method's iteration did not converge (app/unconverged.hpp): those loads' answers, and every
     // error against them when the method is the reference, are not to be trusted.
     std::vector<double> unconverged;
-    for (const std::size_t k : r.curve.unconverged)
+    for (const std::size_t k : unconverged_loads(r.curve))
       unconverged.push_back(report.loads()[k]);
     o.add("unconverged_loads", std::span<const double>(unconverged));
     methods.push_back(std::move(o));
@@ -198,12 +198,15 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
   for (std::size_t m = 0; m < report.methods.size(); ++m)
     out << "---:|";
   out << '\n';
+  std::vector<std::vector<std::size_t>> unconverged;  // per method
+  for (const MethodResult& r : report.methods)
+    unconverged.push_back(unconverged_loads(r.curve));
   for (std::size_t k = 0; k < report.loads().size(); ++k) {
     out << "| " << table_number(report.loads()[k], "%.3g") << " |";
     for (std::size_t m = 0; m < report.methods.size(); ++m) {
       const MethodResult& r = report.methods[m];
       out << ' ' << table_number(r.curve.area_fraction[k]);
-      if (std::find(r.curve.unconverged.begin(), r.curve.unconverged.end(), k) != r.curve.unconverged.end())
+      if (std::find(unconverged[m].begin(), unconverged[m].end(), k) != unconverged[m].end())
         out << " (not converged)";
       if (r.label == comparison.reference && !comparison.reference_uncertainty.empty())
         out << " (± " << percent(comparison.reference_uncertainty[k], false) << ")";

@@ -8,17 +8,26 @@ namespace {
 
 std::string loads_of(const SceneReport& report, const MethodResult& method) {
   std::string text;
-  for (const std::size_t k : method.curve.unconverged)
+  for (const std::size_t k : unconverged_loads(method.curve))
     text += (text.empty() ? "" : ", ") + json_number(report.loads()[k]);
   return text;
 }
 
 }  // namespace
 
+std::vector<std::size_t> unconverged_loads(const MethodCurve& curve) {
+  std::vector<std::size_t> loads;
+  for (const auto& [name, values] : curve.columns)
+    if (name == "converged")
+      for (std::size_t k = 0; k < values.size(); ++k)
+        if (values[k] == 0) loads.push_back(k);
+  return loads;
+}
+
 std::string describe_unconverged(const SceneReport& report) {
   std::string text;
   for (const MethodResult& m : report.methods)
-    if (!m.curve.unconverged.empty())
+    if (!unconverged_loads(m.curve).empty())
       text += (text.empty() ? "" : "; ") + m.label + " at P/(E* A0) = " + loads_of(report, m) +
               (m.curve.accepts_unconverged ? " (accepted: allow_unconverged = true)" : "");
   return text;
@@ -27,7 +36,7 @@ std::string describe_unconverged(const SceneReport& report) {
 void throw_if_unconverged(const SceneReport& report) {
   std::string refused;
   for (const MethodResult& m : report.methods)
-    if (!m.curve.unconverged.empty() && !m.curve.accepts_unconverged)
+    if (!m.curve.accepts_unconverged && !unconverged_loads(m.curve).empty())
       refused += (refused.empty() ? "" : "; ") + m.label + " at P/(E* A0) = " + loads_of(report, m);
   if (refused.empty()) return;
   throw UnconvergedError("did not converge: " + refused +

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "contactbench/app/scene_run.hpp"
 #include "contactbench/core/error.hpp"
@@ -18,6 +19,9 @@ class UnconvergedError : public Error {
  public:
   using Error::Error;
 };
+
+// The loads (indices) where a method's `converged` column is 0; none for methods without that column.
+std::vector<std::size_t> unconverged_loads(const MethodCurve& curve);
 
 // "bem at P/(E* A0) = 0.001, 0.01 (did not converge)": the methods' unconverged loads, those accepted too;
 // empty when every load converged.

@@ -189,10 +189,6 @@ class BemMethod final : public Method {
     if (solve_.hardness) curve.columns.emplace_back("plastic_fraction", plastic);  // nodes at p = H / all
     if (solve_.extrapolate) extrapolate(products, curve);
     if (nodes_) curve.area_fraction = nodes;
-    for (const auto& [name, values] : curve.columns)
-      if (name == "converged")
-        for (std::size_t k = 0; k < values.size(); ++k)
-          if (values[k] == 0) curve.unconverged.push_back(k);
     curve.accepts_unconverged = allow_unconverged_;
     BemStage stage = solve_;
     stage.periodic = products.periodic;
@@ -247,11 +243,8 @@ class BemMethod final : public Method {
     const Grid& grid = check.surface.grid();
     const Real estar = check.scene.material.estar;
     const std::string accepted = "quantities within 1e-100 to 1e100 of their SI unit";
-    if (!within_magnitudes(range))
-      check.problem("", magnitude_problem("the surface's height range", range, "m"), accepted);
-    for (const Real size : {grid.lx, grid.ly})
-      if (!within_magnitudes(size))
-        check.problem("", magnitude_problem("the surface's lateral size", size, "m"), accepted);
+    // The heights' range and the lateral sizes were checked with the moments, which every run computes before
+    // any preflight (check_summable_heights, core/spectrum.hpp); E* and the pressures are the BEM's own.
     if (!within_magnitudes(estar)) check.problem("", magnitude_problem("E*", estar, "Pa"), accepted);
     const Real pixel = std::min(grid.lx / static_cast<Real>(grid.nx), grid.ly / static_cast<Real>(grid.ny));
     const Real slope_scale = range / pixel;  // the height range over one pixel

@@ -30,7 +30,6 @@ MethodCurve MethodCurve::from(const LoadAreaCurve& curve, const std::vector<Real
           .spots = per_load(curve.spots),
           .parameters = curve.parameters,
           .columns = {},
-          .unconverged = {},
           .accepts_unconverged = false};
 }
 

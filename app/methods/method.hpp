@@ -73,9 +73,8 @@ struct MethodCurve {
   std::string parameters;           // the method as run, for the report
   // The method's own columns beside those above (e.g. the BEM's iterations), one value per load.
   std::vector<std::pair<std::string, std::vector<Real>>> columns;
-  // Loads (indices) where the method's iteration did not converge (the BEM's converged = 0); the tables mark
-  // them, and a run with any exits non-zero unless the method accepts them (its allow_unconverged = true).
-  std::vector<std::size_t> unconverged;
+  // Whether loads whose `converged` column is 0 are accepted (the BEM's allow_unconverged = true): the tables
+  // mark them either way, and a run with any exits non-zero unless they are (app/unconverged.hpp).
   bool accepts_unconverged = false;
 
   // From a library's curve: checks that it answers at `loads` (Error otherwise) and drops its copy of them.
