@@ -165,7 +165,8 @@ void add_bem_command(CLI::App& parent) {
     known += (known.empty() ? "" : ", ") + name;
   command->add_option("--solver", options->solver,
                       "the BEM iteration: " + known + " (default " +
-                          std::string(solver_name(kDefaultSolver)) +
+                          std::string(solver_name(kDefaultSolver)) + "; as several MPI ranks " +
+                          std::string(solver_name(kDefaultDistributedSolver)) +
                           "; docs/solvers.md); recorded in the CSV's header");
   command->add_flag("--allow-unconverged", options->allow_unconverged,
                     "exit 0 even when a load did not converge (its row still says converged = 0); without "

@@ -41,6 +41,13 @@ Connectivity connectivity_of(int neighbours) {
 
 }  // namespace
 
+SolverKind default_bem_solver() {
+#if CONTACTBENCH_WITH_MPI
+  if (stages_are_distributed()) return kDefaultDistributedSolver;
+#endif
+  return kDefaultSolver;
+}
+
 std::string field_path(const std::string& prefix, std::size_t k, const char* what) {
   return prefix + "_load" + std::to_string(k) + "_" + what + ".txt";
 }

@@ -21,6 +21,10 @@
 
 namespace contactbench {
 
+// The BEM solver of a method that names none: kDefaultSolver, or kDefaultDistributedSolver when the stages
+// run on several MPI ranks (app/distributed_stages.hpp), where the default has no distributed version.
+SolverKind default_bem_solver();
+
 struct SweepStage {
   Topology topology;
   SweepLevels levels;

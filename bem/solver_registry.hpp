@@ -22,7 +22,9 @@ enum class SolverKind {
 };
 
 // The solver a caller gets when it names none: the fastest that passes every validation (docs/solvers.md).
-inline constexpr SolverKind kDefaultSolver = SolverKind::preconditioned_cg;
+inline constexpr SolverKind kDefaultSolver = SolverKind::active_set;
+// The default of a solve on several MPI ranks, where active_set has no distributed version (docs/mpi.md).
+inline constexpr SolverKind kDefaultDistributedSolver = SolverKind::preconditioned_cg;
 
 // The known names, in the order of SolverKind.
 const std::vector<std::string>& solver_names();

@@ -52,7 +52,8 @@ class BemMethod final : public Method {
     s.reject_unknown({"method", "refine", "tolerance", "max_iterations", "periodic", "hardness", "precision",
                       "fields", "connectivity", "solver", "extrapolate", "area", "allow_unconverged"});
     std::vector<std::string_view> solvers(solver_names().begin(), solver_names().end());
-    if (const auto name = s.choice("solver", solvers)) solve_.solver = solver_kind(*name);
+    solve_.solver =
+        solver_kind(s.choice("solver", solvers).value_or(std::string(solver_name(default_bem_solver()))));
     solve_.refine = read_refine_key(s, context, solve_.refine);
     const auto precision = s.choice("precision", {"double", "single"});
     solve_.single_precision = precision == "single";

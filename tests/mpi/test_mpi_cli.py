@@ -106,6 +106,11 @@ with tempfile.TemporaryDirectory() as work:
             summary = json.load(f)
         if summary.get("distributed", {}).get("ranks") != ranks or not summary["distributed"]["bem_bytes_per_rank"] > 0:
             failures.append(f"summary.json: distributed = {summary.get('distributed')}")
+        # The scene names no solver: as several ranks the default is the distributed one, and it says so.
+        methods = summary["scene_as_understood"]["methods"]
+        solvers = {m.get("solver") for m in methods.values() if m.get("method") == "bem"}
+        if solvers != {"preconditioned_cg"}:
+            failures.append(f"summary.json: the default solver on {ranks} ranks recorded as {solvers}")
         if not summary["provenance"]["command"].startswith(f"mpiexec -np {ranks} "):
             failures.append(f"summary.json: the command {summary['provenance']['command']} does not say mpiexec")
     except (OSError, KeyError, ValueError) as e:
