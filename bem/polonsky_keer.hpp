@@ -21,7 +21,8 @@
 //   set solved by a conjugate gradient with the same filter, the set updated from p and the gap, from a
 //   nested coarse start; a count that barely grows with the grid. It stops on its own criterion (the set
 //   settled, the largest gap on it at most the tolerance times the approach max h - d, the last CG step's
-//   relative change at most the tolerance; bem/active_set.hpp).
+//   relative change at most the tolerance; bem/active_set.hpp). The default (kDefaultSolver): the fastest
+//   of the three along the load curves scenes run, from 256^2 to 1024^2 (docs/solvers.md).
 //
 // preconditioned_cg and active_set apply to load-controlled elastic solves; separation control and the
 // hardness cap (met through separation control) iterate as polonsky_keer whichever solver is chosen
@@ -102,8 +103,9 @@ struct PolonskyKeerOptions {
   // Where a warning goes (a solve that reached the iteration cap): the application's sink; none, silent (the
   // solution still says converged = false). The library never writes to a stream itself.
   std::function<void(const std::string&)> warning = nullptr;
-  // Which iteration (bem/solver_registry.hpp, docs/solvers.md): Polonsky & Keer's, or the same with the
-  // Fourier-preconditioned direction. Same problem, same options, same meaning of converged.
+  // Which iteration (bem/solver_registry.hpp, docs/solvers.md): Polonsky & Keer's, the same with the
+  // Fourier-preconditioned direction, or the active-set method. Same problem, same options, converged means
+  // the residual check passed for each.
   SolverKind solver = kDefaultSolver;
   // Where solve() starts a load after a previous one (load stepping, loads in increasing order):
   // scaled, the last solution scaled to the new load; extrapolated, the linear extrapolation of the last two
