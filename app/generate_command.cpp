@@ -49,7 +49,7 @@ void run_generate(const GenerateOptions& o) {
   const Index nx = o.refine.value_or(grid.nx);
   const Index ny = o.refine_y.value_or(o.refine.value_or(grid.ny));
   const Surface surface = synthesize(grid, hhat, nx, ny, o.threads);
-  write_surface(o.out, surface);
+  write_topography(o.out, surface);  // the extension picks the format, as convert's OUT
   std::cerr << "contactbench: wrote " << o.out << " (" << surface.nx() << " x " << surface.ny() << " points, "
             << grid.lx << " x " << grid.ly << " m, seed " << o.seed << ", Sq " << surface.rms_height()
             << " m)\n";
@@ -82,7 +82,12 @@ void add_generate_command(CLI::App& parent) {
   command->add_option("--refine-y", options->refine_y, "points along y when refining (default: --refine)")
       ->check(CLI::Range(1, 1 << 16));
   command->add_option("--anisotropy", options->psd.anisotropy, "requested m2x/m2y (default 1: isotropic)");
-  command->add_option("--out", options->out, "output file (the project's lossless text format)")->required();
+  command
+      ->add_option("--out", options->out,
+                   "output file; its extension picks the format: .x3p (ISO 25178-72, float64), .npy "
+                   "(float64; carries no lateral size, give --size when reading it) or, for any other, "
+                   "the project's lossless text format")
+      ->required();
   add_threads_option(*command, options->threads);
   command->callback([options] { run_generate(*options); });
 }

@@ -103,6 +103,31 @@ TEST_F(Cli, GeneratesSurfaceAAndItsStatsMatchTable2) {
   EXPECT_NEAR(json_value(stats.out, "m4y"), 0.0446e12, 0.01 * 0.0446e12);
 }
 
+TEST_F(Cli, GenerateWritesTheFormatItsExtensionNames) {
+  // As convert does: .npy and .x3p are written in those formats, never the text format under their name (a
+  // .npy file of text was refused on reading as a NumPy array). Each read back by stats gives the heights'
+  // rms of the text file to the digits both print (all three hold the same doubles).
+  const std::string surface =
+      "generate --sigma 0.5e-6 --hurst 0.5 --qr 3.14e4 --size 200e-6 --grid 64 --out ";
+  const auto text = folder_ / "a.txt";
+  ASSERT_EQ(run(surface + text.string()).status, 0);
+  const CommandResult reference = run("stats " + text.string());
+  ASSERT_EQ(reference.status, 0) << reference.err;
+  for (const char* name : {"a.npy", "a.x3p"}) {
+    const auto file = folder_ / name;
+    const CommandResult generated = run(surface + file.string());
+    ASSERT_EQ(generated.status, 0) << generated.err;
+    std::ifstream in(file, std::ios::binary);
+    std::string start(6, '\0');
+    in.read(start.data(), 6);
+    EXPECT_EQ(start.rfind("# cont", 0), std::string::npos) << name << " holds the text format";
+    const bool npy = file.extension() == ".npy";  // a NumPy array carries no lateral size
+    const CommandResult stats = run("stats " + file.string() + (npy ? " --size 200e-6" : ""));
+    ASSERT_EQ(stats.status, 0) << name << ": " << stats.err;
+    EXPECT_DOUBLE_EQ(json_value(stats.out, "sq"), json_value(reference.out, "sq")) << name;
+  }
+}
+
 TEST_F(Cli, RefineWritesTheSameRealisationOnAFinerGrid) {
   const auto coarse = folder_ / "coarse.txt", fine = folder_ / "fine.txt";
   ASSERT_EQ(run("generate " + kSurfaceA + " --out " + coarse.string()).status, 0);
