@@ -94,8 +94,8 @@ class ActiveSet {
     // the previous solution's: under a growing load the set of the rule above overshoots (the scaled
     // previous pressure presses the flat too deep; surface A at 256^2, load 0.001 -> 0.002: 8673 nodes
     // for the 2472 of the solution), and the outer steps that shrink it back cost more than those that
-    // grow the previous set (10-load curve, 256^2 to 1024^2: 0.81-1.0 of the cold solves' iterations
-    // against 0.88-1.1).
+    // grow the previous set (10-load curve: 0.81-0.92 of the cold solves' iterations at 256^2 and 512^2
+    // against 0.88-1.10; 0.99-1.01 at 1024^2, where the cold nested start is as good; docs/solvers.md).
     operator_->apply(p.data(), u_.data());
     for (std::size_t k = 0; k < n_; ++k)
       in_[k] = p[k] > 0;
