@@ -265,7 +265,8 @@ std::string distributed_bem_refusal(const BemStage& stage) {
   if (stage.single_precision) missing.push_back("single precision (float)");
   if (stage.solver != SolverKind::polonsky_keer && stage.solver != SolverKind::preconditioned_cg)
     missing.push_back("solver = \"" + std::string(solver_name(stage.solver)) +
-                      "\" (distributed: polonsky_keer, preconditioned_cg)");
+                      "\" (distributed: polonsky_keer, and preconditioned_cg, what a method that names no "
+                      "solver gets there)");
   if (missing.empty()) return "";
   std::string text = "the BEM stage has no distributed version with ";
   for (std::size_t k = 0; k < missing.size(); ++k)
