@@ -1,6 +1,7 @@
 // libFuzzer target: any bytes as a topography file, read the way `contactbench stats FILE` reads one (format
-// detected from the content). A refusal (contactbench::Error) is the right answer to bad bytes; anything else
-// (a crash, a sanitizer report, another exception, a leak, a giant allocation) is a bug.
+// detected from the content; a size of 1e-5 m given to the formats that carry none). A refusal
+// (contactbench::Error) is the right answer to bad bytes; anything else (a crash, a sanitizer report, another
+// exception, a leak, a giant allocation) is a bug.
 #include <unistd.h>
 
 #include <cstddef>
@@ -32,7 +33,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   try {
-    const contactbench::Surface surface = contactbench::read_topography(path);
+    // A lateral size for the formats that carry none (npy, plain matrices), as `stats --size` gives one:
+    // without it they are refused after parsing, before the surface is built, filled and levelled.
+    contactbench::TopographyReadOptions options;
+    if (!contactbench::format_carries_sizes(contactbench::detect_topography_format(path))) options.lx = 1e-5;
+    const contactbench::Surface surface = contactbench::read_topography(path, options);
     (void)surface.rms_height();
   } catch (const contactbench::Error&) {
     // refused with a message: the expected outcome for most inputs

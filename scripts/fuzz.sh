@@ -22,6 +22,9 @@ printf '# contactbench surface v1\n# nx=2 ny=2 lx=1e-06 ly=1e-06 periodic=true u
   >"$work/corpus_topography/project.txt"
 printf '1e-9 2e-9 3e-9\n4e-9 5e-9 6e-9\n' >"$work/corpus_topography/plain.txt"
 [[ -d data/formats ]] && for file in data/formats/*; do head -c 16384 "$file" >"$work/corpus_topography/$(basename "$file")"; done
+# Whole, valid files of the binary formats the project writes (the instrument files above are cut, so most
+# of them reach only their readers' header checks; fuzz/seeds/README.md).
+cp fuzz/seeds/*.x3p fuzz/seeds/*.npy "$work/corpus_topography/"
 cp scenes/paper/*.toml scenes/studies/*.toml "$work/corpus_scene/"
 for target in topography scene; do
   [[ -d fuzz/regressions/$target ]] && cp fuzz/regressions/$target/* "$work/corpus_$target/" 2>/dev/null || true
@@ -49,8 +52,24 @@ for target in topography scene; do
     echo "fuzz: $target found a problem (exit $code); inputs kept in fuzz/regressions/$target/, log $log" >&2
     grep -m5 -E 'ERROR|SUMMARY|terminate' "$log" >&2 || true
   fi
+  # libFuzzer's last status line: edges covered and the corpus it grew from the seeds.
+  coverage=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | grep -oE '[0-9]+' || true)
+  corpus=$(grep -oE 'corp: [0-9]+' "$log" | tail -1 | grep -oE '[0-9]+' || true)
+  seeds=$(find "$work/corpus_$target" -maxdepth 1 -type f | wc -l)
+  # Seeds the release build reads without an error (as the fuzz target reads them: a size for those that
+  # carry none); only with --record, and only when that build exists.
+  readable=-
+  if [[ "$record" == "--record" && $target == topography && -x build/release/app/contactbench ]]; then
+    readable=0
+    for seed in "$work/corpus_$target"/*; do
+      if build/release/app/contactbench stats "$seed" >/dev/null 2>&1 ||
+        build/release/app/contactbench stats "$seed" --size 1e-5 >/dev/null 2>&1; then
+        readable=$((readable + 1))
+      fi
+    done
+  fi
   echo "fuzz: $target: ${runs:-0} executions in ${seconds} s, $crashes crashes, $leaks leaks"
-  rows+=("| fuzz_$target | $seconds | ${runs:-0} | $crashes | $leaks |")
+  rows+=("| fuzz_$target | $seconds | ${runs:-0} | $seeds | $readable | ${corpus:-?} | ${coverage:-?} | $crashes | $leaks |")
 done
 
 if [[ "$record" == "--record" ]]; then
@@ -63,8 +82,8 @@ if [[ "$record" == "--record" ]]; then
     echo "$(hostname) ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'))): libFuzzer with"
     echo "AddressSanitizer, UndefinedBehaviorSanitizer and LeakSanitizer, seeded with the project's files."
     echo
-    echo "| target | seconds | executions | crashes | leaks |"
-    echo "|---|---:|---:|---:|---:|"
+    echo "| target | seconds | executions | seed files | seeds read without error | corpus at the end | edges covered | crashes | leaks |"
+    echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
     printf '%s\n' "${rows[@]}"
   } >results/fuzz.md.partial
   mv results/fuzz.md.partial results/fuzz.md
