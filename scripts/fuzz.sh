@@ -34,6 +34,20 @@ status=0
 rows=()
 for target in topography scene; do
   mkdir -p "$work/artifacts_$target"
+  # The seeds, counted before libFuzzer adds its own inputs to the same folder; with --record, those the
+  # release build reads without an error (as the fuzz target reads them: a size for the formats that carry
+  # none), when that build exists.
+  seeds=$(find "$work/corpus_$target" -maxdepth 1 -type f | wc -l)
+  readable=-
+  if [[ "$record" == "--record" && $target == topography && -x build/release/app/contactbench ]]; then
+    readable=0
+    for seed in "$work/corpus_$target"/*; do
+      if build/release/app/contactbench stats "$seed" >/dev/null 2>&1 ||
+        build/release/app/contactbench stats "$seed" --size 1e-5 >/dev/null 2>&1; then
+        readable=$((readable + 1))
+      fi
+    done
+  fi
   log="$work/$target.log"
   set +e
   # Bounded: 2 GiB of memory, 1 GiB for one allocation, 10 s for one input; inputs up to 64 KiB.
@@ -55,19 +69,6 @@ for target in topography scene; do
   # libFuzzer's last status line: edges covered and the corpus it grew from the seeds.
   coverage=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | grep -oE '[0-9]+' || true)
   corpus=$(grep -oE 'corp: [0-9]+' "$log" | tail -1 | grep -oE '[0-9]+' || true)
-  seeds=$(find "$work/corpus_$target" -maxdepth 1 -type f | wc -l)
-  # Seeds the release build reads without an error (as the fuzz target reads them: a size for those that
-  # carry none); only with --record, and only when that build exists.
-  readable=-
-  if [[ "$record" == "--record" && $target == topography && -x build/release/app/contactbench ]]; then
-    readable=0
-    for seed in "$work/corpus_$target"/*; do
-      if build/release/app/contactbench stats "$seed" >/dev/null 2>&1 ||
-        build/release/app/contactbench stats "$seed" --size 1e-5 >/dev/null 2>&1; then
-        readable=$((readable + 1))
-      fi
-    done
-  fi
   echo "fuzz: $target: ${runs:-0} executions in ${seconds} s, $crashes crashes, $leaks leaks"
   rows+=("| fuzz_$target | $seconds | ${runs:-0} | $seeds | $readable | ${corpus:-?} | ${coverage:-?} | $crashes | $leaks |")
 done
