@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 
@@ -72,6 +73,7 @@ class ActiveSet {
         t_(n_),
         w_(n_),
         in_(n_),
+        plastic_(n_),
         sums_(static_cast<std::size_t>(std::max({operator_->threads(), filter_->threads(), threads}))) {
     const auto [low, high] = std::minmax_element(h_.begin(), h_.end());
     highest_ = static_cast<double>(*high);
@@ -83,23 +85,29 @@ class ActiveSet {
     make_coarse_level();                          // the whole hierarchy, with its FFT plans, made once
   }
 
-  ActiveSetOutcome solve(double mean_pressure, double tolerance, Index max_iterations, bool warm,
+  ActiveSetOutcome solve(const ActiveSetProblem& problem, double tolerance, Index max_iterations, bool warm,
                          std::vector<T>& p, const std::function<void()>& between) {
     ActiveSetOutcome outcome;
-    const double total = mean_pressure * static_cast<double>(n_);
-    if (!warm) outcome.coarse_iterations = nested_start(mean_pressure, p, between);
-    scale_to(p, total);
-    // The starting set. Cold: {p - k g > 0}, k the stiffness of one pixel, g the gap of the nested start
-    // with the flat from its mean on the start's own contact set. Warm: the start's own contact set {p > 0},
-    // the previous solution's: under a growing load the set of the rule above overshoots (the scaled
-    // previous pressure presses the flat too deep; surface A at 256^2, load 0.001 -> 0.002: 8673 nodes
-    // for the 2472 of the solution), and the outer steps that shrink it back cost more than those that
-    // grow the previous set (10-load curve: 0.81-0.92 of the cold solves' iterations at 256^2 and 512^2
-    // against 0.88-1.10; 0.99-1.01 at 1024^2, where the cold nested start is as good; docs/solvers.md).
+    load_control_ = problem.load_control;
+    separation_ = problem.separation;
+    cap_ = std::isfinite(problem.hardness) ? static_cast<T>(problem.hardness)
+                                           : std::numeric_limits<T>::infinity();
+    const double total = problem.mean_pressure * static_cast<double>(n_);
+    std::fill(plastic_.begin(), plastic_.end(), std::uint8_t{0});
+    if (!warm) outcome.coarse_iterations = nested_start(problem, p, between);
+    if (load_control_) scale_to(p, total);
+    // The starting sets. Cold: {p - k g > 0}, k the stiffness of one pixel, g the gap of the nested start
+    // (under load control with the flat from its mean on the start's own contact set). Warm: the start's
+    // own contact set {p > 0}, the previous solution's: under a growing load the set of the rule above
+    // overshoots (the scaled previous pressure presses the flat too deep; surface A at 256^2, load 0.001 ->
+    // 0.002: 8673 nodes for the 2472 of the solution), and the outer steps that shrink it back cost more
+    // than those that grow the previous set (10-load curve: 0.81-0.92 of the cold solves' iterations at
+    // 256^2 and 512^2 against 0.88-1.10; 0.99-1.01 at 1024^2, where the cold nested start is as good;
+    // docs/solvers.md). Of those, the nodes at or above the hardness start plastic.
     operator_->apply(p.data(), u_.data());
     for (std::size_t k = 0; k < n_; ++k)
       in_[k] = p[k] > 0;
-    double d = flat_height();
+    double d = load_control_ ? flat_height() : separation_;
     const double stiffness = 1 / operator_->self_response();
     Index in_count = 0;
     for (std::size_t k = 0; k < n_; ++k) {
@@ -107,42 +115,77 @@ class ActiveSet {
         const double g = d + static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
         in_[k] = static_cast<double>(p[k]) - stiffness * g > 0;
       }
-      in_count += in_[k];
+      plastic_[k] = in_[k] && p[k] >= cap_;
+      in_[k] = in_[k] && !plastic_[k];
+      in_count += in_[k] + plastic_[k];
     }
-    if (in_count == 0) std::fill(in_.begin(), in_.end(), std::uint8_t{1});
+    if (in_count == 0) {  // load control: every node; separation control: those the flat penetrates
+      for (std::size_t k = 0; k < n_; ++k)
+        in_[k] = load_control_ || static_cast<double>(h_[k]) > separation_;
+    }
 
+    // A cold start caps only once the elastic sets have settled: the first inner solves, far from the
+    // solution, give a few nodes pressures many times the load's, which as plastic nodes would carry more
+    // than the load (a 128^2 rough surface with H at half the elastic peak then cycled for ever). From the
+    // settled elastic solution, the nodes above H carry more than H each, so the elastic ones keep a positive
+    // share.
+    bool capping = warm;
     bool final = false;
     Index inner = 0;
     for (Index outer = 1; outer <= kMaxOuter; ++outer) {
-      // The linear problem on the set, from the current pressure kept on it and scaled to the load.
+      // The linear problem on the elastic set, from the current pressure kept on it (scaled to the load less
+      // what the plastic nodes carry, under load control), p = H on the plastic set, 0 elsewhere.
       const Sums kept = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
         for (std::size_t k = begin; k < end; ++k) {
-          if (!in_[k]) p[k] = 0;
-          part.a += static_cast<double>(p[k]);
+          if (plastic_[k])
+            p[k] = cap_;
+          else if (!in_[k])
+            p[k] = 0;
+          part.a += in_[k] ? static_cast<double>(p[k]) : 0.0;
+          part.b += in_[k];
         }
       });
-      if (!(kept.a > 0))
-        for (std::size_t k = 0; k < n_; ++k)
-          p[k] = in_[k] ? T(1) : T(0);
-      scale_to(p, total);
-      // The residual's scale: the approach of the highest point, max h - d (> 0 in contact; the gaps that
-      // matter are of its order, while the height range can be dominated by a pit nobody touches).
+      if (load_control_) {
+        if (!(kept.a > 0))
+          for (std::size_t k = 0; k < n_; ++k)
+            if (in_[k]) p[k] = T(1);
+        // No elastic node leaves the flat's height undetermined, and plastic nodes carrying the load or
+        // more leave nothing for the elastic ones (a very soft contact): the sets are made again.
+        if (kept.b == 0 || !scale_to(p, total)) {
+          reseat(p, total);
+          scale_to(p, total);
+        }
+      }
       const Index steps = cg_on_set(p, final ? 0.0 : kInnerReduction, threshold(tolerance, d),
                                     final ? tolerance : 0.0, max_iterations - inner - outer, between);
       inner += steps;
       // The set update, from the CG's own displacement (updated with each step; a fresh one costs an
       // application of G, made once at the end).
-      d = flat_height();
+      d = load_control_ ? flat_height() : separation_;
       // Nodes enter when they penetrate by more than the tolerance, leave when their pressure is negative:
-      // nodes at p = 0 and g = 0 within the tolerance would otherwise flip in and out for ever.
-      const double enter_below = -threshold(tolerance, d);
+      // nodes at p = 0 and g = 0 within the tolerance would otherwise flip in and out for ever. Elastic
+      // nodes above the hardness become plastic; plastic nodes whose gap opens by more than the tolerance
+      // become elastic again.
+      const double limit = threshold(tolerance, d);
       const Sums update = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
         for (std::size_t k = begin; k < end; ++k) {
           const double g = d + static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
-          const bool stays = in_[k] ? p[k] >= 0 : g < enter_below;
-          if (in_[k]) part.e = std::max(part.e, std::abs(g));
-          part.a += stays != static_cast<bool>(in_[k]) ? 1.0 : 0.0;
-          in_[k] = stays;
+          bool elastic = in_[k], plastic = plastic_[k];
+          if (elastic) {
+            part.e = std::max(part.e, std::abs(g));
+            part.d += p[k] > cap_ ? 1.0 : 0.0;
+            elastic = p[k] >= 0 && (p[k] <= cap_ || !capping);
+            plastic = p[k] > cap_ && capping;
+          } else if (plastic) {
+            plastic = g <= limit;
+            elastic = !plastic;
+          } else {
+            elastic = g < -limit;
+          }
+          part.a +=
+              elastic != static_cast<bool>(in_[k]) || plastic != static_cast<bool>(plastic_[k]) ? 1.0 : 0.0;
+          in_[k] = elastic;
+          plastic_[k] = plastic;
         }
       });
       const double residual = update.e;
@@ -153,26 +196,33 @@ class ActiveSet {
       // Counted: the CG's iterations, one application of G per outer step (the CG's start) and two more
       // (the starting set's gap, the final fresh gap), each as a whole iteration.
       outcome.iterations = inner + outer + 2;
-      if (changed == 0 && residual <= threshold(tolerance, d) && last_step_change_ <= tolerance) {
+      const bool above_cap = update.d > 0;
+      if (changed == 0 && !above_cap && residual <= limit && last_step_change_ <= tolerance) {
         outcome.converged = true;
         break;
       }
+      if (changed == 0 && above_cap && !capping) {
+        capping = true;  // the elastic sets settled with pressures above H: now the plastic set
+        final = false;
+        continue;
+      }
       if (changed == 0 && final && steps == 0) break;  // no descent left above the tolerance: stalled
-      final = changed == 0;  // the set settled: the next inner solve runs to the tolerance
+      final = changed == 0;  // the sets settled: the next inner solve runs to the tolerance
       if (outcome.iterations >= max_iterations) break;
     }
-    // The pressure of the set it ends on (on convergence, nothing is clipped: p > 0 on the set), its gap.
+    // The pressure of the sets it ends on (on convergence, nothing is clipped: 0 < p <= H on the elastic
+    // set), its gap.
     bool clipped = false;
-    for (std::size_t k = 0; k < n_; ++k)
-      if (!in_[k] || p[k] < 0) {
-        clipped = clipped || p[k] != 0;
-        p[k] = 0;
-      }
-    if (clipped) scale_to(p, total);
+    for (std::size_t k = 0; k < n_; ++k) {
+      const T kept = plastic_[k] ? cap_ : (in_[k] ? std::clamp(p[k], T(0), cap_) : T(0));
+      clipped = clipped || kept != p[k];
+      p[k] = kept;
+    }
+    if (clipped && load_control_) scale_to(p, total);
     operator_->apply(p.data(), u_.data());
     for (std::size_t k = 0; k < n_; ++k)
-      in_[k] = p[k] > 0;
-    d = flat_height();
+      in_[k] = p[k] > 0 && !plastic_[k];
+    d = load_control_ ? flat_height() : separation_;
     outcome.separation = d;
     outcome.iterations += (outcome.coarse_iterations + 3) / 4;
     return outcome;
@@ -237,21 +287,50 @@ class ActiveSet {
     return s.b > 0 ? -s.a / s.b : 0;
   }
 
-  // p scaled to the sum `total`.
-  void scale_to(std::vector<T>& p, double total) {
-    const Sums s = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
-      for (std::size_t k = begin; k < end; ++k)
-        part.a += static_cast<double>(p[k]);
-    });
-    const double factor = s.a > 0 ? total / s.a : 0;
-    over_points([&](std::size_t begin, std::size_t end, Sums&) {
-      for (std::size_t k = begin; k < end; ++k)
-        p[k] = static_cast<T>(factor * static_cast<double>(p[k]));
-    });
+  // The sets of the bearing area (the limit of a very soft contact), with the current displacement: the m
+  // nodes the flat penetrates deepest (largest h - u) plastic, m the most whose pressure H stays below the
+  // load (none without a hardness), and the next (or those tied with it) elastic with the rest of the load.
+  void reseat(std::vector<T>& p, double total) {
+    const double most = std::isfinite(static_cast<double>(cap_)) ? std::ceil(total / cap_) - 1 : 0.0;
+    const std::size_t m = static_cast<std::size_t>(std::clamp(most, 0.0, static_cast<double>(n_ - 1)));
+    operator_->apply(p.data(), u_.data());
+    std::vector<T> depth(n_);
+    for (std::size_t k = 0; k < n_; ++k)
+      depth[k] = h_[k] - u_[k];
+    std::vector<T> ranked = depth;
+    std::nth_element(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(m), ranked.end(),
+                     std::greater<>());
+    const T level = ranked[m];
+    for (std::size_t k = 0; k < n_; ++k) {
+      plastic_[k] = depth[k] > level;
+      in_[k] = depth[k] == level;
+      p[k] = plastic_[k] ? cap_ : T(in_[k] ? 1 : 0);
+    }
   }
 
-  // The preconditioned CG for G p = h - d on the set, sum p fixed (the direction has zero sum on the set,
-  // which also leaves d free), from p; u_ ends as G p. Stops when the residual's L2 norm has fallen by
+  // The pressures off the plastic set scaled so that the sum of p is `total` (the plastic nodes at H);
+  // false, and nothing changed, when the plastic nodes alone carry `total` or more.
+  bool scale_to(std::vector<T>& p, double total) {
+    const Sums s = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+      for (std::size_t k = begin; k < end; ++k)
+        if (plastic_[k])
+          part.b += static_cast<double>(cap_);
+        else
+          part.a += static_cast<double>(p[k]);
+    });
+    const double elastic_total = total - s.b;
+    if (s.b > 0 && !(elastic_total > 0)) return false;
+    const double factor = s.a > 0 ? elastic_total / s.a : 0;
+    over_points([&](std::size_t begin, std::size_t end, Sums&) {
+      for (std::size_t k = begin; k < end; ++k)
+        if (!plastic_[k]) p[k] = static_cast<T>(factor * static_cast<double>(p[k]));
+    });
+    return true;
+  }
+
+  // The preconditioned CG for G p = h - d on the elastic set (p held elsewhere), from p; under load control
+  // sum p fixed (the direction has zero sum on the set, which also leaves d free), under separation control
+  // d = separation_ and the sum free; u_ ends as G p. Stops when the residual's L2 norm has fallen by
   // `reduction` (0: never on that count), or when its largest value is at most `absolute` and the last
   // step's relative change of the pressure at most `step_change`, or after `budget` iterations. Returns the
   // iterations. The element-wise work rides inside the two convolutions of an iteration
@@ -269,7 +348,10 @@ class ActiveSet {
         }
     });
     set_size_ = start.b;
-    const T r_mean = static_cast<T>(start.b > 0 ? start.a / start.b : 0);
+    if (set_size_ == 0) return 0;
+    // Load control: the mean of u - h on the set (its mean is the flat's unknown height); separation
+    // control: -d, so that r is the gap d + u - h.
+    const T r_mean = static_cast<T>(load_control_ ? start.a / start.b : -separation_);
     const Sums norms = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
       for (std::size_t k = begin; k < end; ++k) {
         const T rv = in_[k] ? (u_[k] - h_[k]) - r_mean : T(0);
@@ -359,7 +441,7 @@ class ActiveSet {
       clear();
       filter_->apply(Producer(residual_in), Consumer(filtered_out));
       Sums f = combined();
-      zbar = static_cast<T>(f.a / set_size_);
+      zbar = static_cast<T>(load_control_ ? f.a / set_size_ : 0.0);
       const double rz = f.b - static_cast<double>(zbar) * f.c;  // <r, z - zbar>
       if (!(rz > 0)) break;  // no descent left (a set of one node, or round-off)
       beta = static_cast<T>(rz_old > 0 ? rz / rz_old : 0.0);
@@ -368,7 +450,7 @@ class ActiveSet {
       operator_->apply(Producer(direction_in), Consumer(response_out));
       f = combined();
       // w restricted to the set with its mean there removed: the operator of the constrained problem.
-      const double w_mean = f.b / set_size_;
+      const double w_mean = load_control_ ? f.b / set_size_ : 0.0;
       const double tw = f.c - w_mean * f.a;
       if (!(tw > 0)) break;
       const T tau = static_cast<T>(rz / tw), wm = static_cast<T>(w_mean);
@@ -403,18 +485,28 @@ class ActiveSet {
     return iterations;
   }
 
-  // The nested start: the surface averaged over 2 x 2 blocks solved to kCoarseTolerance (itself nested), its
-  // pressure interpolated. Returns the coarse levels' iterations (0 when the grid is too small or odd: then
-  // the start is the uniform pressure).
-  Index nested_start(double mean_pressure, std::vector<T>& p, const std::function<void()>& between) {
-    p.assign(n_, T(1));
-    if (!coarse_) return 0;
+  // The nested start: the same problem on the surface averaged over 2 x 2 blocks solved to
+  // kCoarseTolerance (itself nested), its pressure interpolated. Returns the coarse levels' iterations (0
+  // when the grid is too small or odd: then the start is the uniform pressure under load control, and
+  // under separation control the penetration pressed in by the stiffness of one pixel, as PK's).
+  Index nested_start(const ActiveSetProblem& problem, std::vector<T>& p,
+                     const std::function<void()>& between) {
+    if (!coarse_) {
+      p.assign(n_, T(1));
+      if (!problem.load_control) {
+        const double stiffness = 1 / operator_->self_response();
+        for (std::size_t k = 0; k < n_; ++k)
+          p[k] = static_cast<T>(std::min(
+              std::max(static_cast<double>(h_[k]) - problem.separation, 0.0) * stiffness, problem.hardness));
+      }
+      return 0;
+    }
     std::vector<T> coarse_pressure;
     const ActiveSetOutcome o =
-        coarse_->solve(mean_pressure, kCoarseTolerance, 100000, false, coarse_pressure, between);
+        coarse_->solve(problem, kCoarseTolerance, 100000, false, coarse_pressure, between);
     p = interpolate_up(coarse_pressure, grid_.nx / 2, grid_.ny / 2, grid_.periodic);
     for (T& v : p)
-      v = std::max(v, T(0));
+      v = std::clamp(v, T(0), cap_);
     return o.iterations;
   }
 
@@ -442,7 +534,11 @@ class ActiveSet {
   std::unique_ptr<Convolution<T>> operator_, filter_;
   std::size_t n_;
   std::vector<T> u_, r_, z_, t_, w_;
-  std::vector<std::uint8_t> in_;
+  std::vector<std::uint8_t> in_;       // the elastic contact set
+  std::vector<std::uint8_t> plastic_;  // the plastic set, p = H (none without a hardness)
+  bool load_control_ = true;
+  double separation_ = 0;                       // the flat's height under separation control
+  T cap_ = std::numeric_limits<T>::infinity();  // the hardness
   double height_range_ = 1, highest_ = 0, gap_round_off_ = 0;
   double last_step_change_ = 0;  // sum |tau t| / sum |p| of the last CG iteration
   std::vector<Sums> sums_;
@@ -465,12 +561,12 @@ template <class T>
 ActiveSetSolver<T>::~ActiveSetSolver() = default;
 
 template <class T>
-ActiveSetOutcome ActiveSetSolver<T>::solve(double mean_pressure, double tolerance, Index max_iterations,
-                                           bool warm, std::vector<T>& pressure,
+ActiveSetOutcome ActiveSetSolver<T>::solve(const ActiveSetProblem& problem, double tolerance,
+                                           Index max_iterations, bool warm, std::vector<T>& pressure,
                                            std::vector<T>& displacement_minus_heights,
                                            const std::function<void()>& between) {
   const ActiveSetOutcome outcome =
-      impl_->solver.solve(mean_pressure, tolerance, max_iterations, warm, pressure, between);
+      impl_->solver.solve(problem, tolerance, max_iterations, warm, pressure, between);
   impl_->solver.displacement_minus_heights(displacement_minus_heights);
   return outcome;
 }

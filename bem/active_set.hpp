@@ -1,5 +1,6 @@
 // The solver "active_set" (bem/solver_registry.hpp; docs/solvers.md): a primal-dual active-set
-// (semismooth Newton) method for the load-controlled elastic contact problem of bem/polonsky_keer.hpp.
+// (semismooth Newton) method for the contact problem of bem/polonsky_keer.hpp: under load control or
+// separation control, elastic or with pressures capped at a hardness H (perfectly plastic).
 //
 // Guess the contact set A; solve the LINEAR problem on it (gap = 0 on A, p = 0 elsewhere, sum p = the load)
 // by a conjugate gradient preconditioned by the Fourier filter (E*/2)|q| (bem/fourier_preconditioner.hpp),
@@ -28,11 +29,21 @@
 // plus two (the starting set's gap and the final gap), plus the coarse levels' counts divided by 4 per
 // level (their cost in fine iterations).
 //
-// Load control of the elastic problem only: under separation control and with a hardness (met through
-// separation control) PolonskyKeer iterates as polonsky_keer whichever solver is chosen (polonsky_keer.cpp).
+// Separation control: the flat's height d is given, so the linear problem on A is gap = 0 there with no
+// condition on the sum and no mean taken out of the residual, the filtered residual or G's response (the
+// load is what comes out). A hardness adds a third set, the plastic nodes P where p = H (docs/theory.md):
+// the linear problem is solved on the elastic set A with p = H held on P (its displacement is part of the
+// gap; under load control the elastic nodes carry the load less H |P|), and the update also moves nodes
+// of A whose pressure exceeds H into P, and nodes of P whose gap opens by more than the threshold back
+// into A (from a cold start only once the elastic sets have settled: see active_set.cpp). Under load
+// control, should the elastic set empty or the plastic nodes carry the whole load, the sets are made again as
+// the bearing area's (the limit of a very soft contact). A capped solve under load control is thus one solve,
+// where the other solvers search the flat's height with capped solves under separation control
+// (polonsky_keer.cpp, solve_capped).
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -51,7 +62,16 @@ struct ActiveSetOutcome {
   bool converged = false;
 };
 
-// Load control on `grid` (heights centred, row-major ny x nx), keeping its FFT plans, arrays and coarse
+// What a solve imposes: the load (the flat's height found) or the flat's height (the load found), and the
+// pressure cap (infinite: elastic).
+struct ActiveSetProblem {
+  bool load_control = true;
+  double mean_pressure = 0;                                   // [Pa], load control
+  double separation = 0;                                      // the flat's height d [m], separation control
+  double hardness = std::numeric_limits<double>::infinity();  // [Pa]
+};
+
+// The solver on `grid` (heights centred, row-major ny x nx), keeping its FFT plans, arrays and coarse
 // levels from solve to solve.
 template <class T>
 class ActiveSetSolver {
@@ -61,11 +81,11 @@ class ActiveSetSolver {
   ActiveSetSolver(const ActiveSetSolver&) = delete;
   ActiveSetSolver& operator=(const ActiveSetSolver&) = delete;
 
-  // Solves for the mean pressure [Pa]. `pressure`: in, the start when `warm` (scaled to the load), else
+  // Solves `problem`. `pressure`: in, the start when `warm` (under load control scaled to the load), else
   // ignored and a nested coarse start is made; out, the solution. `displacement_minus_heights`: out,
   // G p - h (the gap less the flat's height). `between` is called before every inner iteration (may be
   // empty; may throw).
-  ActiveSetOutcome solve(double mean_pressure, double tolerance, Index max_iterations, bool warm,
+  ActiveSetOutcome solve(const ActiveSetProblem& problem, double tolerance, Index max_iterations, bool warm,
                          std::vector<T>& pressure, std::vector<T>& displacement_minus_heights,
                          const std::function<void()>& between);
 

@@ -58,11 +58,13 @@ class PolonskyKeer::Engine {
   virtual bool warm() const = 0;
   // The next solve starts from this pressure [Pa] (ny x nx), as from a previous solution.
   virtual void start_from(const HeightMap& pressure) = 0;
-  // Load control: mean(p) = mean_pressure, the flat's height found.
-  // extrapolate: start from the linear extrapolation of the last two load-controlled solutions (when there
-  // are two), else from the last one scaled to the new load.
-  virtual Outcome solve_load(double mean_pressure, double tolerance, Index max_iterations,
+  // Load control: mean(p) = mean_pressure, the flat's height found; pressures capped at `hardness` (may be
+  // infinite) when caps_load_control(), else elastic (PolonskyKeer::solve then meets the cap by a search on
+  // the flat's height, solve_capped). extrapolate: start from the linear extrapolation of the last two
+  // load-controlled solutions (when there are two), else from the last one scaled to the new load.
+  virtual Outcome solve_load(double mean_pressure, double hardness, double tolerance, Index max_iterations,
                              bool extrapolate) = 0;
+  virtual bool caps_load_control() const = 0;
   // Separation control: the flat at `separation`, the load found; pressures capped at `hardness` (may be
   // infinite).
   virtual Outcome solve_separation(double separation, double hardness, double tolerance,
@@ -140,7 +142,9 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     loads_solved_ = 0;
   }
 
-  Outcome solve_load(double mean_pressure, double tolerance, Index max_iterations,
+  bool caps_load_control() const override { return active_set_; }
+
+  Outcome solve_load(double mean_pressure, double hardness, double tolerance, Index max_iterations,
                      bool extrapolate) override {
     const double total = mean_pressure * static_cast<double>(n_);
     const bool two_behind = extrapolate && warm_ && loads_solved_ >= 2 && last_load_ != previous_load_;
@@ -167,8 +171,10 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
       s_[cur_] = mean_pressure;
     }
     hardness_ = std::numeric_limits<double>::infinity();
-    const Outcome outcome = active_set_ ? solve_active_set_load(mean_pressure, tolerance, max_iterations)
-                                        : iterate<true, false>(total, tolerance, max_iterations);
+    const Outcome outcome = active_set_
+                                ? solve_active_set({.mean_pressure = mean_pressure, .hardness = hardness},
+                                                   tolerance, max_iterations)
+                                : iterate<true, false>(total, tolerance, max_iterations);
     warm_ = true;
     previous_load_ = last_load_;
     last_load_ = mean_pressure;
@@ -181,6 +187,12 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     loads_solved_ = 0;
     separation_ = separation;
     hardness_ = hardness;
+    if (active_set_) {
+      const Outcome outcome = solve_active_set(
+          {.load_control = false, .separation = separation, .hardness = hardness}, tolerance, max_iterations);
+      warm_ = true;
+      return outcome;
+    }
     if (!warm_) {
       // The surface's penetration of the flat, pressed in by the stiffness of a lone pixel (capped).
       const double stiffness = 1 / convolution_->self_response();
@@ -296,9 +308,9 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     double change = 0, sum = 0, elastic = 0, plastic = 0, g_mean = 0, g_norm = 0;
   };
 
-  // The solver "active_set" (bem/active_set.hpp): from the start solve_load made (when warm), else from its
-  // own nested coarse start; leaves the state as iterate() does.
-  Outcome solve_active_set_load(double mean_pressure, double tolerance, Index max_iterations) {
+  // The solver "active_set" (bem/active_set.hpp): from the start solve_load made or the last solution (when
+  // warm), else from its own nested coarse start; leaves the state as iterate() does.
+  Outcome solve_active_set(const ActiveSetProblem& problem, double tolerance, Index max_iterations) {
     std::vector<T> pressure;
     if (warm_) {
       pressure.resize(static_cast<std::size_t>(n_));
@@ -308,7 +320,7 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     }
     ActiveSetOutcome result;
     try {
-      result = active_set_solver_->solve(mean_pressure, tolerance, max_iterations, warm_, pressure, g_,
+      result = active_set_solver_->solve(problem, tolerance, max_iterations, warm_, pressure, g_,
                                          this->between_iterations_);
     } catch (...) {
       forget();  // abandoned mid-solve: nothing to warm-start from
@@ -317,6 +329,8 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     q_[cur_] = std::move(pressure);
     s_[cur_] = 1;
     last_sum_ = q_sum(q_[cur_]);
+    // Plastic nodes hold the hardness rounded to T: write() counts them by it.
+    hardness_ = static_cast<double>(static_cast<T>(problem.hardness));
     separation_ = result.separation;
     gap_offset_ = separation_;  // g holds u - h: the gap is g + d
     return Outcome{.iterations = result.iterations, .change = result.change, .converged = result.converged};
@@ -859,13 +873,14 @@ const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
   }
   Index coarse_iterations = 0;
   if (options_.coarse_start && !engine_->warm()) coarse_iterations = start_coarse(mean_pressure);
+  const Real hardness = options_.hardness.value_or(std::numeric_limits<Real>::infinity());
   const Engine::Outcome outcome =
-      engine_->solve_load(mean_pressure, options_.tolerance, options_.max_iterations,
+      engine_->solve_load(mean_pressure, hardness, options_.tolerance, options_.max_iterations,
                           options_.load_path == LoadPathStart::extrapolated);
   Index iterations = outcome.iterations;
   Real change = outcome.change;
   bool converged = outcome.converged;
-  if (options_.hardness && engine_->max_pressure() > *options_.hardness) {
+  if (options_.hardness && !engine_->caps_load_control() && engine_->max_pressure() > *options_.hardness) {
     const Engine::Outcome capped = solve_capped(*engine_, surface_.heights(), options_, mean_pressure);
     iterations += capped.iterations;
     change = capped.change;

@@ -9,6 +9,11 @@
 // Counters: iterations, seconds, tolerance (the one needed), area_error, pressure_error, area_fraction (the
 // reference's), fft_pairs_per_iteration (one iteration's time over one r2c + c2r pair of the padded size,
 // measured in this binary), and for `curve` runs the totals of 10 loads.
+// Two more families, where each solver runs at the tolerance 1e-8 (every solver's results agree to it):
+//   bem/<solver>/<boundary>/n:<n>/capped:<H/E*>/surface_a: the 10 loads of `curve`, warm-started, with the
+//     pressure capped at a hardness H (perfectly plastic; a metal's H/E* is about 0.01 to 0.05);
+//   bem/<solver>/<boundary>/n:<n>/separation:<pct>/<surface>: one cold solve under separation control, the
+//     flat at the height of the reference of contact:<pct>; load_error is its load against the reference's.
 //
 // Surfaces: surface_a, the paper's surface A (Table 1, a 256 x 256 realisation) Fourier-refined to n x n
 // (so no roughness below the 256 grid's pixel); h08, a self-affine surface with H = 0.8, roll-off at
@@ -23,6 +28,7 @@
 #include <map>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -77,6 +83,7 @@ struct Reference {
   HeightMap pressure;
   Index contact_points = 0;
   double norm = 0;
+  Real separation = 0, mean_pressure = 0;
 };
 
 const Reference& reference(SurfaceKind kind, Index n, bool periodic, int pct) {
@@ -90,7 +97,8 @@ const Reference& reference(SurfaceKind kind, Index n, bool periodic, int pct) {
         kThreads);
     const ContactSolution& s = solver.solve(nominal_pressure(surface, pct));
     if (!s.converged) throw Error("bench_bem_solvers: the reference solve did not converge");
-    slot = std::make_unique<Reference>(Reference{s.pressure, s.contact_points, s.pressure.matrix().norm()});
+    slot = std::make_unique<Reference>(
+        Reference{s.pressure, s.contact_points, s.pressure.matrix().norm(), s.separation, s.mean_pressure});
   }
   return *slot;
 }
@@ -180,15 +188,20 @@ void equal_accuracy(benchmark::State& state, SolverKind solver_kind, bool coarse
 enum class Start { cold, warm, extrapolated };
 constexpr const char* kStartNames[] = {"cold", "warm", "extrapolated"};
 
-void curve(benchmark::State& state, SolverKind solver_kind, Index n, bool periodic, Start start) {
+// With a hardness (H/E*), the curve is capped.
+void curve(benchmark::State& state, SolverKind solver_kind, Index n, bool periodic, Start start,
+           std::optional<double> hardness_over_modulus) {
   const Surface surface = case_surface(SurfaceKind::surface_a, n).with_periodic(periodic);
+  std::optional<Real> hardness;
+  if (hardness_over_modulus) hardness = *hardness_over_modulus * kModulus;
   const PolonskyKeerOptions options{
       .tolerance = 1e-8,
       .max_iterations = 100000,
+      .hardness = hardness,
       .solver = solver_kind,
       .load_path = start == Start::extrapolated ? LoadPathStart::extrapolated : LoadPathStart::scaled};
   Index iterations = 0;
-  double seconds = 0;
+  double seconds = 0, area_fraction = 0, plastic_fraction = 0;
   for (auto _ : state) {
     iterations = 0;
     seconds = 0;
@@ -200,11 +213,49 @@ void curve(benchmark::State& state, SolverKind solver_kind, Index n, bool period
       if (!s.converged) state.SkipWithError("a load did not converge");
       iterations += s.iterations;
       seconds += s.seconds;
+      const double points = static_cast<double>(surface.grid().points());
+      area_fraction = static_cast<double>(s.contact_points) / points;
+      plastic_fraction = static_cast<double>(s.plastic_points) / points;
     }
     state.SetIterationTime(seconds);
   }
   state.counters["iterations"] = static_cast<double>(iterations);
   state.counters["seconds"] = seconds;
+  state.counters["area_fraction"] = area_fraction;  // of the last load
+  state.counters["plastic_fraction"] = plastic_fraction;
+}
+
+// One cold solve under separation control at the reference's flat height (tolerance 1e-8; the time the
+// median of three runs).
+void separation(benchmark::State& state, SolverKind solver_kind, SurfaceKind kind, Index n, bool periodic,
+                int pct) {
+  const Surface surface = case_surface(kind, n).with_periodic(periodic);
+  const Reference& ref = reference(kind, n, periodic, pct);
+  Index iterations = 0;
+  double seconds = 0, load_error = 0, area_error = 0;
+  for (auto _ : state) {
+    std::vector<double> runs;
+    for (int repeat = 0; repeat < 3; ++repeat) {
+      PolonskyKeer solver(surface, kModulus,
+                          {.tolerance = 1e-8, .max_iterations = 100000, .solver = solver_kind}, kThreads);
+      const ContactSolution& s = solver.solve_for_separation(ref.separation);
+      if (!s.converged) state.SkipWithError("the solve did not converge");
+      iterations = s.iterations;
+      runs.push_back(s.seconds);
+      load_error = std::abs(s.mean_pressure - ref.mean_pressure) / ref.mean_pressure;
+      area_error = std::abs(static_cast<double>(s.contact_points - ref.contact_points)) /
+                   static_cast<double>(ref.contact_points);
+    }
+    std::sort(runs.begin(), runs.end());
+    seconds = runs[1];
+    state.SetIterationTime(seconds);
+  }
+  state.counters["iterations"] = static_cast<double>(iterations);
+  state.counters["seconds"] = seconds;
+  state.counters["load_error"] = load_error;
+  state.counters["area_error"] = area_error;
+  state.counters["area_fraction"] =
+      static_cast<double>(ref.contact_points) / static_cast<double>(surface.grid().points());
 }
 
 // Every solver from a cold start, and the preconditioned one from a coarse start too (<solver>_coarse;
@@ -226,12 +277,33 @@ void register_all() {
           const std::string label = "bem/" + name + "/" + (periodic ? "periodic" : "nonperiodic") +
                                     "/n:" + std::to_string(n) +
                                     "/curve:" + kStartNames[static_cast<int>(start)] + "/surface_a";
-          benchmark::RegisterBenchmark(label.c_str(), curve, solver_kind(name), n, periodic, start)
+          benchmark::RegisterBenchmark(label.c_str(), curve, solver_kind(name), n, periodic, start,
+                                       std::nullopt)
               ->Unit(benchmark::kMillisecond)
               ->UseManualTime()
               ->Iterations(1)
               ->Repetitions(1);
         }
+  constexpr double kHardnessOverModulus = 0.03;
+  for (const Index n : {256, 512, 1024, 2048})
+    for (const bool periodic : {true, false})
+      for (const std::string& name : solver_names()) {
+        const std::string where =
+            name + "/" + (periodic ? "periodic" : "nonperiodic") + "/n:" + std::to_string(n);
+        benchmark::RegisterBenchmark(("bem/" + where + "/capped:0.03/surface_a").c_str(), curve,
+                                     solver_kind(name), n, periodic, Start::warm, kHardnessOverModulus)
+            ->Unit(benchmark::kMillisecond)
+            ->UseManualTime()
+            ->Iterations(1)
+            ->Repetitions(1);
+        for (const SurfaceKind kind : {SurfaceKind::surface_a, SurfaceKind::h08})
+          benchmark::RegisterBenchmark(("bem/" + where + "/separation:10/" + surface_label(kind)).c_str(),
+                                       separation, solver_kind(name), kind, n, periodic, 10)
+              ->Unit(benchmark::kMillisecond)
+              ->UseManualTime()
+              ->Iterations(1)
+              ->Repetitions(1);
+      }
   for (const SurfaceKind kind : {SurfaceKind::surface_a, SurfaceKind::h08})
     for (const Index n : {256, 512, 1024, 2048})
       for (const bool periodic : {true, false})

@@ -147,12 +147,18 @@ def bem_solvers(data):
     rows = median_rows(data)
     cases = defaultdict(dict)  # (surface, boundary, contact) -> n -> solver -> row
     curves = defaultdict(dict)  # (boundary, n) -> (solver, start) -> row
+    capped = defaultdict(dict)  # (boundary, n, H/E*) -> solver -> row
+    separations = defaultdict(dict)  # (surface, boundary, contact, n) -> solver -> row
     for name, row in rows.items():
         parts = name.split("/")
         solver, boundary = parts[1], parts[2]
         f = dict(p.split(":", 1) for p in parts[3:] if ":" in p)
         if "curve" in f:
             curves[(boundary, int(f["n"]))][(solver, f["curve"])] = row
+        elif "capped" in f:
+            capped[(boundary, int(f["n"]), f["capped"])][solver] = row
+        elif "separation" in f:
+            separations[(parts[5], boundary, int(f["separation"]), int(f["n"]))][solver] = row
         elif "contact" in f:
             cases[(parts[5], boundary, int(f["contact"]))].setdefault(int(f["n"]), {})[solver] = row
     solvers = sorted({s for c in cases.values() for r in c.values() for s in r})
@@ -171,7 +177,7 @@ def bem_solvers(data):
         head += f" {s} iterations | {s} [s] | {s} tol | {s} FFT pairs / it |"
         rule += "---|---|---|---|"
     # Ratios against plain Polonsky-Keer (the yardstick of issue 12), else against the first solver.
-    base_solver = "polonsky_keer" if "polonsky_keer" in solvers else solvers[0]
+    base_solver = "polonsky_keer" if "polonsky_keer" in solvers or not solvers else solvers[0]
     others = [s for s in solvers if s != base_solver]
     for s in others:
         head += f" iterations {base_solver} / {s} | time {base_solver} / {s} |"
@@ -226,7 +232,45 @@ def bem_solvers(data):
                 lines.append(f"| {key[0]} | {key[1]} | {solver} | {start} | {fmt(row.get('iterations'))} | "
                              f"{fmt(row.get('seconds'))} | "
                              f"{fmt(row['iterations'] / cold) if cold else '-'} |")
+    if capped:
+        lines += ["", "Capped load curves: the same 10 loads with the pressure capped at the hardness H (H/E* in the "
+                  "table), warm-started, each solver at tolerance 1e-8. active_set caps each solve itself (a third, "
+                  "plastic set); the others solve elastically, then search the flat's height with capped solves "
+                  "under separation control. area and plastic: fractions at the last load.",
+                  "", "| boundary | n | H/E* | solver | iterations | seconds | area | plastic | "
+                  "iterations polonsky_keer / solver | time polonsky_keer / solver |",
+                  "|---|---|---|---|---|---|---|---|---|---|"]
+        lines += ratio_rows(capped, lambda key: f"{key[0]} | {key[1]} | {key[2]}",
+                            lambda row: f"{fmt(row.get('area_fraction'))} | {fmt(row.get('plastic_fraction'))}")
+    if separations:
+        lines += ["", "Separation control: one cold solve with the flat at the height of the equal-accuracy "
+                  "reference of the case (plain Polonsky-Keer, 1e-12, under load control), each solver at "
+                  "tolerance 1e-8 (seconds: the median of three runs). load error: the solve's mean pressure "
+                  "against the reference's load; area error: its node count against the reference's.",
+                  "", "| surface | boundary | contact % | n | solver | iterations | seconds | load error | "
+                  "area error | iterations polonsky_keer / solver | time polonsky_keer / solver |",
+                  "|---|---|---|---|---|---|---|---|---|---|---|"]
+        lines += ratio_rows(separations, lambda key: " | ".join(str(k) for k in key),
+                            lambda row: f"{row.get('load_error', 0):.1e} | {row.get('area_error', 0):.1e}")
     return lines
+
+
+def ratio_rows(table, key_cells, extra_cells):
+    """Rows of key -> solver -> row: iterations, seconds, the extra cells, and plain Polonsky-Keer's over each."""
+    out = []
+    for key in sorted(table):
+        base = table[key].get("polonsky_keer", {})
+        for solver in sorted(table[key]):
+            row = table[key][solver]
+            if row.get("error_occurred"):
+                out.append(f"| {key_cells(key)} | {solver} | did not converge | - | - | - | - |")
+                continue
+            ok = base.get("iterations") and not base.get("error_occurred")
+            ratios = (f"{fmt(base['iterations'] / row['iterations'])} | {fmt(base['seconds'] / row['seconds'])}"
+                      if ok else "- | -")
+            out.append(f"| {key_cells(key)} | {solver} | {fmt(row.get('iterations'))} | "
+                       f"{fmt(row.get('seconds'))} | {extra_cells(row)} | {ratios} |")
+    return out
 
 
 def main():
@@ -235,7 +279,7 @@ def main():
     names = [b["name"] for b in data["benchmarks"]]
     if names and names[0].startswith("labelling/"):
         lines = labelling(data)
-    elif any("/contact:" in n or "/curve:" in n for n in names):
+    elif any(f"/{family}:" in n for n in names for family in ("contact", "curve", "capped", "separation")):
         lines = bem_solvers(data)
     elif names and names[0].startswith("bem/"):
         lines = bem(data)
