@@ -68,10 +68,8 @@ class ActiveSet {
         filter_(make_fourier_preconditioner<T>(grid, modulus, threads)),
         n_(static_cast<std::size_t>(grid.points())),
         u_(n_),
-        r_(n_),
         z_(n_),
         t_(n_),
-        w_(n_),
         in_(n_),
         plastic_(n_),
         sums_(static_cast<std::size_t>(std::max({operator_->threads(), filter_->threads(), threads}))) {
@@ -246,17 +244,20 @@ class ActiveSet {
   // Per-thread sums of a pass (one cache line each), combined in thread order: for a fixed thread count
   // the same every run.
   struct alignas(64) Sums {
-    double a = 0, b = 0, c = 0, d = 0, e = 0;  // e is combined as a maximum, the others as sums
+    double a = 0, b = 0, c = 0, d = 0;  // combined as sums
+    double e = 0, f = 0;                // combined as maxima
   };
 
   Sums combined() const {
     Sums all;
+    all.e = all.f = -std::numeric_limits<double>::infinity();
     for (const Sums& s : sums_) {
       all.a += s.a;
       all.b += s.b;
       all.c += s.c;
       all.d += s.d;
       all.e = std::max(all.e, s.e);
+      all.f = std::max(all.f, s.f);
     }
     return all;
   }
@@ -333,154 +334,157 @@ class ActiveSet {
   // d = separation_ and the sum free; u_ ends as G p. Stops when the residual's L2 norm has fallen by
   // `reduction` (0: never on that count), or when its largest value is at most `absolute` and the last
   // step's relative change of the pressure at most `step_change`, or after `budget` iterations. Returns the
-  // iterations. The element-wise work rides inside the two convolutions of an iteration
-  // (bem/convolution.hpp), summed per thread and combined in thread order (deterministic for a fixed
-  // thread count); the update is one parallel pass.
+  // iterations.
+  //
+  // The residual is r = u - h - c on the set (0 elsewhere), c its mean there under load control (the flat's
+  // unknown height) and -d under separation control; it is never stored. An iteration is two convolutions
+  // and no other pass over the arrays (bem/convolution.hpp):
+  //   filter:   producing r from u and h | consuming z, the filtered r kept on the set; <r, z> is <r, F r>,
+  //             the transform's own product (r is 0 off the set);
+  //   operator: producing the direction t | the step length from <t, G t>, the transform's product, before
+  //             any row comes back | consuming G t: p and u stepped, and the sums of the next residual.
+  // (A separate pass for the step cost a third of an iteration at 1024^2: it read and wrote five arrays.)
+  // Sums are per thread and combined in thread order: deterministic for a fixed thread count.
   Index cg_on_set(std::vector<T>& p, double reduction, double absolute, double step_change, Index budget,
                   const std::function<void()>& between) {
     operator_->apply(p.data(), u_.data());
-    // r = u - h on the set, its mean there removed, 0 elsewhere.
-    const Sums start = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
-      for (std::size_t k = begin; k < end; ++k)
-        if (in_[k]) {
-          part.a += static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
-          part.b += 1;
-        }
-    });
-    set_size_ = start.b;
-    if (set_size_ == 0) return 0;
-    // Load control: the mean of u - h on the set (its mean is the flat's unknown height); separation
-    // control: -d, so that r is the gap d + u - h.
-    const T r_mean = static_cast<T>(load_control_ ? start.a / start.b : -separation_);
-    const Sums norms = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
-      for (std::size_t k = begin; k < end; ++k) {
-        const T rv = in_[k] ? (u_[k] - h_[k]) - r_mean : T(0);
-        r_[k] = rv;
-        part.a += static_cast<double>(rv) * static_cast<double>(rv);
-        part.e = std::max(part.e, static_cast<double>(std::abs(rv)));
-      }
-    });
-    const double r0 = std::sqrt(norms.a);
-    double largest = norms.e;
-    const Index nx = grid_.nx, ny = grid_.ny;
     const std::uint8_t* const in = in_.data();
-    T* const r = r_.data();
+    const T* const h = h_.data();
     T* const z = z_.data();
     T* const t = t_.data();
-    T* const w = w_.data();
     T* const u = u_.data();
     T* const pp = p.data();
+    const Index nx = grid_.nx;
+    // Of x = u - h - c on the set: its sum, its sum of squares, its largest and its smallest value (as the
+    // largest of -x), the nodes; the residual r = x - (its mean) under load control, x under separation
+    // control (where c = -d already is the shift).
+    double c = load_control_ ? 0.0 : -separation_;
+    auto residual_sums = [&](Sums& part, std::size_t k) {
+      const double x = static_cast<double>(u[k]) - static_cast<double>(h[k]) - c;
+      part.a += x;
+      part.b += x * x;
+      part.e = std::max(part.e, x);
+      part.f = std::max(part.f, -x);
+    };
+    // c first from a pass of its own: sums of squares about a far-off c would lose the residual to
+    // cancellation (u - h is about -d on the set, the residual many decades smaller).
+    const Sums count = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+      for (std::size_t k = begin; k < end; ++k)
+        if (in[k]) {
+          part.a += static_cast<double>(u[k]) - static_cast<double>(h[k]);
+          part.c += 1;
+        }
+    });
+    set_size_ = count.c;
+    if (set_size_ == 0) return 0;
+    if (load_control_) c = count.a / set_size_;
+    const Sums start = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+      part.e = part.f = -std::numeric_limits<double>::infinity();
+      for (std::size_t k = begin; k < end; ++k)
+        if (in[k]) residual_sums(part, k);
+    });
+    double norm = 0, largest = 0;
+    // c moved to the mean of x (load control), and the residual's norm and largest value from the sums.
+    auto settle = [&](const Sums& s) {
+      const double shift = load_control_ ? s.a / set_size_ : 0.0;
+      c += shift;
+      norm = std::sqrt(std::max(s.b - 2 * shift * s.a + set_size_ * shift * shift, 0.0));
+      largest = std::max(s.e - shift, s.f + shift);
+    };
+    settle(start);
+    const double r0 = norm;
     auto clear = [&] {
       for (Sums& s : sums_)
         s = Sums{};
     };
-    // Filter: the residual in, z = its image kept on the set out; sums z and r z.
+    // Filter: r in; z = its image kept on the set out, with its sum.
+    T shift_c = 0;
     auto residual_in = [&](Index first, Index rows, T* buffer, Index ld, int) {
-      for (Index y = 0; y < rows; ++y)
-        std::copy_n(r + (first + y) * nx, nx, buffer + y * ld);
+      const T cc = shift_c;
+      for (Index y = 0; y < rows; ++y) {
+        const Index i0 = (first + y) * nx;
+        for (Index x = 0; x < nx; ++x)
+          buffer[y * ld + x] = in[i0 + x] ? (u[i0 + x] - h[i0 + x]) - cc : T(0);
+      }
     };
     auto filtered_out = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
       Sums& s = sums_[static_cast<std::size_t>(thread)];
       for (Index y = 0; y < rows; ++y) {
         const Index i0 = (first + y) * nx;
-        double z_sum = 0, rz = 0, r_sum = 0;
+        double z_sum = 0;
         for (Index x = 0; x < nx; ++x) {
           const T zv = in[i0 + x] ? buffer[y * ld + x] : T(0);
           z[i0 + x] = zv;
           z_sum += static_cast<double>(zv);
-          rz += static_cast<double>(r[i0 + x]) * static_cast<double>(zv);
-          r_sum += static_cast<double>(r[i0 + x]);
         }
         s.a += z_sum;
-        s.b += rz;
-        s.c += r_sum;
       }
     };
-    // Operator: the direction t = (z - zbar) + beta t on the set in, w = G t out; sums t, w on the set, t w.
-    T zbar = 0, beta = 0;
-    auto direction_in = [&](Index first, Index rows, T* buffer, Index ld, int thread) {
-      Sums& s = sums_[static_cast<std::size_t>(thread)];
+    // Operator: the direction t = (z - zbar) + beta t on the set in; the step tau = <r, z>/<t, G t> once the
+    // spectrum is multiplied; G t out: p -= tau t, u -= tau G t, and the sums of the new residual and of the
+    // pressure's change.
+    T zbar = 0, beta = 0, tau = 0;
+    double rz = 0, t_gt = 0;
+    auto direction_in = [&](Index first, Index rows, T* buffer, Index ld, int) {
       const T zb = zbar, b = beta;
       for (Index y = 0; y < rows; ++y) {
         const Index i0 = (first + y) * nx;
-        double t_sum = 0;
         for (Index x = 0; x < nx; ++x) {
           const T tv = in[i0 + x] ? (z[i0 + x] - zb) + b * t[i0 + x] : T(0);
           t[i0 + x] = tv;
           buffer[y * ld + x] = tv;
-          t_sum += static_cast<double>(tv);
         }
-        s.a += t_sum;
       }
     };
-    auto response_out = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
+    auto step_length = [&](double product) {
+      t_gt = product;
+      tau = static_cast<T>(t_gt > 0 ? rz / t_gt : 0.0);
+    };
+    auto stepped_out = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
       Sums& s = sums_[static_cast<std::size_t>(thread)];
+      const T step = tau;
       for (Index y = 0; y < rows; ++y) {
         const Index i0 = (first + y) * nx;
-        double w_sum = 0, tw = 0;
+        double moved = 0, sum = 0;
         for (Index x = 0; x < nx; ++x) {
-          const T wv = buffer[y * ld + x];
-          w[i0 + x] = wv;
-          w_sum += in[i0 + x] ? static_cast<double>(wv) : 0.0;
-          tw += static_cast<double>(t[i0 + x]) * static_cast<double>(wv);
+          const std::size_t k = static_cast<std::size_t>(i0 + x);
+          const T change = step * t[k];
+          moved += std::abs(static_cast<double>(change));
+          pp[k] -= change;
+          sum += std::abs(static_cast<double>(pp[k]));
+          u[k] -= step * buffer[y * ld + x];
+          if (in[k]) residual_sums(s, k);
         }
-        s.b += w_sum;
-        s.c += tw;
+        s.c += moved;
+        s.d += sum;
       }
     };
     using Producer = typename Convolution<T>::Producer;
     using Consumer = typename Convolution<T>::Consumer;
+    using ProductHook = typename Convolution<T>::ProductHook;
 
     double rz_old = 0;
     Index iterations = 0;
     last_step_change_ = 0;  // no step yet: the pressure has not moved
-    for (double norm = r0; iterations < budget; ++iterations) {
+    for (; iterations < budget; ++iterations) {
       if ((largest <= absolute && last_step_change_ <= step_change) || norm <= reduction * r0 || norm == 0)
         break;
       if (between) between();
       clear();
-      filter_->apply(Producer(residual_in), Consumer(filtered_out));
-      Sums f = combined();
-      zbar = static_cast<T>(load_control_ ? f.a / set_size_ : 0.0);
-      const double rz = f.b - static_cast<double>(zbar) * f.c;  // <r, z - zbar>
+      shift_c = static_cast<T>(c);
+      rz = filter_->apply(Producer(residual_in), Consumer(filtered_out), {}, true);  // <r, z>
+      zbar = static_cast<T>(load_control_ ? combined().a / set_size_ : 0.0);
       if (!(rz > 0)) break;  // no descent left (a set of one node, or round-off)
       beta = static_cast<T>(rz_old > 0 ? rz / rz_old : 0.0);
       rz_old = rz;
       clear();
-      operator_->apply(Producer(direction_in), Consumer(response_out));
-      f = combined();
-      // w restricted to the set with its mean there removed: the operator of the constrained problem.
-      const double w_mean = load_control_ ? f.b / set_size_ : 0.0;
-      const double tw = f.c - w_mean * f.a;
-      if (!(tw > 0)) break;
-      const T tau = static_cast<T>(rz / tw), wm = static_cast<T>(w_mean);
-      clear();
-#pragma omp parallel num_threads(static_cast <int>(sums_.size()))
-      {
-        const int thread = omp_get_thread_num(), team = omp_get_num_threads();
-        const Index y0 = ny * thread / team, y1 = ny * (thread + 1) / team;
-        Sums& s = sums_[static_cast<std::size_t>(thread)];
-        double moved = 0, sum = 0, l2 = 0, top = 0;
-        for (Index i = y0 * nx; i < y1 * nx; ++i) {
-          const T step = tau * t[i];
-          moved += std::abs(static_cast<double>(step));
-          pp[i] -= step;
-          sum += std::abs(static_cast<double>(pp[i]));
-          u[i] -= tau * w[i];
-          const T rv = in[i] ? r[i] - tau * (w[i] - wm) : T(0);
-          r[i] = rv;
-          l2 += static_cast<double>(rv) * static_cast<double>(rv);
-          top = std::max(top, static_cast<double>(std::abs(rv)));
-        }
-        s.a = moved;
-        s.b = sum;
-        s.c = l2;
-        s.e = top;
-      }
-      f = combined();
-      last_step_change_ = f.b > 0 ? f.a / f.b : 0;
-      norm = std::sqrt(f.c);
-      largest = f.e;
+      for (Sums& s : sums_)
+        s.e = s.f = -std::numeric_limits<double>::infinity();
+      operator_->apply(Producer(direction_in), Consumer(stepped_out), {}, true, ProductHook(step_length));
+      if (!(t_gt > 0)) break;  // nothing moved: tau was 0
+      const Sums f = combined();
+      last_step_change_ = f.d > 0 ? f.c / f.d : 0;
+      settle(f);
     }
     return iterations;
   }
@@ -533,7 +537,7 @@ class ActiveSet {
   int threads_;
   std::unique_ptr<Convolution<T>> operator_, filter_;
   std::size_t n_;
-  std::vector<T> u_, r_, z_, t_, w_;
+  std::vector<T> u_, z_, t_;           // G p, the filtered residual, the CG's direction
   std::vector<std::uint8_t> in_;       // the elastic contact set
   std::vector<std::uint8_t> plastic_;  // the plastic set, p = H (none without a hardness)
   bool load_control_ = true;

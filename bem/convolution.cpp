@@ -285,14 +285,15 @@ void Convolution<T>::set_multiplier(
 }
 
 template <class T>
-double Convolution<T>::apply(Producer produce, Consumer consume, Hook between, bool product) {
+double Convolution<T>::apply(Producer produce, Consumer consume, Hook between, bool product,
+                             ProductHook multiplied) {
   Impl& m = *impl_;
   using F = typename Impl::F;
   using FCx = typename F::Cx;
   using Cx = typename Impl::Cx;
   constexpr Index B = Impl::kColumnsPerBlock;
   const Index nxh = m.nxh, ny = ny_, ly = ly_, mult_rows = m.mult_rows;
-  const bool want_energy = product;
+  const bool want_energy = product || static_cast<bool>(multiplied);
   const Index row_chunks = (ny + kRowsPerChunk - 1) / kRowsPerChunk;
   const Index column_blocks = (nxh + B - 1) / B;
   const bool inverse = static_cast<bool>(consume);
@@ -341,6 +342,16 @@ double Convolution<T>::apply(Producer produce, Consumer consume, Hook between, b
       }
     }
     m.partial[static_cast<std::size_t>(thread)].energy = energy;
+    if (multiplied) {
+#pragma omp barrier
+#pragma omp single
+      {
+        double all = 0;  // in thread order: the same sum every run
+        for (const auto& p : m.partial)
+          all += p.energy;
+        multiplied(all);
+      }
+    }
 
     // 3. Rows: complex-to-real along x, read by the caller.
     if (inverse) {

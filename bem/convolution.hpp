@@ -59,6 +59,9 @@ class Convolution {
   // Run by one thread once every row is produced and before any is consumed (e.g. to combine the
   // producers' sums into what the consumers need).
   using Hook = FunctionRef<void()>;
+  // Run by one thread once the spectrum is multiplied and before any row is transformed back, with the
+  // product in . out (e.g. a step length that the consumers then apply).
+  using ProductHook = FunctionRef<void(double)>;
 
   // nx x ny grid; `padded`: linear convolution (zero padding to 2 nx x 2 ny), else circular.
   Convolution(Index nx, Index ny, bool padded, int threads);
@@ -85,8 +88,10 @@ class Convolution {
 
   // out = conv(in) through the callbacks. With `product`, returns in . out = sum_k M_k |in_k|^2 (over the
   // full lattice), computed in the spectral domain while the transform passes (else 0). With an empty
-  // `consume` the inverse transform is skipped (half the cost): only the product is computed.
-  double apply(Producer produce, Consumer consume, Hook between = {}, bool product = false);
+  // `consume` the inverse transform is skipped (half the cost): only the product is computed. A non-empty
+  // `multiplied` is given that product before any row is consumed (it implies `product`).
+  double apply(Producer produce, Consumer consume, Hook between = {}, bool product = false,
+               ProductHook multiplied = {});
 
   // Plain arrays: out (ny x nx, row-major) = conv(in); in and out may be the same array.
   void apply(const T* in, T* out);
