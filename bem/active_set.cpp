@@ -68,6 +68,7 @@ class ActiveSet {
         filter_(make_fourier_preconditioner<T>(grid, modulus, threads)),
         n_(static_cast<std::size_t>(grid.points())),
         u_(n_),
+        r_(n_),
         z_(n_),
         t_(n_),
         in_(n_),
@@ -336,14 +337,14 @@ class ActiveSet {
   // step's relative change of the pressure at most `step_change`, or after `budget` iterations. Returns the
   // iterations.
   //
-  // The residual is r = u - h - c on the set (0 elsewhere), c its mean there under load control (the flat's
-  // unknown height) and -d under separation control; it is never stored. An iteration is two convolutions
-  // and no other pass over the arrays (bem/convolution.hpp):
-  //   filter:   producing r from u and h | consuming z, the filtered r kept on the set; <r, z> is <r, F r>,
-  //             the transform's own product (r is 0 off the set);
+  // The residual is u - h - c on the set (0 elsewhere), c its mean there under load control (the flat's
+  // unknown height) and -d under separation control. An iteration is two convolutions and no other pass
+  // over the arrays (bem/convolution.hpp):
+  //   filter:   producing r | consuming z, the filtered r kept on the set; <r, z> is <r, F r>, the
+  //             transform's own product (r is 0 off the set);
   //   operator: producing the direction t | the step length from <t, G t>, the transform's product, before
-  //             any row comes back | consuming G t: p and u stepped, and the sums of the next residual.
-  // (A separate pass for the step cost a third of an iteration at 1024^2: it read and wrote five arrays.)
+  //             any row comes back | consuming G t: p, u and r stepped, and the sums of the next residual.
+  // (A separate pass for the step read five arrays and wrote three; G t is no longer stored.)
   // Sums are per thread and combined in thread order: deterministic for a fixed thread count.
   Index cg_on_set(std::vector<T>& p, double reduction, double absolute, double step_change, Index budget,
                   const std::function<void()>& between) {
@@ -355,19 +356,22 @@ class ActiveSet {
     T* const u = u_.data();
     T* const pp = p.data();
     const Index nx = grid_.nx;
-    // Of x = u - h - c on the set: its sum, its sum of squares, its largest and its smallest value (as the
-    // largest of -x), the nodes; the residual r = x - (its mean) under load control, x under separation
-    // control (where c = -d already is the shift).
-    double c = load_control_ ? 0.0 : -separation_;
+    // The residual is r - c on the set: r stepped by the CG (r -= tau G t), c the mean those steps add to it
+    // under load control (0 under separation control). Stepped, not formed from u - h at each step: in single
+    // precision u - h carries the round-off of u (about 1e-14 m on a micrometre surface), and at 2048^2 the
+    // residual's norm never fell below that floor (the solve ran on for minutes). Of x = r - c on the set:
+    // its sum, its sum of squares, its largest and its smallest value (as the largest of -x).
+    T* const r = r_.data();
+    double c = 0;
     auto residual_sums = [&](Sums& part, std::size_t k) {
-      const double x = static_cast<double>(u[k]) - static_cast<double>(h[k]) - c;
+      const double x = static_cast<double>(r[k]) - c;
       part.a += x;
       part.b += x * x;
       part.e = std::max(part.e, x);
       part.f = std::max(part.f, -x);
     };
-    // c first from a pass of its own: sums of squares about a far-off c would lose the residual to
-    // cancellation (u - h is about -d on the set, the residual many decades smaller).
+    // The start's mean first, from a pass of its own: sums of squares about a far-off mean would lose the
+    // residual to cancellation (u - h is about -d on the set, the residual many decades smaller).
     const Sums count = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
       for (std::size_t k = begin; k < end; ++k)
         if (in[k]) {
@@ -377,11 +381,15 @@ class ActiveSet {
     });
     set_size_ = count.c;
     if (set_size_ == 0) return 0;
-    if (load_control_) c = count.a / set_size_;
+    // r = u - h less its mean on the set (load control), u - h + d (separation control).
+    const double start_shift = load_control_ ? count.a / set_size_ : -separation_;
     const Sums start = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
       part.e = part.f = -std::numeric_limits<double>::infinity();
-      for (std::size_t k = begin; k < end; ++k)
+      for (std::size_t k = begin; k < end; ++k) {
+        r[k] = in[k] ? static_cast<T>(static_cast<double>(u[k]) - static_cast<double>(h[k]) - start_shift)
+                     : T(0);
         if (in[k]) residual_sums(part, k);
+      }
     });
     double norm = 0, largest = 0;
     // c moved to the mean of x (load control), and the residual's norm and largest value from the sums.
@@ -404,7 +412,7 @@ class ActiveSet {
       for (Index y = 0; y < rows; ++y) {
         const Index i0 = (first + y) * nx;
         for (Index x = 0; x < nx; ++x)
-          buffer[y * ld + x] = in[i0 + x] ? (u[i0 + x] - h[i0 + x]) - cc : T(0);
+          buffer[y * ld + x] = in[i0 + x] ? r[i0 + x] - cc : T(0);
       }
     };
     auto filtered_out = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
@@ -452,8 +460,12 @@ class ActiveSet {
           moved += std::abs(static_cast<double>(change));
           pp[k] -= change;
           sum += std::abs(static_cast<double>(pp[k]));
-          u[k] -= step * buffer[y * ld + x];
-          if (in[k]) residual_sums(s, k);
+          const T w = buffer[y * ld + x];
+          u[k] -= step * w;
+          if (in[k]) {
+            r[k] -= step * w;
+            residual_sums(s, k);
+          }
         }
         s.c += moved;
         s.d += sum;
@@ -537,7 +549,7 @@ class ActiveSet {
   int threads_;
   std::unique_ptr<Convolution<T>> operator_, filter_;
   std::size_t n_;
-  std::vector<T> u_, z_, t_;           // G p, the filtered residual, the CG's direction
+  std::vector<T> u_, r_, z_, t_;       // G p, the CG's residual, the filtered residual, the CG's direction
   std::vector<std::uint8_t> in_;       // the elastic contact set
   std::vector<std::uint8_t> plastic_;  // the plastic set, p = H (none without a hardness)
   bool load_control_ = true;

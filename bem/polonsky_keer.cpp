@@ -380,7 +380,7 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     // separation control) the residual is not the gap less its mean on the set: preconditioned that way the
     // iteration stopped after 6 iterations on surface A with a residual of 5 % of the height range and the
     // load 100 x off, yet "converged". Those solves iterate as plain Polonsky-Keer (python/tests/test_bem.py
-    // checks that separation control gives the load back with the default solver).
+    // checks that separation control gives the load back; active_set solves them itself).
     const bool preconditioned = preconditioner_ != nullptr && kLoad;
     T* const z = z_.data();
     auto residual = [&](Index first, Index rows, T* buffer, Index ld, int thread) {

@@ -24,9 +24,11 @@
 //   relative change at most the tolerance; bem/active_set.hpp). The default (kDefaultSolver): the fastest
 //   of the three along the load curves scenes run, from 256^2 to 1024^2 (docs/solvers.md).
 //
-// preconditioned_cg and active_set apply to load-controlled elastic solves; separation control and the
-// hardness cap (met through separation control) iterate as polonsky_keer whichever solver is chosen
-// (polonsky_keer.cpp says why).
+// active_set solves every problem itself: load or separation control, elastic or capped at a hardness (a
+// third, plastic set; a capped load is one solve). preconditioned_cg applies to load-controlled elastic
+// solves; under separation control and with a hardness it iterates as polonsky_keer (polonsky_keer.cpp says
+// why), and with both of them a capped load is met by a search on the flat's height, each trial a capped
+// solve under separation control.
 //
 // Stopping criteria of polonsky_keer and preconditioned_cg, the same tolerance for both (active_set: above):
 // - the relative change of the pressure in one iteration (Polonsky & Keer's),

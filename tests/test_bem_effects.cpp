@@ -293,7 +293,7 @@ TEST_P(Separation, HertzLoadOfAnApproach) {
 }
 
 TEST_P(Separation, WithHardnessGivesBackTheCappedLoad) {
-  // The capped sphere (H = 0.7 p0): load control searches the flat's height; solving for the height it
+  // The capped sphere (H = 0.7 p0): load control finds the flat's height; solving for the height it
   // found carries the load again, with the same plastic core (tolerance as in the elastic case; measured:
   // 7e-14).
   const Index n = 128;
