@@ -486,6 +486,22 @@ TEST_P(BemValidation, AWarmStartedCurveGivesTheColdAnswersInBothDirections) {
   }
 }
 
+TEST(ActiveSetSinglePrecision, ALargeContactSetConverges) {
+  // Surface A refined from 256^2 to 512^2 (as `contactbench generate --grid 256 --refine 512`) in float at
+  // P/(E* A0) = 0.03, 37 % contact: the residual's norm must keep falling below the round-off of u - h
+  // (about 1e-14 m here, times the root of the set's size). A version that formed the residual from u - h
+  // at every step instead of stepping it never reached its inner reduction there and ran until the cap
+  // (measured: 511 iterations, stopped by the cap of 500; stepped: 63, 0.3 s).
+  const Grid grid = paper::grid();
+  const Surface surface = synthesize(grid, generate_coefficients(grid, paper::surface_a(), 1), 512, 512);
+  PolonskyKeer solver(
+      surface, kModulus,
+      {.tolerance = 1e-6, .max_iterations = 500, .single_precision = true, .solver = SolverKind::active_set});
+  const ContactSolution& s = solver.solve(0.03 * kModulus);
+  EXPECT_TRUE(s.converged) << s.iterations << " iterations";
+  EXPECT_LT(s.iterations, 150);
+}
+
 TEST(ActiveSetWarmStart, ACurveCostsLessThanColdSolves) {
   // Why active_set warm-starts from the last solution's contact set (bem/active_set.cpp): the cold start's
   // set rule applied to the scaled last pressure let too many nodes in, and a warm curve cost 0.88 (256^2) to
