@@ -144,6 +144,14 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
 
   bool caps_load_control() const override { return active_set_; }
 
+  // The hardness as T holds it. Plastic nodes store static_cast<T>(H), and every test p >= H (the sets of
+  // the iteration, write()'s plastic count and residual) must compare with that value: in float, H = 3.2967e9
+  // Pa rounds down, and compared with the double H the plastic nodes counted as elastic, so a capped solve
+  // reported no plastic node, a residual of 0.24 of the height range and "not converged".
+  static double stored(double hardness) {
+    return std::isfinite(hardness) ? static_cast<double>(static_cast<T>(hardness)) : hardness;
+  }
+
   Outcome solve_load(double mean_pressure, double hardness, double tolerance, Index max_iterations,
                      bool extrapolate) override {
     const double total = mean_pressure * static_cast<double>(n_);
@@ -186,7 +194,7 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
                            Index max_iterations) override {
     loads_solved_ = 0;
     separation_ = separation;
-    hardness_ = hardness;
+    hardness_ = stored(hardness);
     if (active_set_) {
       const Outcome outcome = solve_active_set(
           {.load_control = false, .separation = separation, .hardness = hardness}, tolerance, max_iterations);
@@ -209,8 +217,9 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     return outcome;
   }
 
-  void impose_load(double mean_pressure, double hardness) override {
+  void impose_load(double mean_pressure, double given_hardness) override {
     // One pass to scale the elastic pressures, one application of G for the gap (a load-control gap pass).
+    const double hardness = stored(given_hardness);
     std::vector<T>& q = q_[cur_];
     const double s = s_[cur_];
     double elastic = 0, plastic = 0;
@@ -329,8 +338,7 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     q_[cur_] = std::move(pressure);
     s_[cur_] = 1;
     last_sum_ = q_sum(q_[cur_]);
-    // Plastic nodes hold the hardness rounded to T: write() counts them by it.
-    hardness_ = static_cast<double>(static_cast<T>(problem.hardness));
+    hardness_ = stored(problem.hardness);
     separation_ = result.separation;
     gap_offset_ = separation_;  // g holds u - h: the gap is g + d
     return Outcome{.iterations = result.iterations, .change = result.change, .converged = result.converged};
