@@ -296,16 +296,16 @@ class ActiveSet {
     const double most = std::isfinite(static_cast<double>(cap_)) ? std::ceil(total / cap_) - 1 : 0.0;
     const std::size_t m = static_cast<std::size_t>(std::clamp(most, 0.0, static_cast<double>(n_ - 1)));
     operator_->apply(p.data(), u_.data());
-    std::vector<T> depth(n_);
+    std::vector<T> ranked(n_);  // the depths h - u, partly sorted
     for (std::size_t k = 0; k < n_; ++k)
-      depth[k] = h_[k] - u_[k];
-    std::vector<T> ranked = depth;
+      ranked[k] = h_[k] - u_[k];
     std::nth_element(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(m), ranked.end(),
                      std::greater<>());
     const T level = ranked[m];
     for (std::size_t k = 0; k < n_; ++k) {
-      plastic_[k] = depth[k] > level;
-      in_[k] = depth[k] == level;
+      const T depth = h_[k] - u_[k];  // as ranked: the same operation on the same values
+      plastic_[k] = depth > level;
+      in_[k] = depth == level;
       p[k] = plastic_[k] ? cap_ : T(in_[k] ? 1 : 0);
     }
   }
@@ -337,14 +337,13 @@ class ActiveSet {
   // step's relative change of the pressure at most `step_change`, or after `budget` iterations. Returns the
   // iterations.
   //
-  // The residual is u - h - c on the set (0 elsewhere), c its mean there under load control (the flat's
-  // unknown height) and -d under separation control. An iteration is two convolutions and no other pass
-  // over the arrays (bem/convolution.hpp):
+  // The residual is the gap less its mean on the set under load control (the mean is the flat's unknown
+  // height), the gap d + u - h under separation control; 0 off the set. An iteration is two convolutions
+  // and no other pass over the arrays (bem/convolution.hpp):
   //   filter:   producing r | consuming z, the filtered r kept on the set; <r, z> is <r, F r>, the
   //             transform's own product (r is 0 off the set);
   //   operator: producing the direction t | the step length from <t, G t>, the transform's product, before
   //             any row comes back | consuming G t: p, u and r stepped, and the sums of the next residual.
-  // (A separate pass for the step read five arrays and wrote three; G t is no longer stored.)
   // Sums are per thread and combined in thread order: deterministic for a fixed thread count.
   Index cg_on_set(std::vector<T>& p, double reduction, double absolute, double step_change, Index budget,
                   const std::function<void()>& between) {

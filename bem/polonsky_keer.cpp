@@ -64,6 +64,7 @@ class PolonskyKeer::Engine {
   // load-controlled solutions (when there are two), else from the last one scaled to the new load.
   virtual Outcome solve_load(double mean_pressure, double hardness, double tolerance, Index max_iterations,
                              bool extrapolate) = 0;
+  // Whether solve_load meets a hardness itself (active_set's plastic set) rather than solving elastically.
   virtual bool caps_load_control() const = 0;
   // Separation control: the flat at `separation`, the load found; pressures capped at `hardness` (may be
   // infinite).
