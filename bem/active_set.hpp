@@ -3,12 +3,13 @@
 // separation control, elastic or with pressures capped at a hardness H (perfectly plastic).
 //
 // Guess the contact set A; solve the LINEAR problem on it (gap = 0 on A, p = 0 elsewhere, sum p = the load)
-// by a conjugate gradient preconditioned by the Fourier filter (E*/2)|q| (bem/fourier_preconditioner.hpp),
-// restricted to A with its mean there removed; then update the set, A <- {i in A: p_i > 0} u {i not in A:
-// g_i < 0}, and repeat. The outer steps settle the set; the inner CG sees a fixed set, so it is a plain
-// preconditioned CG whose convergence is not disturbed by nodes entering and leaving. Inner solves stop at a
-// loose relative residual (kInnerReduction) while the set still changes, which is what makes the outer
-// steps cheap; once the set has not changed, the last inner solve runs to the tolerance.
+// by a conjugate gradient preconditioned by the Fourier filter (E*/2)|q| (bem/fourier_preconditioner.hpp)
+// applied to the residual extended off A by its local averages (the extended filter, bem/box_sum.hpp), the
+// result gathered back onto A by the transpose and its mean there removed; then update the set, A <- {i in A:
+// p_i > 0} u {i not in A: g_i < 0}, and repeat. The outer steps settle the set; the inner CG sees a fixed
+// set, so it is a plain preconditioned CG whose convergence is not disturbed by nodes entering and leaving.
+// Inner solves stop at a loose relative residual (kInnerReduction) while the set still changes, which is what
+// makes the outer steps cheap; once the set has not changed, the last inner solve runs to the tolerance.
 //
 // A cold solve starts from a nested coarse solution: the surface averaged over 2 x 2 blocks solved the same
 // way (itself from a coarser one, down to kCoarsest points a side), its pressure interpolated bilinearly to

@@ -210,8 +210,9 @@ class BemMethod final : public Method {
   // otherwise grow for minutes until the kernel kills it). Bytes per point of the whole process, measured as
   // peak resident memory (/usr/bin/time) of `contactbench bem` on 1024^2 and 2048^2 surfaces (the two agree
   // within 7 %): 150 periodic, 175 non-periodic, 115 / 135 in single precision; active_set adds its coarse
-  // levels and set arrays, +70 / +95 (+40 / +50 in single precision; measured the same way on surface A at
-  // 2048^2, P/(E* A0) = 0.01: 217, 269, 154 and 181 bytes per point in all). extrapolate = true solves the
+  // levels, set arrays and the extended filter's weights and window sums, +94 / +119 (+56 / +66 in single
+  // precision; measured the same way on surface A at 2048^2, P/(E* A0) = 0.01: 241, 293, 170 and 197 bytes
+  // per point in all). extrapolate = true solves the
   // same loads again on 4 times the points, after the first grid is freed: the finer solve is the peak.
   void check_memory(const MethodCheck& check) const {
     const Grid& grid = check.surface.grid();
@@ -221,7 +222,7 @@ class BemMethod final : public Method {
     const bool periodic = periodic_.value_or(grid.periodic);
     std::uintmax_t per_point = solve_.single_precision ? (periodic ? 115 : 135) : (periodic ? 150 : 175);
     if (solve_.solver == SolverKind::active_set)
-      per_point += solve_.single_precision ? (periodic ? 40 : 50) : (periodic ? 70 : 95);
+      per_point += solve_.single_precision ? (periodic ? 56 : 66) : (periodic ? 94 : 119);
     const std::uintmax_t points =
         saturating_product(static_cast<std::uintmax_t>(side * nx), static_cast<std::uintmax_t>(side * ny));
     try {

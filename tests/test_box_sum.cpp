@@ -1,0 +1,75 @@
+// The window sums of bem/box_sum.hpp against the sum of every window point by point.
+#include "contactbench/bem/box_sum.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+namespace contactbench {
+namespace {
+
+// The sum over the (2 radius + 1)^2 window at (x, y), point by point: wrapped when periodic, the points
+// outside the grid left out otherwise.
+double direct_sum(const std::vector<double>& v, Index nx, Index ny, Index radius, bool periodic, Index x,
+                  Index y) {
+  double sum = 0;
+  for (Index dy = -radius; dy <= radius; ++dy)
+    for (Index dx = -radius; dx <= radius; ++dx) {
+      Index i = x + dx, j = y + dy;
+      if (periodic) {
+        i = (i + nx) % nx;
+        j = (j + ny) % ny;
+      } else if (i < 0 || i >= nx || j < 0 || j >= ny) {
+        continue;
+      }
+      sum += v[static_cast<std::size_t>(j * nx + i)];
+    }
+  return sum;
+}
+
+TEST(BoxSum, MatchesTheSumOfEveryWindow) {
+  // A non-square grid with odd sides, radii from 0 to the largest a periodic window allows, 1 and 2 threads
+  // (rows split differently). Running sums add and subtract: agreement to 1e-12 of the values' scale (each
+  // sum is of at most 9 x 11 = 99 values of order 1, a few hundred roundings of 1e-16).
+  const Index nx = 11, ny = 9;
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  std::vector<double> values(static_cast<std::size_t>(nx * ny));
+  for (double& v : values)
+    v = uniform(random);
+  std::vector<double> scratch, sums(values.size());
+  for (const bool periodic : {true, false})
+    for (const Index radius : {0, 1, 2, 4})
+      for (const int threads : {1, 2}) {
+        box_sum(
+            nx, ny, radius, periodic, [&](std::size_t k) { return values[k]; },
+            [&](std::size_t k, double sum, int) { sums[k] = sum; }, scratch, threads);
+        for (Index y = 0; y < ny; ++y)
+          for (Index x = 0; x < nx; ++x)
+            EXPECT_NEAR(sums[static_cast<std::size_t>(y * nx + x)],
+                        direct_sum(values, nx, ny, radius, periodic, x, y), 1e-12)
+                << (periodic ? "periodic" : "non-periodic") << ", radius " << radius << ", " << threads
+                << " threads, at (" << x << ", " << y << ")";
+      }
+}
+
+TEST(BoxSum, EmitsEveryPointOnceFromAThreadOfTheTeam) {
+  const Index nx = 16, ny = 13;
+  std::vector<int> visits(static_cast<std::size_t>(nx * ny), 0);
+  std::vector<double> scratch;
+  box_sum(
+      nx, ny, 3, false, [](std::size_t) { return 1.0; },
+      [&](std::size_t k, double, int thread) {
+        EXPECT_GE(thread, 0);
+        EXPECT_LT(thread, 2);
+#pragma omp atomic
+        ++visits[k];
+      },
+      scratch, 2);
+  for (const int v : visits)
+    EXPECT_EQ(v, 1);
+}
+
+}  // namespace
+}  // namespace contactbench
