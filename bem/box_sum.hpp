@@ -23,7 +23,7 @@ void box_sum(Index nx, Index ny, Index radius, bool periodic, Value value, Emit 
              std::vector<double>& scratch, int threads) {
   scratch.resize(static_cast<std::size_t>(nx * ny));
   double* const along_x = scratch.data();
-  // The index of i + step on a line of n points, or -1 outside a non-periodic line.
+  // The index of point i of a line of n points: wrapped when periodic, -1 outside the line otherwise.
   auto at = [periodic](Index i, Index n) -> Index {
     if (periodic) return (i % n + n) % n;
     return i >= 0 && i < n ? i : -1;
