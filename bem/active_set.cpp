@@ -529,8 +529,7 @@ class ActiveSet {
             box_scratch_, team());
       rz = filter_->apply(Producer(residual_in), Consumer(filtered_out), {}, true);  // <r, z>
       if (radius > 0) {  // the transpose: z on the set gains the window sums of z x weight off it
-        for (Sums& s : sums_)
-          s = Sums{};
+        clear();
         box_sum(
             grid_.nx, grid_.ny, radius, grid_.periodic,
             [&](std::size_t k) { return in[k] ? 0.0 : static_cast<double>(z[k]); },

@@ -522,9 +522,8 @@ TEST(ActiveSetWarmStart, ACurveCostsLessThanColdSolves) {
   // 1.10 (512^2) of the cold solves' iterations; from the last set, 0.81 (docs/solvers.md, "Load paths").
   // Surface A on 256 x 256 points, 10 loads P/(E* A0) = 0.001 ... 0.01 (the benchmark's curve, 2 to 17 %
   // contact), tolerance 1e-8. Measured: 254 against 315 iterations (before the extended filter, 395 against
-  // 490; the old rule: 432 of 490); at most 0.85 tells
-  // the two rules apart (the counts are deterministic; a few iterations of platform difference fit the
-  // margin).
+  // 490; the old rule: 432 of 490); at most 0.85 tells the two rules apart (the counts are deterministic; a
+  // few iterations of platform difference fit the margin).
   const Surface surface = surface_a(256, 1);
   const PolonskyKeerOptions options{
       .tolerance = 1e-8, .max_iterations = 20000, .solver = SolverKind::active_set};

@@ -31,7 +31,7 @@ double direct_sum(const std::vector<double>& v, Index nx, Index ny, Index radius
 TEST(BoxSum, MatchesTheSumOfEveryWindow) {
   // A non-square grid with odd sides, radii from 0 to the largest a periodic window allows, 1 and 2 threads
   // (rows split differently). Running sums add and subtract: agreement to 1e-12 of the values' scale (each
-  // sum is of at most 9 x 11 = 99 values of order 1, a few hundred roundings of 1e-16).
+  // sum is of at most 9 x 9 = 81 values of order 1, a few hundred roundings of 1e-16).
   const Index nx = 11, ny = 9;
   std::mt19937_64 random(5);
   std::uniform_real_distribution<double> uniform(-1, 1);
