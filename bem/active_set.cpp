@@ -104,27 +104,35 @@ class ActiveSet {
                                            : std::numeric_limits<T>::infinity();
     const double total = problem.mean_pressure * static_cast<double>(n_);
     std::fill(plastic_.begin(), plastic_.end(), std::uint8_t{0});
+    displacement_current_ = displacement_fresh_ = false;
     if (!warm) outcome.coarse_iterations = nested_start(problem, p, between);
     if (load_control_) scale_to(p, total);
     // The starting sets. Cold: {p - k g > 0}, k the stiffness of one pixel, g the gap of the nested start
-    // (under load control with the flat from its mean on the start's own contact set). Warm: the start's
-    // own contact set {p > 0}, the previous solution's: under a growing load the set of the rule above
-    // overshoots (the scaled previous pressure presses the flat too deep; surface A at 256^2, load 0.001 ->
-    // 0.002: 8673 nodes for the 2472 of the solution), and the outer steps that shrink it back cost more
-    // than those that grow the previous set (10-load curve: 0.81-0.92 of the cold solves' iterations at
-    // 256^2 and 512^2 against 0.88-1.10; 0.99-1.01 at 1024^2, where the cold nested start is as good;
-    // docs/solvers.md). Of those, the nodes at or above the hardness start plastic.
+    // (under load control with the flat from its mean on the start's own contact set), under load control
+    // cut to the coarse level's contact area (keep_coarse_area). Warm: the start's own contact set {p > 0},
+    // the previous solution's: under a growing load the set of the rule above overshoots (the scaled
+    // previous pressure presses the flat too deep; surface A at 256^2, load 0.001 -> 0.002: 8673 nodes for
+    // the 2472 of the solution), and the outer steps that shrink it back cost more than those that grow the
+    // previous set (10-load curve: 0.81-0.92 of the cold solves' iterations at 256^2 and 512^2 against
+    // 0.88-1.10; 0.99-1.01 at 1024^2, where the cold nested start is as good; docs/solvers.md). Of those,
+    // the nodes at or above the hardness start plastic.
     operator_->apply(p.data(), u_.data());
+    displacement_current_ = displacement_fresh_ = true;
     for (std::size_t k = 0; k < n_; ++k)
       in_[k] = p[k] > 0;
     double d = load_control_ ? flat_height() : separation_;
-    const double stiffness = 1 / operator_->self_response();
+    if (!warm) {
+      const double stiffness = 1 / operator_->self_response();
+      std::size_t candidates = 0;
+      for (std::size_t k = 0; k < n_; ++k) {
+        const T score = start_score(p, k, d, stiffness);
+        in_[k] = score > 0;
+        if (in_[k]) z_[candidates++] = score;  // z_ is free until the CG
+      }
+      if (load_control_ && coarse_) keep_coarse_area(p, d, stiffness, candidates);
+    }
     Index in_count = 0;
     for (std::size_t k = 0; k < n_; ++k) {
-      if (!warm) {
-        const double g = d + static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
-        in_[k] = static_cast<double>(p[k]) - stiffness * g > 0;
-      }
       plastic_[k] = in_[k] && p[k] >= cap_;
       in_[k] = in_[k] && !plastic_[k];
       in_count += in_[k] + plastic_[k];
@@ -141,24 +149,31 @@ class ActiveSet {
     // share.
     bool capping = warm;
     bool final = false;
-    Index inner = 0;
+    Index inner = 0, fresh = 0;
     for (Index outer = 1; outer <= kMaxOuter; ++outer) {
       // The linear problem on the elastic set, from the current pressure kept on it (scaled to the load less
-      // what the plastic nodes carry, under load control), p = H on the plastic set, 0 elsewhere.
+      // what the plastic nodes carry, under load control), p = H on the plastic set, 0 elsewhere. Only nodes
+      // that left the set or became plastic change their pressure: when none did (nodes only entered, at
+      // p = 0, or nothing changed), the displacement stays G p and the CG needs no fresh one.
       const Sums kept = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
         for (std::size_t k = begin; k < end; ++k) {
+          const T before = p[k];
           if (plastic_[k])
             p[k] = cap_;
           else if (!in_[k])
             p[k] = 0;
           part.a += in_[k] ? static_cast<double>(p[k]) : 0.0;
           part.b += in_[k];
+          part.c += p[k] != before ? 1.0 : 0.0;
         }
       });
+      if (kept.c > 0) displacement_current_ = displacement_fresh_ = false;
       if (load_control_) {
-        if (!(kept.a > 0))
+        if (!(kept.a > 0)) {
           for (std::size_t k = 0; k < n_; ++k)
             if (in_[k]) p[k] = T(1);
+          displacement_current_ = displacement_fresh_ = false;
+        }
         // No elastic node leaves the flat's height undetermined, and plastic nodes carrying the load or
         // more leave nothing for the elastic ones (a very soft contact): the sets are made again.
         if (kept.b == 0 || !scale_to(p, total)) {
@@ -166,8 +181,9 @@ class ActiveSet {
           scale_to(p, total);
         }
       }
+      fresh += displacement_current_ ? 0 : 1;
       const Index steps = cg_on_set(p, final ? 0.0 : kInnerReduction, threshold(tolerance, d),
-                                    final ? tolerance : 0.0, max_iterations - inner - outer, between);
+                                    final ? tolerance : 0.0, max_iterations - inner - fresh, between);
       inner += steps;
       // The set update, from the CG's own displacement (updated with each step; a fresh one costs an
       // application of G, made once at the end).
@@ -203,9 +219,9 @@ class ActiveSet {
       outcome.outer = outer;
       outcome.residual = residual / height_range_;
       outcome.change = last_step_change_;
-      // Counted: the CG's iterations, one application of G per outer step (the CG's start) and two more
-      // (the starting set's gap, the final fresh gap), each as a whole iteration.
-      outcome.iterations = inner + outer + 2;
+      // Counted: the CG's iterations, the fresh displacements of the CG's starts and the starting set's gap
+      // (and below the final gap), each application of G as a whole iteration.
+      outcome.iterations = inner + fresh + 1;
       const bool above_cap = update.d > 0;
       if (changed == 0 && !above_cap && residual <= limit && last_step_change_ <= tolerance) {
         outcome.converged = true;
@@ -229,11 +245,19 @@ class ActiveSet {
       p[k] = kept;
     }
     if (clipped && load_control_) scale_to(p, total);
-    operator_->apply(p.data(), u_.data());
+    // The gap of the output afresh, not from the CG's steps; already so when the last outer step's start
+    // made it and no step or clipping followed (a set confirmed unchanged).
+    if (clipped || !(displacement_current_ && displacement_fresh_)) {
+      operator_->apply(p.data(), u_.data());
+      displacement_current_ = displacement_fresh_ = true;
+      ++outcome.iterations;
+    }
     for (std::size_t k = 0; k < n_; ++k)
       in_[k] = p[k] > 0 && !plastic_[k];
     d = load_control_ ? flat_height() : separation_;
     outcome.separation = d;
+    contact_fraction_ = static_cast<double>(std::count_if(p.begin(), p.end(), [](T v) { return v > 0; })) /
+                        static_cast<double>(n_);
     outcome.iterations += (outcome.coarse_iterations + 3) / 4;
     return outcome;
   }
@@ -293,6 +317,31 @@ class ActiveSet {
     return combined();
   }
 
+  // A cold start's score of node k, p - k g (k the stiffness of one pixel): the node starts in contact when
+  // it is positive.
+  T start_score(const std::vector<T>& p, std::size_t k, double d, double stiffness) const {
+    const double g = d + static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
+    return static_cast<T>(static_cast<double>(p[k]) - stiffness * g);
+  }
+
+  // A cold start under load control keeps at most as many nodes as the coarse level's solution has in
+  // contact (its fraction of the nodes), those of the largest scores (the first `candidates` values of z_).
+  // At a given load a finer grid resolves more roughness and touches less, or as much where the surface has
+  // none below the coarse pixel; the rule's set is larger still, the interpolated pressure being spread over
+  // the coarse spots (surface A at 1024^2 and 1 %: 15016 nodes, the coarse area 13132, the solution's
+  // 12095). A start sized to the fine area extrapolated over the levels cost more outer steps: the steps
+  // shrink a set faster than they grow one (docs/solvers.md).
+  void keep_coarse_area(const std::vector<T>& p, double d, double stiffness, std::size_t candidates) {
+    const auto most = static_cast<std::size_t>(coarse_->contact_fraction_ * static_cast<double>(n_));
+    if (most == 0 || most >= candidates) return;
+    const auto last = z_.begin() + static_cast<std::ptrdiff_t>(most - 1);
+    std::nth_element(z_.begin(), last, z_.begin() + static_cast<std::ptrdiff_t>(candidates),
+                     std::greater<>());
+    const T level = *last;
+    for (std::size_t k = 0; k < n_; ++k)
+      if (in_[k]) in_[k] = start_score(p, k, d, stiffness) >= level;  // the same operation as ranked
+  }
+
   // The flat's height that makes the gap zero-mean on the set: d = -mean(u - h) there.
   double flat_height() {
     const Sums s = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
@@ -324,6 +373,7 @@ class ActiveSet {
       in_[k] = depth == level;
       p[k] = plastic_[k] ? cap_ : T(in_[k] ? 1 : 0);
     }
+    displacement_current_ = displacement_fresh_ = false;
   }
 
   // The pressures off the plastic set scaled so that the sum of p is `total` (the plastic nodes at H);
@@ -339,10 +389,15 @@ class ActiveSet {
     const double elastic_total = total - s.b;
     if (s.b > 0 && !(elastic_total > 0)) return false;
     const double factor = s.a > 0 ? elastic_total / s.a : 0;
+    // Without plastic nodes G p scales with p; with them only the elastic nodes' share does.
+    const bool scale_displacement = displacement_current_ && s.b == 0;
     over_points([&](std::size_t begin, std::size_t end, Sums&) {
-      for (std::size_t k = begin; k < end; ++k)
+      for (std::size_t k = begin; k < end; ++k) {
         if (!plastic_[k]) p[k] = static_cast<T>(factor * static_cast<double>(p[k]));
+        if (scale_displacement) u_[k] = static_cast<T>(factor * static_cast<double>(u_[k]));
+      }
     });
+    displacement_current_ = scale_displacement;  // and as fresh as before, to one rounding
     return true;
   }
 
@@ -371,7 +426,10 @@ class ActiveSet {
   // Sums are per thread and combined in thread order: deterministic for a fixed thread count.
   Index cg_on_set(std::vector<T>& p, double reduction, double absolute, double step_change, Index budget,
                   const std::function<void()>& between) {
-    operator_->apply(p.data(), u_.data());
+    if (!displacement_current_) {
+      operator_->apply(p.data(), u_.data());
+      displacement_current_ = displacement_fresh_ = true;  // from here kept by the steps: u -= tau G t
+    }
     const std::uint8_t* const in = in_.data();
     const T* const h = h_.data();
     T* const z = z_.data();
@@ -514,8 +572,10 @@ class ActiveSet {
     Index iterations = 0;
     last_step_change_ = 0;  // no step yet: the pressure has not moved
     for (; iterations < budget; ++iterations) {
-      if ((largest <= absolute && last_step_change_ <= step_change) || norm <= reduction * r0 || norm == 0)
-        break;
+      // While the set still changes (reduction > 0) a gap within the threshold everywhere on the set also
+      // ends the solve: what is left to reduce is below what the update and the convergence test resolve.
+      const bool within = largest <= absolute && (reduction > 0 || last_step_change_ <= step_change);
+      if (within || norm <= reduction * r0 || norm == 0) break;
       if (between) between();
       clear();
       shift_c = static_cast<T>(c);
@@ -549,7 +609,8 @@ class ActiveSet {
       for (Sums& s : sums_)
         s.e = s.f = -std::numeric_limits<double>::infinity();
       operator_->apply(Producer(direction_in), Consumer(stepped_out), {}, true, ProductHook(step_length));
-      if (!(t_gt > 0)) break;  // nothing moved: tau was 0
+      displacement_fresh_ = false;  // u stepped
+      if (!(t_gt > 0)) break;       // nothing moved: tau was 0
       const Sums f = combined();
       last_step_change_ = f.d > 0 ? f.c / f.d : 0;
       settle(f);
@@ -614,9 +675,12 @@ class ActiveSet {
   double separation_ = 0;                       // the flat's height under separation control
   T cap_ = std::numeric_limits<T>::infinity();  // the hardness
   double height_range_ = 1, highest_ = 0, gap_round_off_ = 0;
-  double last_step_change_ = 0;  // sum |tau t| / sum |p| of the last CG iteration
+  double last_step_change_ = 0;        // sum |tau t| / sum |p| of the last CG iteration
+  bool displacement_current_ = false;  // u_ is G p for the current p (fresh, or kept by the CG's steps)
+  bool displacement_fresh_ = false;    // ... and made by an application of G, no CG step since
   std::vector<Sums> sums_;
   double set_size_ = 1;                   // nodes in the set
+  double contact_fraction_ = 0;           // of the nodes, in contact (p > 0) in the last solution
   std::unique_ptr<ActiveSet<T>> coarse_;  // the next coarser level of the nested start, once made
 };
 

@@ -8,13 +8,15 @@
 // result gathered back onto A by the transpose and its mean there removed; then update the set, A <- {i in A:
 // p_i > 0} u {i not in A: g_i < 0}, and repeat. The outer steps settle the set; the inner CG sees a fixed
 // set, so it is a plain preconditioned CG whose convergence is not disturbed by nodes entering and leaving.
-// Inner solves stop at a loose relative residual (kInnerReduction) while the set still changes, which is what
-// makes the outer steps cheap; once the set has not changed, the last inner solve runs to the tolerance.
+// Inner solves stop at a loose relative residual (kInnerReduction), or once the gap on the set is within the
+// convergence threshold below, while the set still changes, which is what makes the outer steps cheap; once
+// the set has not changed, the last inner solve runs to the tolerance.
 //
 // A cold solve starts from a nested coarse solution: the surface averaged over 2 x 2 blocks solved the same
 // way (itself from a coarser one, down to kCoarsest points a side), its pressure interpolated bilinearly to
-// the fine grid, and the starting set {p - k g > 0} with k the stiffness of one pixel (1/G(0)): where active
-// set methods get outer iteration counts that barely grow with the grid. A warm start (load stepping) takes
+// the fine grid, and the starting set {p - k g > 0} with k the stiffness of one pixel (1/G(0)), under load
+// control cut to the nodes of the largest p - k g, as many as the coarse solution touches: where active set
+// methods get outer iteration counts that barely grow with the grid. A warm start (load stepping) takes
 // the set the same way from the previous pressure scaled to the load.
 //
 // Converged means: the set did not change in the last outer step (so p >= 0 on A and no node off A
@@ -22,13 +24,16 @@
 // at most the threshold tolerance x (max h - d) (the approach of the highest point: the scale of the gaps
 // that matter, where the height range could be made of a pit nothing touches; never below the gap's
 // round-off), AND the last CG step changed the pressure by at most the tolerance relative (PK's criterion,
-// on a settled set). The test is thus on the residual itself, not only on a change that a stalled
+// on a settled set; a final solve that starts with the gap within the threshold takes no step and so meets
+// it). The test is thus on the residual itself, not only on a change that a stalled
 // iteration could make small. Nodes enter only when they penetrate by more than the threshold (nodes at
 // p = 0 and g = 0 within it would otherwise flip in and out for ever).
 // The iteration count: the inner CG iterations (each one application of G and one of the filter: two FFT
-// pairs, padded for non-periodic grids), plus one per outer step (its CG's start, one application of G),
-// plus two (the starting set's gap and the final gap), plus the coarse levels' counts divided by 4 per
-// level (their cost in fine iterations).
+// pairs, padded for non-periodic grids), plus one per outer step whose start needs a fresh displacement G p
+// (nodes left the set or became plastic; nodes that only entered, at p = 0, change nothing), plus the
+// starting set's gap and the final gap (not made again when the last outer step's start made it and
+// nothing moved since), plus the coarse levels' counts divided by 4 per level (their cost in fine
+// iterations).
 //
 // Separation control: the flat's height d is given, so the linear problem on A is gap = 0 there with no
 // condition on the sum and no mean taken out of the residual, the filtered residual or G's response (the
