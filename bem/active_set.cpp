@@ -186,7 +186,7 @@ class ActiveSet {
                                     final ? tolerance : 0.0, max_iterations - inner - fresh, between);
       inner += steps;
       // The set update, from the CG's own displacement (updated with each step; a fresh one costs an
-      // application of G, made once at the end).
+      // application of G, made at the end unless the last outer step's start made it).
       d = load_control_ ? flat_height() : separation_;
       // Nodes enter when they penetrate by more than the tolerance, leave when their pressure is negative:
       // nodes at p = 0 and g = 0 within the tolerance would otherwise flip in and out for ever. Elastic
