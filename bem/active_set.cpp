@@ -114,7 +114,7 @@ class ActiveSet {
     // previous pressure presses the flat too deep; surface A at 256^2, load 0.001 -> 0.002: 8673 nodes for
     // the 2472 of the solution), and the outer steps that shrink it back cost more than those that grow the
     // previous set (10-load curve: 0.81-0.92 of the cold solves' iterations at 256^2 and 512^2 against
-    // 0.88-1.10; 0.99-1.01 at 1024^2, where the cold nested start is as good; docs/solvers.md). Of those,
+    // 0.88-1.10; about 1 at 1024^2, where the cold nested start is as good; docs/solvers.md). Of those,
     // the nodes at or above the hardness start plastic.
     operator_->apply(p.data(), u_.data());
     displacement_current_ = displacement_fresh_ = true;
@@ -252,12 +252,14 @@ class ActiveSet {
       displacement_current_ = displacement_fresh_ = true;
       ++outcome.iterations;
     }
-    for (std::size_t k = 0; k < n_; ++k)
+    std::size_t touching = 0;  // p > 0: elastic or plastic
+    for (std::size_t k = 0; k < n_; ++k) {
       in_[k] = p[k] > 0 && !plastic_[k];
+      touching += in_[k] || plastic_[k];
+    }
     d = load_control_ ? flat_height() : separation_;
     outcome.separation = d;
-    contact_fraction_ = static_cast<double>(std::count_if(p.begin(), p.end(), [](T v) { return v > 0; })) /
-                        static_cast<double>(n_);
+    contact_fraction_ = static_cast<double>(touching) / static_cast<double>(n_);
     outcome.iterations += (outcome.coarse_iterations + 3) / 4;
     return outcome;
   }

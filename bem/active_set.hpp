@@ -16,8 +16,8 @@
 // way (itself from a coarser one, down to kCoarsest points a side), its pressure interpolated bilinearly to
 // the fine grid, and the starting set {p - k g > 0} with k the stiffness of one pixel (1/G(0)), under load
 // control cut to the nodes of the largest p - k g, as many as the coarse solution touches: where active set
-// methods get outer iteration counts that barely grow with the grid. A warm start (load stepping) takes
-// the set the same way from the previous pressure scaled to the load.
+// methods get outer iteration counts that barely grow with the grid. A warm start (load stepping) starts
+// from the previous pressure scaled to the load, on its contact set {p > 0}.
 //
 // Converged means: the set did not change in the last outer step (so p >= 0 on A and no node off A
 // penetrates by more than the threshold below), AND the complementarity residual, the largest |g| on A, is
