@@ -38,9 +38,11 @@ constexpr Index kExtensionRadius = 12;
 constexpr double kExtensionFloor = 0.25;
 
 // Coarse pixel values on the fine grid: bilinear between coarse pixel centres (fine pixel 2y + a sits at
-// coarse coordinate y + (2a - 1)/4), wrapped when periodic, clamped at the edges otherwise.
+// coarse coordinate y + (2a - 1)/4), wrapped when periodic, clamped at the edges otherwise; each value then
+// clamped to [0, cap]. Rows split over `threads` threads.
 template <class T>
-std::vector<T> interpolate_up(const std::vector<T>& coarse, Index cnx, Index cny, bool periodic) {
+std::vector<T> interpolate_up(const std::vector<T>& coarse, Index cnx, Index cny, bool periodic, T cap,
+                              int threads) {
   auto neighbour = [periodic](Index i, Index step, Index n) {
     const Index j = i + step;
     if (periodic) return (j + n) % n;
@@ -48,20 +50,26 @@ std::vector<T> interpolate_up(const std::vector<T>& coarse, Index cnx, Index cny
   };
   const Index nx = 2 * cnx, ny = 2 * cny;
   std::vector<T> rows(static_cast<std::size_t>(cny * nx));
-  for (Index y = 0; y < cny; ++y)
-    for (Index x = 0; x < nx; ++x) {
-      const Index c = x / 2, other = neighbour(c, x % 2 == 0 ? -1 : 1, cnx);
-      rows[static_cast<std::size_t>(y * nx + x)] =
-          static_cast<T>(0.75 * static_cast<double>(coarse[static_cast<std::size_t>(y * cnx + c)]) +
-                         0.25 * static_cast<double>(coarse[static_cast<std::size_t>(y * cnx + other)]));
-    }
   std::vector<T> fine(static_cast<std::size_t>(ny * nx));
-  for (Index y = 0; y < ny; ++y) {
-    const Index c = y / 2, other = neighbour(c, y % 2 == 0 ? -1 : 1, cny);
-    for (Index x = 0; x < nx; ++x)
-      fine[static_cast<std::size_t>(y * nx + x)] =
-          static_cast<T>(0.75 * static_cast<double>(rows[static_cast<std::size_t>(c * nx + x)]) +
-                         0.25 * static_cast<double>(rows[static_cast<std::size_t>(other * nx + x)]));
+#pragma omp parallel num_threads(threads)
+  {
+#pragma omp for schedule(static)
+    for (Index y = 0; y < cny; ++y)
+      for (Index x = 0; x < nx; ++x) {
+        const Index c = x / 2, other = neighbour(c, x % 2 == 0 ? -1 : 1, cnx);
+        rows[static_cast<std::size_t>(y * nx + x)] =
+            static_cast<T>(0.75 * static_cast<double>(coarse[static_cast<std::size_t>(y * cnx + c)]) +
+                           0.25 * static_cast<double>(coarse[static_cast<std::size_t>(y * cnx + other)]));
+      }
+#pragma omp for schedule(static)
+    for (Index y = 0; y < ny; ++y) {
+      const Index c = y / 2, other = neighbour(c, y % 2 == 0 ? -1 : 1, cny);
+      for (Index x = 0; x < nx; ++x)
+        fine[static_cast<std::size_t>(y * nx + x)] = std::clamp(
+            static_cast<T>(0.75 * static_cast<double>(rows[static_cast<std::size_t>(c * nx + x)]) +
+                           0.25 * static_cast<double>(rows[static_cast<std::size_t>(other * nx + x)])),
+            T(0), cap);
+    }
   }
   return fine;
 }
@@ -103,10 +111,8 @@ class ActiveSet {
     cap_ = std::isfinite(problem.hardness) ? static_cast<T>(problem.hardness)
                                            : std::numeric_limits<T>::infinity();
     const double total = problem.mean_pressure * static_cast<double>(n_);
-    std::fill(plastic_.begin(), plastic_.end(), std::uint8_t{0});
     displacement_current_ = displacement_fresh_ = false;
     if (!warm) outcome.coarse_iterations = nested_start(problem, p, between);
-    if (load_control_) scale_to(p, total);
     // The starting sets. Cold: {p - k g > 0}, k the stiffness of one pixel, g the gap of the nested start
     // (under load control with the flat from its mean on the start's own contact set), under load control
     // cut to the coarse level's contact area (keep_coarse_area). Warm: the start's own contact set {p > 0},
@@ -115,31 +121,37 @@ class ActiveSet {
     // the 2472 of the solution), and the outer steps that shrink it back cost more than those that grow the
     // previous set (10-load curve: 0.81-0.92 of the cold solves' iterations at 256^2 and 512^2 against
     // 0.88-1.10; about 1 at 1024^2, where the cold nested start is as good; docs/solvers.md). Of those,
-    // the nodes at or above the hardness start plastic.
-    operator_->apply(p.data(), u_.data());
-    displacement_current_ = displacement_fresh_ = true;
-    for (std::size_t k = 0; k < n_; ++k)
-      in_[k] = p[k] > 0;
-    double d = load_control_ ? flat_height() : separation_;
+    // the nodes at or above the hardness start plastic. The start's G p is made with p scaled to the load
+    // on its way in and the set {p > 0} with its mean of u - h on the way out.
+    const double factor = load_control_ ? start_scale(p, total) : 1.0;
+    double d = start_displacement(p, factor);
+    if (!load_control_) d = separation_;
     if (!warm) {
       const double stiffness = 1 / operator_->self_response();
-      std::size_t candidates = 0;
-      for (std::size_t k = 0; k < n_; ++k) {
-        const T score = start_score(p, k, d, stiffness);
-        in_[k] = score > 0;
-        if (in_[k]) z_[candidates++] = score;  // z_ is free until the CG
+      const std::size_t candidates = score_start(p, d, stiffness);
+      const T level = load_control_ && coarse_ ? coarse_area_level(candidates) : T(0);
+      if (level > 0)
+        over_points([&](std::size_t begin, std::size_t end, Sums&) {
+          for (std::size_t k = begin; k < end; ++k)
+            if (in_[k]) in_[k] = start_score(p, k, d, stiffness) >= level;  // the same operation as ranked
+        });
+    }
+    // The starting sets' plastic nodes, and the pressure held to the sets; from here each set update holds
+    // p to its new sets in its own pass.
+    Sums kept = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+      for (std::size_t k = begin; k < end; ++k) {
+        plastic_[k] = in_[k] && p[k] >= cap_;
+        in_[k] = in_[k] && !plastic_[k];
+        keep_to_sets(p, k, part);
       }
-      if (load_control_ && coarse_) keep_coarse_area(p, d, stiffness, candidates);
-    }
-    Index in_count = 0;
-    for (std::size_t k = 0; k < n_; ++k) {
-      plastic_[k] = in_[k] && p[k] >= cap_;
-      in_[k] = in_[k] && !plastic_[k];
-      in_count += in_[k] + plastic_[k];
-    }
-    if (in_count == 0) {  // load control: every node; separation control: those the flat penetrates
-      for (std::size_t k = 0; k < n_; ++k)
-        in_[k] = load_control_ || static_cast<double>(h_[k]) > separation_;
+    });
+    if (kept.b == 0 && kept.g == 0) {  // load control: every node; separation control: those the flat
+      kept = over_points([&](std::size_t begin, std::size_t end, Sums& part) {  // penetrates
+        for (std::size_t k = begin; k < end; ++k) {
+          in_[k] = load_control_ || static_cast<double>(h_[k]) > separation_;
+          keep_to_sets(p, k, part);
+        }
+      });
     }
 
     // A cold start caps only once the elastic sets have settled: the first inner solves, far from the
@@ -153,41 +165,37 @@ class ActiveSet {
     for (Index outer = 1; outer <= kMaxOuter; ++outer) {
       // The linear problem on the elastic set, from the current pressure kept on it (scaled to the load less
       // what the plastic nodes carry, under load control), p = H on the plastic set, 0 elsewhere. Only nodes
-      // that left the set or became plastic change their pressure: when none did (nodes only entered, at
+      // that left the set or became plastic changed their pressure: when none did (nodes only entered, at
       // p = 0, or nothing changed), the displacement stays G p and the CG needs no fresh one.
-      const Sums kept = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
-        for (std::size_t k = begin; k < end; ++k) {
-          const T before = p[k];
-          if (plastic_[k])
-            p[k] = cap_;
-          else if (!in_[k])
-            p[k] = 0;
-          part.a += in_[k] ? static_cast<double>(p[k]) : 0.0;
-          part.b += in_[k];
-          part.c += p[k] != before ? 1.0 : 0.0;
-        }
-      });
       if (kept.c > 0) displacement_current_ = displacement_fresh_ = false;
+      double scale = 1;  // the load's rescaling, made by the CG in its first pass when it can be
       if (load_control_) {
-        if (!(kept.a > 0)) {
+        const bool unloaded = !(kept.a > 0);
+        if (unloaded) {
           for (std::size_t k = 0; k < n_; ++k)
             if (in_[k]) p[k] = T(1);
           displacement_current_ = displacement_fresh_ = false;
         }
         // No elastic node leaves the flat's height undetermined, and plastic nodes carrying the load or
         // more leave nothing for the elastic ones (a very soft contact): the sets are made again.
-        if (kept.b == 0 || !scale_to(p, total)) {
+        const bool scalable =
+            kept.b > 0 && (unloaded ? scale_to(p, total) : load_scale(kept.a, kept.g, total, scale));
+        if (!scalable) {
           reseat(p, total);
           scale_to(p, total);
+          scale = 1;
+        } else if (scale != 1 && kept.g > 0) {
+          displacement_current_ = displacement_fresh_ = false;  // G p does not scale with p: made afresh
         }
       }
       fresh += displacement_current_ ? 0 : 1;
-      const Index steps = cg_on_set(p, final ? 0.0 : kInnerReduction, threshold(tolerance, d),
+      const Index steps = cg_on_set(p, scale, final ? 0.0 : kInnerReduction, threshold(tolerance, d),
                                     final ? tolerance : 0.0, max_iterations - inner - fresh, between);
       inner += steps;
       // The set update, from the CG's own displacement (updated with each step; a fresh one costs an
-      // application of G, made at the end unless the last outer step's start made it).
-      d = load_control_ ? flat_height() : separation_;
+      // application of G, made at the end unless the last outer step's start made it) and the flat's
+      // height from the CG's own mean of u - h on the set.
+      d = load_control_ ? -set_mean_ : separation_;
       // Nodes enter when they penetrate by more than the tolerance, leave when their pressure is negative:
       // nodes at p = 0 and g = 0 within the tolerance would otherwise flip in and out for ever. Elastic
       // nodes above the hardness become plastic; plastic nodes whose gap opens by more than the tolerance
@@ -208,14 +216,16 @@ class ActiveSet {
           } else {
             elastic = g < -limit;
           }
-          part.a +=
+          part.h +=
               elastic != static_cast<bool>(in_[k]) || plastic != static_cast<bool>(plastic_[k]) ? 1.0 : 0.0;
           in_[k] = elastic;
           plastic_[k] = plastic;
+          keep_to_sets(p, k, part);  // for the next outer step, or the output's clipping below
         }
       });
       const double residual = update.e;
-      const Index changed = static_cast<Index>(update.a);
+      const Index changed = static_cast<Index>(update.h);
+      kept = update;
       outcome.outer = outer;
       outcome.residual = residual / height_range_;
       outcome.change = last_step_change_;
@@ -238,12 +248,15 @@ class ActiveSet {
     }
     // The pressure of the sets it ends on (on convergence, nothing is clipped: 0 < p <= H on the elastic
     // set), its gap.
-    bool clipped = false;
-    for (std::size_t k = 0; k < n_; ++k) {
-      const T kept = plastic_[k] ? cap_ : (in_[k] ? std::clamp(p[k], T(0), cap_) : T(0));
-      clipped = clipped || kept != p[k];
-      p[k] = kept;
-    }
+    const Sums held = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+      for (std::size_t k = begin; k < end; ++k)
+        if (in_[k]) {
+          const T clamped = std::clamp(p[k], T(0), cap_);
+          part.c += clamped != p[k] ? 1.0 : 0.0;
+          p[k] = clamped;
+        }
+    });
+    const bool clipped = kept.c > 0 || held.c > 0;  // (kept: the last update's holding p to its sets)
     if (clipped && load_control_) scale_to(p, total);
     // The gap of the output afresh, not from the CG's steps; already so when the last outer step's start
     // made it and no step or clipping followed (a set confirmed unchanged).
@@ -252,23 +265,31 @@ class ActiveSet {
       displacement_current_ = displacement_fresh_ = true;
       ++outcome.iterations;
     }
-    std::size_t touching = 0;  // p > 0: elastic or plastic
-    for (std::size_t k = 0; k < n_; ++k) {
-      in_[k] = p[k] > 0 && !plastic_[k];
-      touching += in_[k] || plastic_[k];
-    }
-    d = load_control_ ? flat_height() : separation_;
-    outcome.separation = d;
-    contact_fraction_ = static_cast<double>(touching) / static_cast<double>(n_);
+    // The elastic set {p > 0} less the plastic nodes, the flat's height from its mean of u - h, and the
+    // nodes touching (elastic or plastic).
+    const Sums last = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+      for (std::size_t k = begin; k < end; ++k) {
+        in_[k] = p[k] > 0 && !plastic_[k];
+        part.d += in_[k] || plastic_[k] ? 1.0 : 0.0;
+        if (in_[k]) {
+          part.a += static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
+          part.b += 1;
+        }
+      }
+    });
+    outcome.separation = load_control_ ? flat_height(last) : separation_;
+    contact_fraction_ = last.d / static_cast<double>(n_);
     outcome.iterations += (outcome.coarse_iterations + 3) / 4;
     return outcome;
   }
 
   // G p - h of the last solution.
-  void displacement_minus_heights(std::vector<T>& out) const {
+  void displacement_minus_heights(std::vector<T>& out) {
     out.resize(n_);
-    for (std::size_t k = 0; k < n_; ++k)
-      out[k] = u_[k] - h_[k];
+    over_points([&](std::size_t begin, std::size_t end, Sums&) {
+      for (std::size_t k = begin; k < end; ++k)
+        out[k] = u_[k] - h_[k];
+    });
   }
 
  private:
@@ -287,8 +308,8 @@ class ActiveSet {
   // Per-thread sums of a pass (one cache line each), combined in thread order: for a fixed thread count
   // the same every run.
   struct alignas(64) Sums {
-    double a = 0, b = 0, c = 0, d = 0;  // combined as sums
-    double e = 0, f = 0;                // combined as maxima
+    double a = 0, b = 0, c = 0, d = 0, g = 0, h = 0;  // combined as sums
+    double e = 0, f = 0;                              // combined as maxima
   };
 
   Sums combined() const {
@@ -299,6 +320,8 @@ class ActiveSet {
       all.b += s.b;
       all.c += s.c;
       all.d += s.d;
+      all.g += s.g;
+      all.h += s.h;
       all.e = std::max(all.e, s.e);
       all.f = std::max(all.f, s.f);
     }
@@ -319,6 +342,80 @@ class ActiveSet {
     return combined();
   }
 
+  // The factor that scales the start's pressure to the load (no plastic nodes yet): total over its sum, 0
+  // when that is 0.
+  double start_scale(const std::vector<T>& p, double total) {
+    const Sums s = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+      for (std::size_t k = begin; k < end; ++k)
+        part.a += static_cast<double>(p[k]);
+    });
+    return s.a > 0 ? total / s.a : 0;
+  }
+
+  // The start's displacement: u = G p with p times `factor` on its way in, and on u's way out the elastic
+  // set {p > 0}; returns the flat's height from the mean of u - h on that set.
+  double start_displacement(std::vector<T>& p, double factor) {
+    using Producer = typename Convolution<T>::Producer;
+    using Consumer = typename Convolution<T>::Consumer;
+    const Index nx = grid_.nx;
+    auto scaled_in = [&](Index first, Index rows, T* buffer, Index ld, int) {
+      for (Index y = 0; y < rows; ++y)
+        for (Index x = 0; x < nx; ++x) {
+          const std::size_t k = static_cast<std::size_t>((first + y) * nx + x);
+          if (factor != 1) p[k] = static_cast<T>(factor * static_cast<double>(p[k]));
+          buffer[y * ld + x] = p[k];
+        }
+    };
+    auto set_out = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
+      Sums& part = sums_[static_cast<std::size_t>(thread)];
+      for (Index y = 0; y < rows; ++y)
+        for (Index x = 0; x < nx; ++x) {
+          const std::size_t k = static_cast<std::size_t>((first + y) * nx + x);
+          u_[k] = buffer[y * ld + x];
+          in_[k] = p[k] > 0;
+          if (in_[k]) {
+            part.a += static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
+            part.b += 1;
+          }
+        }
+    };
+    for (Sums& s : sums_)
+      s = Sums{};
+    operator_->apply(Producer(scaled_in), Consumer(set_out));
+    displacement_current_ = displacement_fresh_ = true;
+    return flat_height(combined());
+  }
+
+  // The flat's height that makes the gap zero-mean on a set, from the sum of u - h there (a) and its nodes
+  // (b): d = -mean(u - h); 0 for an empty set.
+  static double flat_height(const Sums& s) {
+    return s.b > 0 ? -s.a / s.b : 0;
+  }
+
+  // A cold start's set {p - k g > 0} (start_score); returns how many, their scores the first values of z_
+  // (free until the CG). Each thread writes its nodes' scores from the start of its own range of z_, then
+  // they are moved to the front in thread order.
+  std::size_t score_start(const std::vector<T>& p, double d, double stiffness) {
+    over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+      std::size_t next = begin;
+      for (std::size_t k = begin; k < end; ++k) {
+        const T score = start_score(p, k, d, stiffness);
+        in_[k] = score > 0;
+        if (in_[k]) z_[next++] = score;
+      }
+      part.a = static_cast<double>(begin);  // exact: below 2^53
+      part.b = static_cast<double>(next - begin);
+    });
+    std::size_t candidates = 0;
+    for (const Sums& s : sums_) {
+      const auto begin = static_cast<std::ptrdiff_t>(s.a), count = static_cast<std::ptrdiff_t>(s.b);
+      std::copy(z_.begin() + begin, z_.begin() + begin + count,
+                z_.begin() + static_cast<std::ptrdiff_t>(candidates));  // forward: never past its source
+      candidates += static_cast<std::size_t>(count);
+    }
+    return candidates;
+  }
+
   // A cold start's score of node k, p - k g (k the stiffness of one pixel): the node starts in contact when
   // it is positive.
   T start_score(const std::vector<T>& p, std::size_t k, double d, double stiffness) const {
@@ -327,33 +424,19 @@ class ActiveSet {
   }
 
   // A cold start under load control keeps at most as many nodes as the coarse level's solution has in
-  // contact (its fraction of the nodes), those of the largest scores (the first `candidates` values of z_).
-  // At a given load a finer grid resolves more roughness and touches less, or as much where the surface has
-  // none below the coarse pixel; the rule's set is larger still, the interpolated pressure being spread over
-  // the coarse spots (surface A at 1024^2 and 1 %: 15016 nodes, the coarse area 13132, the solution's
-  // 12095). A start sized to the fine area extrapolated over the levels cost more outer steps: the steps
-  // shrink a set faster than they grow one (docs/solvers.md).
-  void keep_coarse_area(const std::vector<T>& p, double d, double stiffness, std::size_t candidates) {
+  // contact (its fraction of the nodes), those of the largest scores (the first `candidates` values of z_):
+  // returns the lowest score kept, 0 when all are. At a given load a finer grid resolves more roughness and
+  // touches less, or as much where the surface has none below the coarse pixel; the rule's set is larger
+  // still, the interpolated pressure being spread over the coarse spots (surface A at 1024^2 and 1 %: 15016
+  // nodes, the coarse area 13132, the solution's 12095). A start sized to the fine area extrapolated over
+  // the levels cost more outer steps: the steps shrink a set faster than they grow one (docs/solvers.md).
+  T coarse_area_level(std::size_t candidates) {
     const auto most = static_cast<std::size_t>(coarse_->contact_fraction_ * static_cast<double>(n_));
-    if (most == 0 || most >= candidates) return;
+    if (most == 0 || most >= candidates) return T(0);
     const auto last = z_.begin() + static_cast<std::ptrdiff_t>(most - 1);
     std::nth_element(z_.begin(), last, z_.begin() + static_cast<std::ptrdiff_t>(candidates),
                      std::greater<>());
-    const T level = *last;
-    for (std::size_t k = 0; k < n_; ++k)
-      if (in_[k]) in_[k] = start_score(p, k, d, stiffness) >= level;  // the same operation as ranked
-  }
-
-  // The flat's height that makes the gap zero-mean on the set: d = -mean(u - h) there.
-  double flat_height() {
-    const Sums s = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
-      for (std::size_t k = begin; k < end; ++k)
-        if (in_[k]) {
-          part.a += static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
-          part.b += 1;
-        }
-    });
-    return s.b > 0 ? -s.a / s.b : 0;
+    return *last;
   }
 
   // The sets of the bearing area (the limit of a very soft contact), with the current displacement: the m
@@ -378,37 +461,76 @@ class ActiveSet {
     displacement_current_ = displacement_fresh_ = false;
   }
 
+  // Holds p at node k to the sets: H on the plastic set, 0 off both. Adds to `part` what the load's rescaling
+  // needs, a: the sum of p on the elastic set, b: its nodes, g: the sum of p on the plastic set; and c: 1
+  // when p changed.
+  void keep_to_sets(std::vector<T>& p, std::size_t k, Sums& part) const {
+    const T before = p[k];
+    if (plastic_[k])
+      p[k] = cap_;
+    else if (!in_[k])
+      p[k] = 0;
+    part.a += in_[k] ? static_cast<double>(p[k]) : 0.0;
+    part.b += in_[k];
+    part.c += p[k] != before ? 1.0 : 0.0;
+    part.g += plastic_[k] ? static_cast<double>(cap_) : 0.0;
+  }
+
+  // The factor on the elastic pressures (summing to `elastic`; the plastic ones to `plastic`) that makes
+  // the sum of p `total`; false when the plastic nodes alone carry `total` or more.
+  static bool load_scale(double elastic, double plastic, double total, double& factor) {
+    const double elastic_total = total - plastic;
+    if (plastic > 0 && !(elastic_total > 0)) return false;
+    factor = elastic > 0 ? elastic_total / elastic : 0;
+    return true;
+  }
+
+  // p off the plastic set times `factor`; G p is no longer current.
+  void scale_pressure(std::vector<T>& p, double factor) {
+    over_points([&](std::size_t begin, std::size_t end, Sums&) {
+      for (std::size_t k = begin; k < end; ++k)
+        if (!plastic_[k]) p[k] = static_cast<T>(factor * static_cast<double>(p[k]));
+    });
+    displacement_current_ = false;
+  }
+
   // The pressures off the plastic set scaled so that the sum of p is `total` (the plastic nodes at H);
   // false, and nothing changed, when the plastic nodes alone carry `total` or more.
   bool scale_to(std::vector<T>& p, double total) {
     const Sums s = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
       for (std::size_t k = begin; k < end; ++k)
         if (plastic_[k])
-          part.b += static_cast<double>(cap_);
+          part.g += static_cast<double>(cap_);
         else
           part.a += static_cast<double>(p[k]);
     });
-    const double elastic_total = total - s.b;
-    if (s.b > 0 && !(elastic_total > 0)) return false;
-    const double factor = s.a > 0 ? elastic_total / s.a : 0;
+    double factor = 1;
+    if (!load_scale(s.a, s.g, total, factor)) return false;
     // Without plastic nodes G p scales with p; with them only the elastic nodes' share does.
-    const bool scale_displacement = displacement_current_ && s.b == 0;
-    over_points([&](std::size_t begin, std::size_t end, Sums&) {
-      for (std::size_t k = begin; k < end; ++k) {
-        if (!plastic_[k]) p[k] = static_cast<T>(factor * static_cast<double>(p[k]));
-        if (scale_displacement) u_[k] = static_cast<T>(factor * static_cast<double>(u_[k]));
-      }
-    });
-    displacement_current_ = scale_displacement;  // and as fresh as before, to one rounding
+    if (displacement_current_ && s.g == 0)
+      scale_with_displacement(p, factor);
+    else
+      scale_pressure(p, factor);
     return true;
   }
 
-  // The preconditioned CG for G p = h - d on the elastic set (p held elsewhere), from p; under load control
-  // sum p fixed (the direction has zero sum on the set, which also leaves d free), under separation control
-  // d = separation_ and the sum free; u_ ends as G p. Stops when the residual's L2 norm has fallen by
-  // `reduction` (0: never on that count), or when its largest value is at most `absolute` and the last
-  // step's relative change of the pressure at most `step_change`, or after `budget` iterations. Returns the
-  // iterations.
+  // p and u = G p (no plastic nodes) times `factor`: u stays G p, as fresh as before to one rounding.
+  void scale_with_displacement(std::vector<T>& p, double factor) {
+    over_points([&](std::size_t begin, std::size_t end, Sums&) {
+      for (std::size_t k = begin; k < end; ++k) {
+        p[k] = static_cast<T>(factor * static_cast<double>(p[k]));
+        u_[k] = static_cast<T>(factor * static_cast<double>(u_[k]));
+      }
+    });
+  }
+
+  // The preconditioned CG for G p = h - d on the elastic set (p held elsewhere), from p with its values off
+  // the plastic set times `scale` (the load's rescaling; u_ then scales with p when current, which the
+  // caller makes sure only without plastic nodes); under load control sum p fixed (the direction has zero sum
+  // on the set, which also leaves d free), under separation control d = separation_ and the sum free; u_ ends
+  // as G p. Stops when the residual's L2 norm has fallen by `reduction` (0: never on that count), or when its
+  // largest value is at most `absolute` and the last step's relative change of the pressure at most
+  // `step_change`, or after `budget` iterations. Returns the iterations.
   //
   // The residual is the gap less its mean on the set under load control (the mean is the flat's unknown
   // height), the gap d + u - h under separation control. The preconditioner is z = E^T F E r, E the extension
@@ -426,19 +548,70 @@ class ActiveSet {
   //   operator:  producing the direction t | the step length from <t, G t>, the transform's product, before
   //              any row comes back | consuming G t: p, u and r stepped, and the sums of the next residual.
   // Sums are per thread and combined in thread order: deterministic for a fixed thread count.
-  Index cg_on_set(std::vector<T>& p, double reduction, double absolute, double step_change, Index budget,
-                  const std::function<void()>& between) {
-    if (!displacement_current_) {
-      operator_->apply(p.data(), u_.data());
-      displacement_current_ = displacement_fresh_ = true;  // from here kept by the steps: u -= tau G t
-    }
+  Index cg_on_set(std::vector<T>& p, double scale, double reduction, double absolute, double step_change,
+                  Index budget, const std::function<void()>& between) {
     const std::uint8_t* const in = in_.data();
+    const std::uint8_t* const plastic = plastic_.data();
     const T* const h = h_.data();
     T* const z = z_.data();
     T* const t = t_.data();
     T* const u = u_.data();
     T* const pp = p.data();
     const Index nx = grid_.nx;
+    using Producer = typename Convolution<T>::Producer;
+    using Consumer = typename Convolution<T>::Consumer;
+    using ProductHook = typename Convolution<T>::ProductHook;
+    // The set's size and the sum of u - h on it, counted in the pass that makes the load's rescaling: p
+    // times `scale` off the plastic set, and u = G p with it when current; else u = G p made afresh, the
+    // rescaling on p's way into the transform and the count on u's way out. From here u is kept by the
+    // steps (u -= tau G t). The start's mean from a pass of its own, before the residual's: sums of squares
+    // about a far-off mean would lose the residual to cancellation (u - h is about -d on the set, the
+    // residual many decades smaller).
+    auto rescaled = [&](std::size_t k) {
+      if (scale != 1 && !plastic[k]) pp[k] = static_cast<T>(scale * static_cast<double>(pp[k]));
+    };
+    auto counted = [&](std::size_t k, Sums& part) {
+      if (in[k]) {
+        part.a += static_cast<double>(u[k]) - static_cast<double>(h[k]);
+        part.c += 1;
+      }
+    };
+    Sums count;
+    if (displacement_current_) {
+      count = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+        for (std::size_t k = begin; k < end; ++k) {
+          rescaled(k);
+          if (scale != 1) u[k] = static_cast<T>(scale * static_cast<double>(u[k]));  // no plastic nodes
+          counted(k, part);
+        }
+      });
+    } else {
+      auto rescaled_in = [&](Index first, Index rows, T* buffer, Index ld, int) {
+        for (Index y = 0; y < rows; ++y)
+          for (Index x = 0; x < nx; ++x) {
+            const std::size_t k = static_cast<std::size_t>((first + y) * nx + x);
+            rescaled(k);
+            buffer[y * ld + x] = pp[k];
+          }
+      };
+      auto counted_out = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
+        Sums& part = sums_[static_cast<std::size_t>(thread)];
+        for (Index y = 0; y < rows; ++y)
+          for (Index x = 0; x < nx; ++x) {
+            const std::size_t k = static_cast<std::size_t>((first + y) * nx + x);
+            u[k] = buffer[y * ld + x];
+            counted(k, part);
+          }
+      };
+      for (Sums& s : sums_)
+        s = Sums{};
+      operator_->apply(Producer(rescaled_in), Consumer(counted_out));
+      count = combined();
+      displacement_current_ = displacement_fresh_ = true;
+    }
+    set_size_ = count.c;
+    set_mean_ = 0;
+    if (set_size_ == 0) return 0;
     // The residual is r - c on the set: r stepped by the CG (r -= tau G t), c the mean those steps add to it
     // under load control (0 under separation control). Stepped, not formed from u - h at each step: in single
     // precision u - h carries the round-off of u (about 1e-14 m on a micrometre surface), and at 2048^2 the
@@ -453,17 +626,6 @@ class ActiveSet {
       part.e = std::max(part.e, x);
       part.f = std::max(part.f, -x);
     };
-    // The start's mean first, from a pass of its own: sums of squares about a far-off mean would lose the
-    // residual to cancellation (u - h is about -d on the set, the residual many decades smaller).
-    const Sums count = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
-      for (std::size_t k = begin; k < end; ++k)
-        if (in[k]) {
-          part.a += static_cast<double>(u[k]) - static_cast<double>(h[k]);
-          part.c += 1;
-        }
-    });
-    set_size_ = count.c;
-    if (set_size_ == 0) return 0;
     const Index radius = extension_radius();
     T* const weight = extension_weight_.data();
     if (radius > 0) {
@@ -566,10 +728,6 @@ class ActiveSet {
         s.d += sum;
       }
     };
-    using Producer = typename Convolution<T>::Producer;
-    using Consumer = typename Convolution<T>::Consumer;
-    using ProductHook = typename Convolution<T>::ProductHook;
-
     double rz_old = 0;
     Index iterations = 0;
     last_step_change_ = 0;  // no step yet: the pressure has not moved
@@ -617,6 +775,7 @@ class ActiveSet {
       last_step_change_ = f.d > 0 ? f.c / f.d : 0;
       settle(f);
     }
+    set_mean_ = start_shift + c;  // u - h = r + start_shift on the set, r stepped as u is
     return iterations;
   }
 
@@ -639,9 +798,7 @@ class ActiveSet {
     std::vector<T> coarse_pressure;
     const ActiveSetOutcome o =
         coarse_->solve(problem, kCoarseTolerance, 100000, false, coarse_pressure, between);
-    p = interpolate_up(coarse_pressure, grid_.nx / 2, grid_.ny / 2, grid_.periodic);
-    for (T& v : p)
-      v = std::clamp(v, T(0), cap_);
+    p = interpolate_up(coarse_pressure, grid_.nx / 2, grid_.ny / 2, grid_.periodic, cap_, team());
     return o.iterations;
   }
 
@@ -682,6 +839,7 @@ class ActiveSet {
   bool displacement_fresh_ = false;    // ... and made by an application of G, no CG step since
   std::vector<Sums> sums_;
   double set_size_ = 1;                   // nodes in the set
+  double set_mean_ = 0;                   // the mean of u - h on the set at the CG's end (load control)
   double contact_fraction_ = 0;           // of the nodes, in contact (p > 0) in the last solution
   std::unique_ptr<ActiveSet<T>> coarse_;  // the next coarser level of the nested start, once made
 };
