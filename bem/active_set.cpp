@@ -201,7 +201,7 @@ class ActiveSet {
       // nodes above the hardness become plastic; plastic nodes whose gap opens by more than the tolerance
       // become elastic again.
       const double limit = threshold(tolerance, d);
-      const Sums update = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+      const Sums update = over_points([&, d, limit](std::size_t begin, std::size_t end, Sums& part) {
         for (std::size_t k = begin; k < end; ++k) {
           const double g = d + static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
           bool elastic = in_[k], plastic = plastic_[k];
@@ -216,10 +216,11 @@ class ActiveSet {
           } else {
             elastic = g < -limit;
           }
-          part.h +=
-              elastic != static_cast<bool>(in_[k]) || plastic != static_cast<bool>(plastic_[k]) ? 1.0 : 0.0;
-          in_[k] = elastic;
-          plastic_[k] = plastic;
+          if (elastic != static_cast<bool>(in_[k]) || plastic != static_cast<bool>(plastic_[k])) {
+            in_[k] = elastic;
+            plastic_[k] = plastic;
+            part.h += 1;
+          }
           keep_to_sets(p, k, part);  // for the next outer step, or the output's clipping below
         }
       });
@@ -310,25 +311,30 @@ class ActiveSet {
   struct alignas(64) Sums {
     double a = 0, b = 0, c = 0, d = 0, g = 0, h = 0;  // combined as sums
     double e = 0, f = 0;                              // combined as maxima
+
+    void add(const Sums& o) {
+      a += o.a;
+      b += o.b;
+      c += o.c;
+      d += o.d;
+      g += o.g;
+      h += o.h;
+      e = std::max(e, o.e);
+      f = std::max(f, o.f);
+    }
   };
 
   Sums combined() const {
     Sums all;
     all.e = all.f = -std::numeric_limits<double>::infinity();
-    for (const Sums& s : sums_) {
-      all.a += s.a;
-      all.b += s.b;
-      all.c += s.c;
-      all.d += s.d;
-      all.g += s.g;
-      all.h += s.h;
-      all.e = std::max(all.e, s.e);
-      all.f = std::max(all.f, s.f);
-    }
+    for (const Sums& s : sums_)
+      all.add(s);
     return all;
   }
 
   // Runs body(begin, end, sums) on a static split of the points over the team; returns the combined sums.
+  // Each thread's sums are a local object until its body ends: sums kept in sums_ through the loop would be
+  // reloaded and stored again after every store to an array (they might alias).
   template <class Body>
   Sums over_points(Body body) {
     for (Sums& s : sums_)
@@ -337,7 +343,9 @@ class ActiveSet {
     {
       const std::size_t thread = static_cast<std::size_t>(omp_get_thread_num());
       const std::size_t team = static_cast<std::size_t>(omp_get_num_threads());
-      body(n_ * thread / team, n_ * (thread + 1) / team, sums_[thread]);
+      Sums local;
+      body(n_ * thread / team, n_ * (thread + 1) / team, local);
+      sums_[thread] = local;
     }
     return combined();
   }
@@ -367,7 +375,7 @@ class ActiveSet {
         }
     };
     auto set_out = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
-      Sums& part = sums_[static_cast<std::size_t>(thread)];
+      Sums part;  // local: see over_points
       for (Index y = 0; y < rows; ++y)
         for (Index x = 0; x < nx; ++x) {
           const std::size_t k = static_cast<std::size_t>((first + y) * nx + x);
@@ -378,6 +386,7 @@ class ActiveSet {
             part.b += 1;
           }
         }
+      sums_[static_cast<std::size_t>(thread)].add(part);
     };
     for (Sums& s : sums_)
       s = Sums{};
@@ -466,13 +475,13 @@ class ActiveSet {
   // when p changed.
   void keep_to_sets(std::vector<T>& p, std::size_t k, Sums& part) const {
     const T before = p[k];
-    if (plastic_[k])
-      p[k] = cap_;
-    else if (!in_[k])
-      p[k] = 0;
-    part.a += in_[k] ? static_cast<double>(p[k]) : 0.0;
+    const T held = plastic_[k] ? cap_ : (in_[k] ? before : T(0));
+    if (held != before) {  // stored only when changed: most nodes keep p = 0, their memory untouched
+      p[k] = held;
+      part.c += 1;
+    }
+    part.a += in_[k] ? static_cast<double>(held) : 0.0;
     part.b += in_[k];
-    part.c += p[k] != before ? 1.0 : 0.0;
     part.g += plastic_[k] ? static_cast<double>(cap_) : 0.0;
   }
 
@@ -595,13 +604,14 @@ class ActiveSet {
           }
       };
       auto counted_out = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
-        Sums& part = sums_[static_cast<std::size_t>(thread)];
+        Sums part;  // local: see over_points
         for (Index y = 0; y < rows; ++y)
           for (Index x = 0; x < nx; ++x) {
             const std::size_t k = static_cast<std::size_t>((first + y) * nx + x);
             u[k] = buffer[y * ld + x];
             counted(k, part);
           }
+        sums_[static_cast<std::size_t>(thread)].add(part);
       };
       for (Sums& s : sums_)
         s = Sums{};
@@ -619,8 +629,8 @@ class ActiveSet {
     // its sum, its sum of squares, its largest and its smallest value (as the largest of -x).
     T* const r = r_.data();
     double c = 0;
-    auto residual_sums = [&](Sums& part, std::size_t k) {
-      const double x = static_cast<double>(r[k]) - c;
+    auto residual_sums = [&](Sums& part, std::size_t k, double shift) {  // shift: c, as a local copy
+      const double x = static_cast<double>(r[k]) - shift;
       part.a += x;
       part.b += x * x;
       part.e = std::max(part.e, x);
@@ -628,7 +638,9 @@ class ActiveSet {
     };
     const Index radius = extension_radius();
     T* const weight = extension_weight_.data();
-    if (radius > 0) {
+    // The extension's weights of this set, made before the first iteration (none when the start is
+    // already within the stopping test).
+    auto make_weights = [&] {
       const double floor = kExtensionFloor * static_cast<double>((2 * radius + 1) * (2 * radius + 1));
       box_sum(
           grid_.nx, grid_.ny, radius, grid_.periodic, [&](std::size_t k) { return in[k] ? 1.0 : 0.0; },
@@ -636,15 +648,15 @@ class ActiveSet {
             weight[k] = in[k] ? T(0) : static_cast<T>(1 / std::max(sum, floor));
           },
           box_scratch_, team());
-    }
+    };
     // r = u - h less its mean on the set (load control), u - h + d (separation control).
     const double start_shift = load_control_ ? count.a / set_size_ : -separation_;
-    const Sums start = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+    const Sums start = over_points([&, start_shift](std::size_t begin, std::size_t end, Sums& part) {
       part.e = part.f = -std::numeric_limits<double>::infinity();
       for (std::size_t k = begin; k < end; ++k) {
         r[k] = in[k] ? static_cast<T>(static_cast<double>(u[k]) - static_cast<double>(h[k]) - start_shift)
                      : T(0);
-        if (in[k]) residual_sums(part, k);
+        if (in[k]) residual_sums(part, k, 0.0);
       }
     });
     double norm = 0, largest = 0;
@@ -706,8 +718,10 @@ class ActiveSet {
       tau = static_cast<T>(t_gt > 0 ? rz / t_gt : 0.0);
     };
     auto stepped_out = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
-      Sums& s = sums_[static_cast<std::size_t>(thread)];
+      Sums s;  // local: see over_points
+      s.e = s.f = -std::numeric_limits<double>::infinity();
       const T step = tau;
+      const double shift = c;
       for (Index y = 0; y < rows; ++y) {
         const Index i0 = (first + y) * nx;
         double moved = 0, sum = 0;
@@ -721,12 +735,13 @@ class ActiveSet {
           u[k] -= step * w;
           if (in[k]) {
             r[k] -= step * w;
-            residual_sums(s, k);
+            residual_sums(s, k, shift);
           }
         }
         s.c += moved;
         s.d += sum;
       }
+      sums_[static_cast<std::size_t>(thread)].add(s);
     };
     double rz_old = 0;
     Index iterations = 0;
@@ -737,6 +752,7 @@ class ActiveSet {
       const bool within = largest <= absolute && (reduction > 0 || last_step_change_ <= step_change);
       if (within || norm <= reduction * r0 || norm == 0) break;
       if (between) between();
+      if (iterations == 0 && radius > 0) make_weights();
       clear();
       shift_c = static_cast<T>(c);
       if (radius > 0)  // the residual extended off the set: r there = its window sum on the set x weight

@@ -29,9 +29,10 @@ double direct_sum(const std::vector<double>& v, Index nx, Index ny, Index radius
 }
 
 TEST(BoxSum, MatchesTheSumOfEveryWindow) {
-  // A non-square grid with odd sides, radii from 0 to the largest a periodic window allows, 1 and 2 threads
-  // (rows split differently). Running sums add and subtract: agreement to 1e-12 of the values' scale (each
-  // sum is of at most 9 x 9 = 81 values of order 1, a few hundred roundings of 1e-16).
+  // A non-square grid with odd sides, radii from 0 to the largest a periodic window allows, 1 to 4 threads
+  // (rows split differently; with 4, blocks of 2 or 3 rows, shorter than most windows). Running sums add and
+  // subtract: agreement to 1e-12 of the values' scale (each sum is of at most 9 x 9 = 81 values of order 1, a
+  // few hundred roundings of 1e-16).
   const Index nx = 11, ny = 9;
   std::mt19937_64 random(5);
   std::uniform_real_distribution<double> uniform(-1, 1);
@@ -41,7 +42,7 @@ TEST(BoxSum, MatchesTheSumOfEveryWindow) {
   std::vector<double> scratch, sums(values.size());
   for (const bool periodic : {true, false})
     for (const Index radius : {0, 1, 2, 4})
-      for (const int threads : {1, 2}) {
+      for (const int threads : {1, 2, 3, 4}) {
         box_sum(
             nx, ny, radius, periodic, [&](std::size_t k) { return values[k]; },
             [&](std::size_t k, double sum, int) { sums[k] = sum; }, scratch, threads);
