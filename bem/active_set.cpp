@@ -579,11 +579,14 @@ class ActiveSet {
     auto rescaled = [&](std::size_t k) {
       if (scale != 1 && !plastic[k]) pp[k] = static_cast<T>(scale * static_cast<double>(pp[k]));
     };
+    // Also the plastic nodes' sum of p (H each): off both sets p = 0, so the sum of |p| the CG's relative
+    // change needs is that of the elastic set, where p moves, and this constant.
     auto counted = [&](std::size_t k, Sums& part) {
       if (in[k]) {
         part.a += static_cast<double>(u[k]) - static_cast<double>(h[k]);
         part.c += 1;
       }
+      part.g += plastic[k] ? static_cast<double>(pp[k]) : 0.0;
     };
     Sums count;
     if (displacement_current_) {
@@ -653,11 +656,11 @@ class ActiveSet {
     const double start_shift = load_control_ ? count.a / set_size_ : -separation_;
     const Sums start = over_points([&, start_shift](std::size_t begin, std::size_t end, Sums& part) {
       part.e = part.f = -std::numeric_limits<double>::infinity();
-      for (std::size_t k = begin; k < end; ++k) {
-        r[k] = in[k] ? static_cast<T>(static_cast<double>(u[k]) - static_cast<double>(h[k]) - start_shift)
-                     : T(0);
-        if (in[k]) residual_sums(part, k, 0.0);
-      }
+      for (std::size_t k = begin; k < end; ++k)  // (r off the set is the extension's, written before use)
+        if (in[k]) {
+          r[k] = static_cast<T>(static_cast<double>(u[k]) - static_cast<double>(h[k]) - start_shift);
+          residual_sums(part, k, 0.0);
+        }
     });
     double norm = 0, largest = 0;
     // c moved to the mean of x (load control), and the residual's norm and largest value from the sums.
@@ -706,11 +709,14 @@ class ActiveSet {
       const T zb = zbar, b = beta;
       for (Index y = 0; y < rows; ++y) {
         const Index i0 = (first + y) * nx;
-        for (Index x = 0; x < nx; ++x) {
-          const T tv = in[i0 + x] ? (z[i0 + x] - zb) + b * t[i0 + x] : T(0);
-          t[i0 + x] = tv;
-          buffer[y * ld + x] = tv;
-        }
+        for (Index x = 0; x < nx; ++x)  // t is read and written on the set only (b = 0 at a start)
+          if (in[i0 + x]) {
+            const T tv = (z[i0 + x] - zb) + b * t[i0 + x];
+            t[i0 + x] = tv;
+            buffer[y * ld + x] = tv;
+          } else {
+            buffer[y * ld + x] = T(0);
+          }
       }
     };
     auto step_length = [&](double product) {
@@ -727,13 +733,13 @@ class ActiveSet {
         double moved = 0, sum = 0;
         for (Index x = 0; x < nx; ++x) {
           const std::size_t k = static_cast<std::size_t>(i0 + x);
-          const T change = step * t[k];
-          moved += std::abs(static_cast<double>(change));
-          pp[k] -= change;
-          sum += std::abs(static_cast<double>(pp[k]));
           const T w = buffer[y * ld + x];
           u[k] -= step * w;
-          if (in[k]) {
+          if (in[k]) {  // t = 0 off the set: p moves on it only
+            const T change = step * t[k];
+            moved += std::abs(static_cast<double>(change));
+            pp[k] -= change;
+            sum += std::abs(static_cast<double>(pp[k]));
             r[k] -= step * w;
             residual_sums(s, k, shift);
           }
@@ -788,7 +794,8 @@ class ActiveSet {
       displacement_fresh_ = false;  // u stepped
       if (!(t_gt > 0)) break;       // nothing moved: tau was 0
       const Sums f = combined();
-      last_step_change_ = f.d > 0 ? f.c / f.d : 0;
+      const double pressure_sum = f.d + count.g;  // sum |p|: the elastic set's and the plastic nodes'
+      last_step_change_ = pressure_sum > 0 ? f.c / pressure_sum : 0;
       settle(f);
     }
     set_mean_ = start_shift + c;  // u - h = r + start_shift on the set, r stepped as u is
