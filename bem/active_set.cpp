@@ -363,36 +363,49 @@ class ActiveSet {
   // The start's displacement: u = G p with p times `factor` on its way in, and on u's way out the elastic
   // set {p > 0}; returns the flat's height from the mean of u - h on that set.
   double start_displacement(std::vector<T>& p, double factor) {
-    using Producer = typename Convolution<T>::Producer;
-    using Consumer = typename Convolution<T>::Consumer;
-    const Index nx = grid_.nx;
-    auto scaled_in = [&](Index first, Index rows, T* buffer, Index ld, int) {
-      for (Index y = 0; y < rows; ++y)
-        for (Index x = 0; x < nx; ++x) {
-          const std::size_t k = static_cast<std::size_t>((first + y) * nx + x);
+    const Sums set = fresh_displacement(
+        p,
+        [&](std::size_t k) {
           if (factor != 1) p[k] = static_cast<T>(factor * static_cast<double>(p[k]));
-          buffer[y * ld + x] = p[k];
-        }
-    };
-    auto set_out = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
-      Sums part;  // local: see over_points
-      for (Index y = 0; y < rows; ++y)
-        for (Index x = 0; x < nx; ++x) {
-          const std::size_t k = static_cast<std::size_t>((first + y) * nx + x);
-          u_[k] = buffer[y * ld + x];
+        },
+        [&](std::size_t k, Sums& part) {
           in_[k] = p[k] > 0;
           if (in_[k]) {
             part.a += static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
             part.b += 1;
           }
+        });
+    return flat_height(set);
+  }
+
+  // u = G p, made afresh, with per-point work riding along: on_input(k) before p[k] goes into the transform
+  // (it may change p[k]), on_output(k, sums) once u[k] is written. Returns the combined sums.
+  template <class Input, class Output>
+  Sums fresh_displacement(std::vector<T>& p, Input on_input, Output on_output) {
+    const Index nx = grid_.nx;
+    auto produce = [&](Index first, Index rows, T* buffer, Index ld, int) {
+      for (Index y = 0; y < rows; ++y)
+        for (Index x = 0; x < nx; ++x) {
+          const std::size_t k = static_cast<std::size_t>((first + y) * nx + x);
+          on_input(k);
+          buffer[y * ld + x] = p[k];
+        }
+    };
+    auto consume = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
+      Sums part;  // local: see over_points
+      for (Index y = 0; y < rows; ++y)
+        for (Index x = 0; x < nx; ++x) {
+          const std::size_t k = static_cast<std::size_t>((first + y) * nx + x);
+          u_[k] = buffer[y * ld + x];
+          on_output(k, part);
         }
       sums_[static_cast<std::size_t>(thread)].add(part);
     };
     for (Sums& s : sums_)
       s = Sums{};
-    operator_->apply(Producer(scaled_in), Consumer(set_out));
+    operator_->apply(typename Convolution<T>::Producer(produce), typename Convolution<T>::Consumer(consume));
     displacement_current_ = displacement_fresh_ = true;
-    return flat_height(combined());
+    return combined();
   }
 
   // The flat's height that makes the gap zero-mean on a set, from the sum of u - h there (a) and its nodes
@@ -598,29 +611,7 @@ class ActiveSet {
         }
       });
     } else {
-      auto rescaled_in = [&](Index first, Index rows, T* buffer, Index ld, int) {
-        for (Index y = 0; y < rows; ++y)
-          for (Index x = 0; x < nx; ++x) {
-            const std::size_t k = static_cast<std::size_t>((first + y) * nx + x);
-            rescaled(k);
-            buffer[y * ld + x] = pp[k];
-          }
-      };
-      auto counted_out = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
-        Sums part;  // local: see over_points
-        for (Index y = 0; y < rows; ++y)
-          for (Index x = 0; x < nx; ++x) {
-            const std::size_t k = static_cast<std::size_t>((first + y) * nx + x);
-            u[k] = buffer[y * ld + x];
-            counted(k, part);
-          }
-        sums_[static_cast<std::size_t>(thread)].add(part);
-      };
-      for (Sums& s : sums_)
-        s = Sums{};
-      operator_->apply(Producer(rescaled_in), Consumer(counted_out));
-      count = combined();
-      displacement_current_ = displacement_fresh_ = true;
+      count = fresh_displacement(p, rescaled, counted);
     }
     set_size_ = count.c;
     set_mean_ = 0;
