@@ -115,7 +115,7 @@ class ActiveSet {
     if (!warm) outcome.coarse_iterations = nested_start(problem, p, between);
     // The starting sets. Cold: {p - k g > 0}, k the stiffness of one pixel, g the gap of the nested start
     // (under load control with the flat from its mean on the start's own contact set), under load control
-    // cut to the coarse level's contact area (keep_coarse_area). Warm: the start's own contact set {p > 0},
+    // cut to the coarse level's contact area (coarse_area_level). Warm: the start's own contact set {p > 0},
     // the previous solution's: under a growing load the set of the rule above overshoots (the scaled
     // previous pressure presses the flat too deep; surface A at 256^2, load 0.001 -> 0.002: 8673 nodes for
     // the 2472 of the solution), and the outer steps that shrink it back cost more than those that grow the
@@ -124,8 +124,8 @@ class ActiveSet {
     // the nodes at or above the hardness start plastic. The start's G p is made with p scaled to the load
     // on its way in and the set {p > 0} with its mean of u - h on the way out.
     const double factor = load_control_ ? start_scale(p, total) : 1.0;
-    double d = start_displacement(p, factor);
-    if (!load_control_) d = separation_;
+    const double start_flat = start_displacement(p, factor);
+    double d = load_control_ ? start_flat : separation_;
     if (!warm) {
       const double stiffness = 1 / operator_->self_response();
       const std::size_t candidates = score_start(p, d, stiffness);

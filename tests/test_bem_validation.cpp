@@ -547,7 +547,7 @@ TEST(ActiveSetExtendedFilter, CutsTheIterationsOnARoughSurface) {
 
 TEST(ActiveSetColdStart, KeepsNoMoreNodesThanTheCoarseLevelTouches) {
   // A cold start under load control keeps at most as many nodes as the coarse level's solution touches
-  // (bem/active_set.cpp, keep_coarse_area): the rule p - k g > 0 on the interpolated coarse pressure lets in
+  // (bem/active_set.cpp, coarse_area_level): the rule p - k g > 0 on the interpolated coarse pressure lets in
   // more, and the outer steps must take them out. Surface A on 256 x 256 points, periodic and not,
   // P/(E* A0) = 0.005 gbar (about 1 % contact, where the set updates are most of the work), tolerance 1e-6.
   // Measured: 23 + 23 iterations, 26 + 26 with the rule's set; at most 49 tells the two apart with a few
