@@ -25,6 +25,9 @@ constexpr double kInnerReduction = 0.1;
 // The coarsest level of the nested start, and the tolerance its levels are solved to (a start only).
 constexpr Index kCoarsest = 64;
 constexpr double kCoarseTolerance = 1e-3;
+// The CG's displacement u (stepped, not made afresh) is kept as the output's when its drift from G p is
+// this many times below the convergence threshold.
+constexpr double kDriftMargin = 1000;
 // A guard against a set that cycles: at most this many outer steps (each ends an inner solve).
 constexpr Index kMaxOuter = 500;
 // The extended filter (docs/solvers.md "The extended filter"): the residual is extended off the contact set
@@ -112,7 +115,11 @@ class ActiveSet {
                                            : std::numeric_limits<T>::infinity();
     const double total = problem.mean_pressure * static_cast<double>(n_);
     displacement_current_ = displacement_fresh_ = false;
-    if (!warm) outcome.coarse_iterations = nested_start(problem, p, between);
+    if (!warm) {
+      const ActiveSetOutcome coarse = nested_start(problem, p, between);
+      outcome.coarse_iterations = coarse.iterations;
+      outcome.work = coarse.work / 4;  // a coarse level's iteration costs a quarter of a fine one
+    }
     // The starting sets. Cold: {p - k g > 0}, k the stiffness of one pixel, g the gap of the nested start
     // (under load control with the flat from its mean on the start's own contact set), under load control
     // cut to the coarse level's contact area (coarse_area_level). Warm: the start's own contact set {p > 0},
@@ -259,9 +266,16 @@ class ActiveSet {
     });
     const bool clipped = kept.c > 0 || held.c > 0;  // (kept: the last update's holding p to its sets)
     if (clipped && load_control_) scale_to(p, total);
-    // The gap of the output afresh, not from the CG's steps; already so when the last outer step's start
-    // made it and no step or clipping followed (a set confirmed unchanged).
-    if (clipped || !(displacement_current_ && displacement_fresh_)) {
+    // The gap of the output afresh when the CG's steps could have moved it from G p by a part of the
+    // threshold: after a clipping (u is no longer G p), or when the drift of u stepped `inner` times, at most
+    // about inner x epsilon of the height range (measured at 1024^2, 10 to 22 steps: 0.25 to 1 of that, in
+    // double and in float), comes within a thousandth of the threshold (single precision, or a solve near
+    // round-off such as the 1e-12 references). In double at the tolerances of use the fresh G p would
+    // change the gap by 1e-15 of the height range against a threshold of 1e-8 of the approach.
+    const double drift = static_cast<double>(inner + 1) *
+                         static_cast<double>(std::numeric_limits<T>::epsilon()) * height_range_;
+    const bool drifted = !displacement_fresh_ && kDriftMargin * drift > threshold(tolerance, d);
+    if (clipped || !displacement_current_ || drifted) {
       operator_->apply(p.data(), u_.data());
       displacement_current_ = displacement_fresh_ = true;
       ++outcome.iterations;
@@ -280,7 +294,8 @@ class ActiveSet {
     });
     outcome.separation = load_control_ ? flat_height(last) : separation_;
     contact_fraction_ = last.d / static_cast<double>(n_);
-    outcome.iterations += (outcome.coarse_iterations + 3) / 4;
+    outcome.work += static_cast<double>(outcome.iterations);
+    outcome.iterations = std::llround(outcome.work);
     return outcome;
   }
 
@@ -794,11 +809,11 @@ class ActiveSet {
   }
 
   // The nested start: the same problem on the surface averaged over 2 x 2 blocks solved to
-  // kCoarseTolerance (itself nested), its pressure interpolated. Returns the coarse levels' iterations (0
-  // when the grid is too small or odd: then the start is the uniform pressure under load control, and
-  // under separation control the penetration pressed in by the stiffness of one pixel, as PK's).
-  Index nested_start(const ActiveSetProblem& problem, std::vector<T>& p,
-                     const std::function<void()>& between) {
+  // kCoarseTolerance (itself nested), its pressure interpolated. Returns the coarse level's outcome (no
+  // iterations when the grid is too small or odd: then the start is the uniform pressure under load control,
+  // and under separation control the penetration pressed in by the stiffness of one pixel, as PK's).
+  ActiveSetOutcome nested_start(const ActiveSetProblem& problem, std::vector<T>& p,
+                                const std::function<void()>& between) {
     if (!coarse_) {
       p.assign(n_, T(1));
       if (!problem.load_control) {
@@ -807,13 +822,13 @@ class ActiveSet {
           p[k] = static_cast<T>(std::min(
               std::max(static_cast<double>(h_[k]) - problem.separation, 0.0) * stiffness, problem.hardness));
       }
-      return 0;
+      return {};
     }
     std::vector<T> coarse_pressure;
     const ActiveSetOutcome o =
         coarse_->solve(problem, kCoarseTolerance, 100000, false, coarse_pressure, between);
     p = interpolate_up(coarse_pressure, grid_.nx / 2, grid_.ny / 2, grid_.periodic, cap_, team());
-    return o.iterations;
+    return o;
   }
 
   // The next coarser level (null when the grid is too small or odd): the surface averaged over 2 x 2 blocks.

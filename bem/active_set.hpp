@@ -31,9 +31,11 @@
 // The iteration count: the inner CG iterations (each one application of G and one of the filter: two FFT
 // pairs, padded for non-periodic grids), plus one per outer step whose start needs a fresh displacement G p
 // (nodes left the set or became plastic; nodes that only entered, at p = 0, change nothing), plus the
-// starting set's gap and the final gap (not made again when the last outer step's start made it and
-// nothing moved since), plus the coarse levels' counts divided by 4 per level (their cost in fine
-// iterations).
+// starting set's gap and the final gap (made again only after a clipping, or when the CG's steps could
+// have moved u from G p by a thousandth of the threshold: single precision, or tolerances near round-off),
+// plus the coarse levels' work: each level's iterations count a quarter of the next finer level's (a
+// quarter of the points; the transforms' N log N cost a little less), summed over the levels and rounded
+// once, to the nearest iteration (before, rounded up at each level: up to one iteration more per level).
 //
 // Separation control: the flat's height d is given, so the linear problem on A is gap = 0 there with no
 // condition on the sum and no mean taken out of the residual, the filtered residual or G's response (the
@@ -59,8 +61,9 @@
 namespace contactbench {
 
 struct ActiveSetOutcome {
-  Index iterations = 0;         // inner CG iterations + outer steps (+ coarse levels, see above)
+  Index iterations = 0;  // inner CG iterations + outer steps (+ coarse levels, see above): `work` rounded
   Index coarse_iterations = 0;  // of the coarse levels, as they counted (each costs 1/4 of the finer's)
+  double work = 0;              // the same in fine-grid iterations, the coarse levels' quarters not rounded
   Index outer = 0;
   double residual = 0;    // max |g| on the contact set / height range
   double change = 0;      // sum |p - p_before| / sum p over the last outer step
