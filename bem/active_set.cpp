@@ -110,6 +110,8 @@ class ActiveSet {
     if (!(height_range_ > 0)) height_range_ = 1;  // a flat surface: relative to 1 m, as ContactSolution
     make_coarse_level();                          // the whole hierarchy, with its FFT plans, made once
     changes_.resize(sums_.size());
+    flips_.resize(sums_.size());
+    window_count_.resize(n_);
     response_.assign(n_, T(0));
     std::vector<T> unit(n_, T(0));
     unit[0] = T(1);
@@ -125,6 +127,7 @@ class ActiveSet {
                                            : std::numeric_limits<T>::infinity();
     const double total = problem.mean_pressure * static_cast<double>(n_);
     displacement_current_ = displacement_fresh_ = false;
+    weights_current_ = false;  // the starts below make new sets
     if (!warm) {
       const ActiveSetOutcome coarse = nested_start(problem, p, between);
       outcome.coarse_iterations = coarse.iterations;
@@ -226,6 +229,8 @@ class ActiveSet {
       // nodes above the hardness become plastic; plastic nodes whose gap opens by more than the tolerance
       // become elastic again.
       const double limit = threshold(tolerance, d);
+      for (auto& log : flips_)
+        log.clear();
       const Sums update = over_points([&, d, limit](std::size_t begin, std::size_t end, Sums& part) {
         for (std::size_t k = begin; k < end; ++k) {
           const double g = d + static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
@@ -242,6 +247,7 @@ class ActiveSet {
             elastic = g < -limit;
           }
           if (elastic != static_cast<bool>(in_[k]) || plastic != static_cast<bool>(plastic_[k])) {
+            if (elastic != static_cast<bool>(in_[k])) log_flip(k, elastic);
             in_[k] = elastic;
             plastic_[k] = plastic;
             part.h += 1;
@@ -249,6 +255,7 @@ class ActiveSet {
           keep_to_sets(p, k, part);  // for the next outer step, or the output's clipping below
         }
       });
+      note_flips();
       const double residual = update.e;
       const Index changed = static_cast<Index>(update.h);
       kept = update;
@@ -512,6 +519,7 @@ class ActiveSet {
       const T depth = h_[k] - u_[k];  // as ranked: the same operation on the same values
       plastic_[k] = depth > level;
       in_[k] = depth == level;
+      weights_current_ = false;
       p[k] = plastic_[k] ? cap_ : T(in_[k] ? 1 : 0);
     }
     displacement_current_ = displacement_fresh_ = false;
@@ -568,6 +576,65 @@ class ActiveSet {
       }
     }
     displacement_fresh_ = false;
+  }
+
+  // The set's changes since the extension's weights were made, so that a few of them update the weights
+  // in their windows instead of a window sum over the grid (kept only while they are few: each costs a
+  // window of (2 radius + 1)^2 nodes on one thread; the same counts and weights either way).
+  struct Flip {
+    std::size_t node = 0;
+    bool entered = false;
+  };
+  std::size_t few_flips() const {
+    const std::size_t window = static_cast<std::size_t>(2 * extension_radius() + 1);
+    return n_ / (4 * window * window);
+  }
+  // In the set update: node k leaves or enters the elastic set (each thread's first few kept).
+  void log_flip(std::size_t k, bool entered) {
+    auto& log = flips_[static_cast<std::size_t>(omp_get_thread_num())];
+    if (log.size() <= few_flips()) log.push_back({k, entered});
+  }
+  // After the set update: its flips join those pending, or the weights are to be made afresh.
+  void note_flips() {
+    if (!weights_current_) return;
+    std::size_t total = pending_flips_.size();
+    for (const auto& log : flips_)
+      total += log.size();
+    if (total > few_flips()) {
+      weights_current_ = false;
+      pending_flips_.clear();
+      return;
+    }
+    for (const auto& log : flips_)
+      pending_flips_.insert(pending_flips_.end(), log.begin(), log.end());
+  }
+  // The window counts moved by the pending flips, then the weights of the nodes in their windows.
+  template <class WeightOf>
+  void update_weights(Index radius, WeightOf weight_of) {
+    const Index nx = grid_.nx, ny = grid_.ny;
+    const bool periodic = grid_.periodic;
+    auto over_window = [&](std::size_t node, auto visit) {
+      const Index ky = static_cast<Index>(node) / nx, kx = static_cast<Index>(node) % nx;
+      for (Index dy = -radius; dy <= radius; ++dy) {
+        Index y = ky + dy;
+        if (periodic) y = (y + ny) % ny;
+        if (y < 0 || y >= ny) continue;
+        for (Index dx = -radius; dx <= radius; ++dx) {
+          Index x = kx + dx;
+          if (periodic) x = (x + nx) % nx;
+          if (x < 0 || x >= nx) continue;
+          visit(static_cast<std::size_t>(y * nx + x));
+        }
+      }
+    };
+    for (const Flip& flip : pending_flips_)
+      over_window(flip.node, [&](std::size_t j) {
+        window_count_[j] = static_cast<std::uint16_t>(window_count_[j] + (flip.entered ? 1 : -1));
+      });
+    for (const Flip& flip : pending_flips_)
+      over_window(flip.node, [&](std::size_t j) {
+        extension_weight_[j] = weight_of(j, static_cast<double>(window_count_[j]));
+      });
   }
 
   // The factor on the elastic pressures (summing to `elastic`; the plastic ones to `plastic`) that makes
@@ -708,12 +775,22 @@ class ActiveSet {
     // already within the stopping test).
     auto make_weights = [&] {
       const double floor = kExtensionFloor * static_cast<double>((2 * radius + 1) * (2 * radius + 1));
-      box_sum(
-          grid_.nx, grid_.ny, radius, grid_.periodic, [&](std::size_t k) { return in[k] ? 1.0 : 0.0; },
-          [&](std::size_t k, double sum, int) {
-            weight[k] = in[k] ? 0.0f : static_cast<float>(1 / std::max(sum, floor));
-          },
-          box_scratch_, team());
+      auto weight_of = [&](std::size_t k, double count) {
+        return in[k] ? 0.0f : static_cast<float>(1 / std::max(count, floor));
+      };
+      if (weights_current_) {
+        update_weights(radius, weight_of);
+      } else {
+        box_sum(
+            grid_.nx, grid_.ny, radius, grid_.periodic, [&](std::size_t k) { return in[k] ? 1.0 : 0.0; },
+            [&](std::size_t k, double sum, int) {
+              window_count_[k] = static_cast<std::uint16_t>(sum);
+              weight[k] = weight_of(k, sum);
+            },
+            box_scratch_, team());
+      }
+      weights_current_ = true;
+      pending_flips_.clear();
     };
     // r = u - h less its mean on the set (load control), u - h + d (separation control).
     const double start_shift = load_control_ ? count.a / set_size_ : -separation_;
@@ -933,7 +1010,12 @@ class ActiveSet {
     double dp = 0;
   };
   std::vector<std::array<Change, kFewChanges>> changes_;  // per thread, recorded by keep_to_sets
-  std::vector<T> response_;               // G e_0: the displacement of a unit pressure at node 0
+  std::vector<T> response_;
+  std::vector<std::uint16_t> window_count_;  // per node: the set nodes in its window (with the weights)
+  bool weights_current_ = false;             // the weights are those of the set before pending_flips_
+  std::vector<std::vector<Flip>> flips_;     // per thread: the last set update's flips
+  std::vector<Flip> pending_flips_;       // the flips since the weights were made               // G e_0: the
+                                          // displacement of a unit pressure at node 0
   double set_size_ = 1;                   // nodes in the set
   double set_mean_ = 0;                   // the mean of u - h on the set at the CG's end (load control)
   double contact_fraction_ = 0;           // of the nodes, in contact (p > 0) in the last solution
