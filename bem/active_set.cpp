@@ -306,12 +306,13 @@ class ActiveSet {
       displacement_current_ = displacement_fresh_ = true;
       ++outcome.iterations;
     }
-    // The elastic set {p > 0} less the plastic nodes, the flat's height from its mean of u - h, and the
-    // nodes touching (elastic or plastic).
+    // The elastic set {p > 0} less the plastic nodes, the flat's height from its mean of u - h, the nodes
+    // touching (elastic or plastic) and the sum of p.
     const Sums last = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
       for (std::size_t k = begin; k < end; ++k) {
         in_[k] = p[k] > 0 && !plastic_[k];
         part.d += in_[k] || plastic_[k] ? 1.0 : 0.0;
+        part.g += static_cast<double>(p[k]);
         if (in_[k]) {
           part.a += static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
           part.b += 1;
@@ -319,6 +320,7 @@ class ActiveSet {
       }
     });
     outcome.separation = load_control_ ? flat_height(last) : separation_;
+    outcome.pressure_sum = last.g;
     contact_fraction_ = last.d / static_cast<double>(n_);
     outcome.work += static_cast<double>(outcome.iterations);
     outcome.iterations = std::llround(outcome.work);

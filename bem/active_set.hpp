@@ -30,7 +30,9 @@
 // p = 0 and g = 0 within it would otherwise flip in and out for ever).
 // The iteration count: the inner CG iterations (each one application of G and one of the filter: two FFT
 // pairs, padded for non-periodic grids), plus one per outer step whose start needs a fresh displacement G p
-// (nodes left the set or became plastic; nodes that only entered, at p = 0, change nothing), plus the
+// (more than 16 nodes left the set or became plastic; nodes that only entered, at p = 0, change nothing,
+// and up to 16 changed pressures are added to G p as their columns of G, a pass over the grid per node,
+// not a transform, so not counted: its time is in the solve's), plus the
 // starting set's gap and the final gap (made again only after a clipping, or when the CG's steps could
 // have moved u from G p by a thousandth of the threshold: single precision, or tolerances near round-off),
 // plus the coarse levels' work: each level's iterations count a quarter of the next finer level's (a
@@ -65,9 +67,10 @@ struct ActiveSetOutcome {
   Index coarse_iterations = 0;  // of the coarse levels, as they counted (each costs 1/4 of the finer's)
   double work = 0;              // the same in fine-grid iterations, the coarse levels' quarters not rounded
   Index outer = 0;
-  double residual = 0;    // max |g| on the contact set / height range
-  double change = 0;      // sum |p - p_before| / sum p over the last outer step
-  double separation = 0;  // the flat's height d (g = d - h + G p)
+  double residual = 0;      // max |g| on the contact set / height range
+  double change = 0;        // sum |p - p_before| / sum p over the last outer step
+  double separation = 0;    // the flat's height d (g = d - h + G p)
+  double pressure_sum = 0;  // sum p over the nodes [Pa]
   bool converged = false;
 };
 

@@ -1,5 +1,6 @@
 #include "contactbench/bem/polonsky_keer.hpp"
 
+#include <omp.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -175,7 +176,7 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     }
     if (warm_) {  // the previous pressure (or its extrapolation) scaled to the new load
       s_[cur_] = total / q_sum(q_[cur_]);
-    } else {  // the uniform pressure
+    } else if (!active_set_) {  // the uniform pressure (active_set makes its own cold start)
       std::fill(q_[cur_].begin(), q_[cur_].end(), T(1));
       s_[cur_] = mean_pressure;
     }
@@ -280,26 +281,45 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     s.gap.resize(ny, nx);
     const std::vector<T>& q = q_[cur_];
     const double scale = s_[cur_];
+    // On the team, each thread a block of points, the parts combined in thread order (the same sums every
+    // run for a fixed thread count).
+    struct Part {
+      double residual = 0, sum = 0;
+      Index contact = 0, plastic = 0;
+    };
+    std::vector<Part> parts(static_cast<std::size_t>(std::max(threads_, 1)));
+#pragma omp parallel num_threads(static_cast <int>(parts.size()))
+    {
+      const Index thread = omp_get_thread_num(), team = omp_get_num_threads();
+      Part part;
+      for (Index i = n_ * thread / team; i < n_ * (thread + 1) / team; ++i) {
+        const std::size_t k = static_cast<std::size_t>(i);
+        const T pt = static_cast<T>(scale) * q[k];  // as the iteration computes it
+        const double p = static_cast<double>(pt);
+        s.pressure.data()[i] = p;
+        part.sum += p;
+        const double gap = static_cast<double>(g_[k]) + gap_offset_;
+        if (!(pt > 0)) {
+          s.gap.data()[i] = gap;
+        } else {
+          // Zero on the contact set; on plastic nodes too (the surface flowed to fit the flat there).
+          s.gap.data()[i] = 0;
+          ++part.contact;
+          if (static_cast<double>(pt) >= hardness_)
+            ++part.plastic;
+          else
+            part.residual = std::max(part.residual, std::abs(gap));
+        }
+      }
+      parts[static_cast<std::size_t>(thread)] = part;
+    }
     double residual = 0, sum = 0;
     Index contact = 0, plastic = 0;
-    for (Index i = 0; i < n_; ++i) {
-      const std::size_t k = static_cast<std::size_t>(i);
-      const T pt = static_cast<T>(scale) * q[k];  // as the iteration computes it
-      const double p = static_cast<double>(pt);
-      s.pressure.data()[i] = p;
-      sum += p;
-      const double gap = static_cast<double>(g_[k]) + gap_offset_;
-      if (!(pt > 0)) {
-        s.gap.data()[i] = gap;
-      } else {
-        // Zero on the contact set; on plastic nodes too (the surface flowed to fit the flat there).
-        s.gap.data()[i] = 0;
-        ++contact;
-        if (static_cast<double>(pt) >= hardness_)
-          ++plastic;
-        else
-          residual = std::max(residual, std::abs(gap));
-      }
+    for (const Part& part : parts) {
+      residual = std::max(residual, part.residual);
+      sum += part.sum;
+      contact += part.contact;
+      plastic += part.plastic;
     }
     s.separation = separation_;
     s.contact_points = contact;
@@ -338,7 +358,7 @@ class PolonskyKeerCore final : public PolonskyKeer::Engine {
     }
     q_[cur_] = std::move(pressure);
     s_[cur_] = 1;
-    last_sum_ = q_sum(q_[cur_]);
+    last_sum_ = result.pressure_sum;
     hardness_ = stored(problem.hardness);
     separation_ = result.separation;
     gap_offset_ = separation_;  // g holds u - h: the gap is g + d
