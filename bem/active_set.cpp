@@ -1012,16 +1012,15 @@ class ActiveSet {
     double dp = 0;
   };
   std::vector<std::array<Change, kFewChanges>> changes_;  // per thread, recorded by keep_to_sets
-  std::vector<T> response_;
+  std::vector<T> response_;                  // G e_0: the displacement of a unit pressure at node 0
   std::vector<std::uint16_t> window_count_;  // per node: the set nodes in its window (with the weights)
   bool weights_current_ = false;             // the weights are those of the set before pending_flips_
   std::vector<std::vector<Flip>> flips_;     // per thread: the last set update's flips
-  std::vector<Flip> pending_flips_;       // the flips since the weights were made               // G e_0: the
-                                          // displacement of a unit pressure at node 0
-  double set_size_ = 1;                   // nodes in the set
-  double set_mean_ = 0;                   // the mean of u - h on the set at the CG's end (load control)
-  double contact_fraction_ = 0;           // of the nodes, in contact (p > 0) in the last solution
-  std::unique_ptr<ActiveSet<T>> coarse_;  // the next coarser level of the nested start, once made
+  std::vector<Flip> pending_flips_;          // the flips since the weights were made
+  double set_size_ = 1;                      // nodes in the set
+  double set_mean_ = 0;                      // the mean of u - h on the set at the CG's end (load control)
+  double contact_fraction_ = 0;              // of the nodes, in contact (p > 0) in the last solution
+  std::unique_ptr<ActiveSet<T>> coarse_;     // the next coarser level of the nested start, once made
 };
 
 }  // namespace
