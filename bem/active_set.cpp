@@ -44,6 +44,9 @@ constexpr Index kMaxOuter = 500;
 // radii 6 / 8 / 12 / 16, against 357 without the extension.
 constexpr Index kExtensionRadius = 12;
 constexpr double kExtensionFloor = 0.25;
+// The window counts kept with the weights are 16-bit (ActiveSet::window_count_).
+static_assert((2 * kExtensionRadius + 1) * (2 * kExtensionRadius + 1) <=
+              std::numeric_limits<std::uint16_t>::max());
 
 // Coarse pixel values on the fine grid: bilinear between coarse pixel centres (fine pixel 2y + a sits at
 // coarse coordinate y + (2a - 1)/4), wrapped when periodic, clamped at the edges otherwise; each value then
