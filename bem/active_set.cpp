@@ -94,7 +94,7 @@ class ActiveSet {
         modulus_(modulus),
         threads_(threads),
         operator_(make_half_space_convolution<T>(grid, modulus, threads)),
-        filter_(make_fourier_preconditioner<T>(grid, modulus, threads)),
+        filter_(make_unit_fourier_preconditioner<float>(grid, threads)),
         n_(static_cast<std::size_t>(grid.points())),
         u_(n_),
         r_(n_),
@@ -727,6 +727,8 @@ class ActiveSet {
     using Producer = typename Convolution<T>::Producer;
     using Consumer = typename Convolution<T>::Consumer;
     using ProductHook = typename Convolution<T>::ProductHook;
+    using FilterProducer = Convolution<float>::Producer;
+    using FilterConsumer = Convolution<float>::Consumer;
     // The set's size and the sum of u - h on it, counted in the pass that makes the load's rescaling: p
     // times `scale` off the plastic set, and u = G p with it when current; else u = G p made afresh, the
     // rescaling on p's way into the transform and the count on u's way out. From here u is kept by the
@@ -823,22 +825,27 @@ class ActiveSet {
     };
     // Filter: r in; z = its image kept on the set out, with its sum.
     T shift_c = 0;
-    auto residual_in = [&](Index first, Index rows, T* buffer, Index ld, int) {
+    double to_filter = 1, from_filter = 1;  // powers of two: the residual's scale into the filter and back
+    auto residual_in = [&](Index first, Index rows, float* buffer, Index ld, int) {
       const T cc = shift_c;
+      const double scale_in = to_filter;
       for (Index y = 0; y < rows; ++y) {
         const Index i0 = (first + y) * nx;
         for (Index x = 0; x < nx; ++x)
-          buffer[y * ld + x] = in[i0 + x] ? r[i0 + x] - cc : (radius > 0 ? r[i0 + x] : T(0));
+          buffer[y * ld + x] = static_cast<float>(
+              static_cast<double>(in[i0 + x] ? r[i0 + x] - cc : (radius > 0 ? r[i0 + x] : T(0))) * scale_in);
       }
     };
-    auto filtered_out = [&](Index first, Index rows, const T* buffer, Index ld, int thread) {
+    auto filtered_out = [&](Index first, Index rows, const float* buffer, Index ld, int thread) {
       Sums& s = sums_[static_cast<std::size_t>(thread)];
+      const double scale_out = from_filter;
       for (Index y = 0; y < rows; ++y) {
         const Index i0 = (first + y) * nx;
         double z_sum = 0;
         for (Index x = 0; x < nx; ++x) {
-          const T zv = in[i0 + x] ? buffer[y * ld + x]
-                                  : (radius > 0 ? buffer[y * ld + x] * static_cast<T>(weight[i0 + x]) : T(0));
+          const T filtered = static_cast<T>(static_cast<double>(buffer[y * ld + x]) * scale_out);
+          const T zv =
+              in[i0 + x] ? filtered : (radius > 0 ? filtered * static_cast<T>(weight[i0 + x]) : T(0));
           z[i0 + x] = zv;
           z_sum += in[i0 + x] ? static_cast<double>(zv) : 0.0;
         }
@@ -914,7 +921,12 @@ class ActiveSet {
               if (!in[k]) r[k] = static_cast<T>(sum * static_cast<double>(weight[k]));
             },
             box_scratch_, team());
-      rz = filter_->apply(Producer(residual_in), Consumer(filtered_out), {}, true);  // <r, z>
+      // Into the filter scaled by a power of two to about 1 (float's range: a residual of 1e-20 m squared
+      // in the product would underflow), out scaled back: exact apart from float's rounding.
+      to_filter = std::ldexp(1.0, -std::ilogb(largest));
+      from_filter = std::ldexp(1.0, std::ilogb(largest));
+      rz = filter_->apply(FilterProducer(residual_in), FilterConsumer(filtered_out), {}, true) * from_filter *
+           from_filter;  // <r, z>
       if (radius > 0) {  // the transpose: z on the set gains the window sums of z x weight off it
         clear();
         box_sum(
@@ -991,7 +1003,9 @@ class ActiveSet {
   std::vector<T> h_;
   Real modulus_;
   int threads_;
-  std::unique_ptr<Convolution<T>> operator_, filter_;
+  std::unique_ptr<Convolution<T>> operator_;
+  // The preconditioner's filter in single precision whatever T (cg_on_set).
+  std::unique_ptr<Convolution<float>> filter_;
   std::size_t n_;
   std::vector<T> u_, r_, z_, t_;  // G p, the CG's residual, the filtered residual, the CG's direction
   // Off the set: 1 / the window's count of set nodes (floored). In single precision whatever T: E and E^T

@@ -4,12 +4,15 @@
 
 namespace contactbench {
 
-template <class T>
-std::unique_ptr<Convolution<T>> make_fourier_preconditioner(const Grid& grid, Real modulus, int threads) {
-  // Non-periodic: the filter of the doubled lattice, on the zero-padded residual (see the header).
-  const bool padded = !grid.periodic;
+namespace {
+
+// (E*/2)|q| with the transform pair's 1/(nx ny) folded in (Convolution::set_multiplier), on the lattice the
+// filter runs on: the grid's own when periodic, else the doubled one of the zero-padded residual (see the
+// header).
+Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> filter_multiplier(const Grid& grid,
+                                                                                        Real modulus) {
   Grid lattice_grid = grid;
-  if (padded) {
+  if (!grid.periodic) {
     lattice_grid.nx *= 2;
     lattice_grid.ny *= 2;
     lattice_grid.lx *= 2;
@@ -18,17 +21,42 @@ std::unique_ptr<Convolution<T>> make_fourier_preconditioner(const Grid& grid, Re
   const HalfLattice lattice(lattice_grid);
   const Eigen::Array<Real, 1, Eigen::Dynamic> qx2 = lattice.qx_row().square();
   const Eigen::Array<Real, Eigen::Dynamic, 1> qy2 = lattice.qy_column().square();
-  // (E*/2)|q| with the transform pair's 1/(nx ny) folded in (Convolution::set_multiplier).
   Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> multiplier =
       (qy2.replicate(1, lattice.cols()).rowwise() + qx2).sqrt() *
       (modulus / (2 * static_cast<Real>(lattice_grid.points())));
   multiplier(0, 0) = 0;
-  auto convolution = std::make_unique<Convolution<T>>(grid.nx, grid.ny, padded, threads);
+  return multiplier;
+}
+
+template <class T>
+std::unique_ptr<Convolution<T>> make_filter(
+    const Grid& grid, const Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& multiplier,
+    int threads) {
+  auto convolution = std::make_unique<Convolution<T>>(grid.nx, grid.ny, !grid.periodic, threads);
   convolution->set_multiplier(multiplier);
   return convolution;
 }
 
+}  // namespace
+
+template <class T>
+std::unique_ptr<Convolution<T>> make_fourier_preconditioner(const Grid& grid, Real modulus, int threads) {
+  return make_filter<T>(grid, filter_multiplier(grid, modulus), threads);
+}
+
+template <class T>
+std::unique_ptr<Convolution<T>> make_unit_fourier_preconditioner(const Grid& grid, int threads) {
+  // |q| / max |q| with the pair's normalisation, 1 / the lattice's points, kept.
+  auto multiplier = filter_multiplier(grid, 1.0);
+  const double peak = multiplier.maxCoeff();
+  const double lattice_points = static_cast<double>(grid.points()) * (grid.periodic ? 1 : 4);
+  if (peak > 0) multiplier /= peak * lattice_points;  // (a 1 x 1 grid has only the q = 0 mode)
+  return make_filter<T>(grid, multiplier, threads);
+}
+
 template std::unique_ptr<Convolution<double>> make_fourier_preconditioner(const Grid&, Real, int);
 template std::unique_ptr<Convolution<float>> make_fourier_preconditioner(const Grid&, Real, int);
+template std::unique_ptr<Convolution<double>> make_unit_fourier_preconditioner(const Grid&, int);
+template std::unique_ptr<Convolution<float>> make_unit_fourier_preconditioner(const Grid&, int);
 
 }  // namespace contactbench

@@ -28,4 +28,11 @@ namespace contactbench {
 template <class T>
 std::unique_ptr<Convolution<T>> make_fourier_preconditioner(const Grid& grid, Real modulus, int threads = 1);
 
+// The same filter scaled to a largest value of 1 (|q| / max |q|, and the transform pair normalised) whatever
+// the units of the grid and the modulus: for a preconditioned CG (invariant to a constant factor of its
+// preconditioner) that runs the filter in single precision, where E* of 1e90 Pa or a pixel of 1e-90 m would
+// leave float's range.
+template <class T>
+std::unique_ptr<Convolution<T>> make_unit_fourier_preconditioner(const Grid& grid, int threads = 1);
+
 }  // namespace contactbench
