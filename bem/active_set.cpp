@@ -789,10 +789,18 @@ class ActiveSet {
         update_weights(radius, weight_of);
       } else {
         box_sum(
-            grid_.nx, grid_.ny, radius, grid_.periodic, [&](std::size_t k) { return in[k] ? 1.0 : 0.0; },
-            [&](std::size_t k, double sum, int) {
-              window_count_[k] = static_cast<std::uint16_t>(sum);
-              weight[k] = weight_of(k, sum);
+            grid_.nx, grid_.ny, radius, grid_.periodic,
+            [&](Index y, double* values) {
+              const std::uint8_t* const in_row = in + y * nx;
+              for (Index x = 0; x < nx; ++x)
+                values[x] = in_row[x] ? 1.0 : 0.0;
+            },
+            [&](Index y, const double* sums, int) {
+              for (Index x = 0; x < nx; ++x) {
+                const std::size_t k = static_cast<std::size_t>(y * nx + x);
+                window_count_[k] = static_cast<std::uint16_t>(sums[x]);
+                weight[k] = weight_of(k, sums[x]);
+              }
             },
             box_scratch_, team());
       }
@@ -829,27 +837,35 @@ class ActiveSet {
     auto residual_in = [&](Index first, Index rows, float* buffer, Index ld, int) {
       const T cc = shift_c;
       const double scale_in = to_filter;
+      const bool extended = radius > 0;
       for (Index y = 0; y < rows; ++y) {
         const Index i0 = (first + y) * nx;
-        for (Index x = 0; x < nx; ++x)
-          buffer[y * ld + x] = static_cast<float>(
-              static_cast<double>(in[i0 + x] ? r[i0 + x] - cc : (radius > 0 ? r[i0 + x] : T(0))) * scale_in);
+        for (Index x = 0; x < nx; ++x) {
+          const T rv = r[i0 + x];
+          const T v = in[i0 + x] ? rv - cc : (extended ? rv : T(0));
+          buffer[y * ld + x] = static_cast<float>(static_cast<double>(v) * scale_in);
+        }
       }
     };
     auto filtered_out = [&](Index first, Index rows, const float* buffer, Index ld, int thread) {
-      Sums& s = sums_[static_cast<std::size_t>(thread)];
       const double scale_out = from_filter;
       for (Index y = 0; y < rows; ++y) {
         const Index i0 = (first + y) * nx;
-        double z_sum = 0;
-        for (Index x = 0; x < nx; ++x) {
-          const T filtered = static_cast<T>(static_cast<double>(buffer[y * ld + x]) * scale_out);
-          const T zv =
-              in[i0 + x] ? filtered : (radius > 0 ? filtered * static_cast<T>(weight[i0 + x]) : T(0));
-          z[i0 + x] = zv;
-          z_sum += in[i0 + x] ? static_cast<double>(zv) : 0.0;
+        if (radius > 0) {  // z's sum on the set comes with the transpose's pass
+          for (Index x = 0; x < nx; ++x) {
+            const T filtered = static_cast<T>(static_cast<double>(buffer[y * ld + x]) * scale_out);
+            const T w = static_cast<T>(weight[i0 + x]);
+            z[i0 + x] = in[i0 + x] ? filtered : filtered * w;
+          }
+        } else {
+          double z_sum = 0;
+          for (Index x = 0; x < nx; ++x) {
+            const T filtered = static_cast<T>(static_cast<double>(buffer[y * ld + x]) * scale_out);
+            z[i0 + x] = in[i0 + x] ? filtered : T(0);
+            z_sum += in[i0 + x] ? static_cast<double>(filtered) : 0.0;
+          }
+          sums_[static_cast<std::size_t>(thread)].a += z_sum;
         }
-        s.a += z_sum;
       }
     };
     // Operator: the direction t = (z - zbar) + beta t on the set in; the step tau = <r, z>/<t, G t> once the
@@ -916,9 +932,24 @@ class ActiveSet {
       if (radius > 0)  // the residual extended off the set: r there = its window sum on the set x weight
         box_sum(
             grid_.nx, grid_.ny, radius, grid_.periodic,
-            [&](std::size_t k) { return in[k] ? static_cast<double>(r[k] - shift_c) : 0.0; },
-            [&](std::size_t k, double sum, int) {
-              if (!in[k]) r[k] = static_cast<T>(sum * static_cast<double>(weight[k]));
+            [&](Index y, double* values) {
+              const std::uint8_t* const in_row = in + y * nx;
+              const T* const r_row = r + y * nx;
+              const T cc = shift_c;
+              for (Index x = 0; x < nx; ++x) {
+                const double on_set = static_cast<double>(r_row[x] - cc);
+                values[x] = in_row[x] ? on_set : 0.0;
+              }
+            },
+            [&](Index y, const double* sums, int) {
+              const std::uint8_t* const in_row = in + y * nx;
+              const float* const weight_row = weight + y * nx;
+              T* const r_row = r + y * nx;
+              for (Index x = 0; x < nx; ++x) {
+                const T on_set = r_row[x];
+                const T extended = static_cast<T>(sums[x] * static_cast<double>(weight_row[x]));
+                r_row[x] = in_row[x] ? on_set : extended;
+              }
             },
             box_scratch_, team());
       // Into the filter scaled by a power of two to about 1 (float's range: a residual of 1e-20 m squared
@@ -931,12 +962,26 @@ class ActiveSet {
         clear();
         box_sum(
             grid_.nx, grid_.ny, radius, grid_.periodic,
-            [&](std::size_t k) { return in[k] ? 0.0 : static_cast<double>(z[k]); },
-            [&](std::size_t k, double sum, int thread) {
-              if (in[k]) {
-                z[k] = static_cast<T>(static_cast<double>(z[k]) + sum);
-                sums_[static_cast<std::size_t>(thread)].a += static_cast<double>(z[k]);
+            [&](Index y, double* values) {
+              const std::uint8_t* const in_row = in + y * nx;
+              const T* const z_row = z + y * nx;
+              for (Index x = 0; x < nx; ++x) {
+                const double off_set = static_cast<double>(z_row[x]);
+                values[x] = in_row[x] ? 0.0 : off_set;
               }
+            },
+            [&](Index y, const double* sums, int thread) {
+              const std::uint8_t* const in_row = in + y * nx;
+              T* const z_row = z + y * nx;
+              double z_sum = 0;
+#pragma omp simd reduction(+ : z_sum)
+              for (Index x = 0; x < nx; ++x) {
+                const T off_set = z_row[x];
+                const T on_set = static_cast<T>(static_cast<double>(off_set) + sums[x]);
+                z_row[x] = in_row[x] ? on_set : off_set;
+                z_sum += in_row[x] ? static_cast<double>(on_set) : 0.0;
+              }
+              sums_[static_cast<std::size_t>(thread)].a += z_sum;
             },
             box_scratch_, team());
       }

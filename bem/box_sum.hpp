@@ -1,9 +1,10 @@
 // Sums over a square window, (2 radius + 1)^2 points centred on each point of an nx x ny grid (row-major):
 // wrapped at the edges when periodic, truncated (the points outside count as zero) otherwise. Running sums
-// along x, then along y, so the cost does not depend on the radius; the sums along x of the rows a window
-// spans are kept in a ring of rows small enough to stay in cache, so the input is read once and no
-// full-size intermediate array is written. The active-set solver's extension of the residual off the
-// contact set is made of such sums (bem/active_set.cpp, docs/solvers.md "The extended filter").
+// along y of whole rows (the window's rows kept in a ring small enough to stay in cache), then along x of
+// each row of column sums, so the cost does not depend on the radius and the input is read once, a row at a
+// time, and the output handed over a row at a time: the caller's loops over a row vectorise. The active-set
+// solver's extension of the residual off the contact set is made of such sums (bem/active_set.cpp,
+// docs/solvers.md "The extended filter").
 #pragma once
 
 #include <omp.h>
@@ -15,89 +16,88 @@
 
 namespace contactbench {
 
-// value(k) gives the input at point k (a double); emit(k, sum, thread) receives the window's sum at k,
-// every point once, from the team's thread `thread`. Rows are split over `threads` threads; for a fixed
-// thread count the sums are the same every run. Needs 2 radius + 1 <= nx and ny when periodic (a window that
-// wraps onto itself would count points twice).
-template <class Value, class Emit>
-void box_sum(Index nx, Index ny, Index radius, bool periodic, Value value, Emit emit,
+// value_row(y, values) writes the nx inputs of row y (0 <= y < ny) to values[0 .. nx); emit_row(y, sums,
+// thread) receives the window sums of row y, sums[0 .. nx), every row once, from the team's thread
+// `thread`. Rows are split over `threads` threads; for a fixed thread count the sums are the same every run.
+// Needs 2 radius + 1 <= nx and ny when periodic (a window that wraps onto itself would count points twice).
+template <class ValueRow, class EmitRow>
+void box_sum(Index nx, Index ny, Index radius, bool periodic, ValueRow value_row, EmitRow emit_row,
              std::vector<double>& scratch, int threads) {
-  // Per thread: the line of four rows side by side with their margins, the ring of rows' sums along x
-  // (the window's rows and the four computed ahead) and the running sums along y.
-  constexpr Index kLanes = 4;
-  const Index window = 2 * radius + 1, slots = window + kLanes;
-  const std::size_t line_size = static_cast<std::size_t>((nx + window) * kLanes);
-  const std::size_t per_thread = line_size + static_cast<std::size_t>((slots + 1) * nx);
+  // The running sum along x is a chain of dependent additions: a row is cut into kChains segments, each
+  // with its own running sum, so that the chains' additions overlap.
+  constexpr Index kChains = 8;
+  const Index window = 2 * radius + 1;
+  const Index segment = (nx + kChains - 1) / kChains;
+  // Per thread: the ring of the window's rows, the row entering it, the column sums, the line (the column
+  // sums with radius points of margin each side: their wrapped ends, or zeros; zeros up to the last
+  // chain's end) and the row of window sums.
+  const std::size_t row = static_cast<std::size_t>(nx);
+  const std::size_t line_size = static_cast<std::size_t>(kChains * segment + window);
+  const std::size_t sums_size = static_cast<std::size_t>(kChains * segment);
+  const std::size_t per_thread = (static_cast<std::size_t>(window) + 2) * row + line_size + sums_size;
   scratch.resize(per_thread * static_cast<std::size_t>(threads));
 #pragma omp parallel num_threads(threads)
   {
     const Index team = omp_get_num_threads(), thread = omp_get_thread_num();
-    double* const line = scratch.data() + per_thread * static_cast<std::size_t>(thread);
-    double* const ring = line + line_size;
-    double* const sum = ring + slots * nx;
-    auto slot = [&](Index y) { return ring + ((y % slots + slots) % slots) * nx; };
-    // Sums along x of rows y0 .. y0 + 3 (wrapped when periodic, zeros outside the grid otherwise) into
-    // their slots: interleaved in the line with radius points of margin each side (their wrapped ends, or
-    // zeros), then four running sums side by side (independent chains: a single running sum waits on its
-    // own additions).
-    auto along_x = [&](Index y0) {
-      double* const middle = line + radius * kLanes;  // middle[x * kLanes + lane]
-      for (Index lane = 0; lane < kLanes; ++lane) {
-        const Index y = periodic ? ((y0 + lane) % ny + ny) % ny : y0 + lane;
-        const bool inside = y >= 0 && y < ny;
-        const std::size_t row = static_cast<std::size_t>(y * nx);
-        for (Index x = 0; x < nx; ++x)
-          middle[x * kLanes + lane] =
-              inside ? static_cast<double>(value(row + static_cast<std::size_t>(x))) : 0.0;
-        for (Index d = 1; d <= radius; ++d) {
-          middle[-d * kLanes + lane] = periodic ? middle[(nx - d) * kLanes + lane] : 0.0;
-          middle[(nx - 1 + d) * kLanes + lane] = periodic ? middle[(d - 1) * kLanes + lane] : 0.0;
-        }
-      }
-      double running[kLanes] = {};
-      for (Index j = 0; j < window; ++j)
-        for (Index lane = 0; lane < kLanes; ++lane)
-          running[lane] += line[j * kLanes + lane];
-      double* out[kLanes];
-      for (Index lane = 0; lane < kLanes; ++lane)
-        out[lane] = slot(y0 + lane);
-      const double* const enter = line + window * kLanes;
-      for (Index x = 0; x + 1 < nx; ++x)
-        for (Index lane = 0; lane < kLanes; ++lane) {
-          out[lane][x] = running[lane];
-          running[lane] += enter[x * kLanes + lane] - line[x * kLanes + lane];
-        }
-      for (Index lane = 0; lane < kLanes; ++lane)
-        out[lane][nx - 1] = running[lane];
+    double* const base = scratch.data() + per_thread * static_cast<std::size_t>(thread);
+    std::vector<double*> ring(static_cast<std::size_t>(window));  // ring[y mod window]: row y's inputs
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      ring[i] = base + i * row;
+    double* entering = base + ring.size() * row;
+    double* const column = entering + row;
+    double* const line = column + row;
+    double* const sums = line + line_size;
+    auto slot = [&](Index y) -> double*& {
+      return ring[static_cast<std::size_t>((y % window + window) % window)];
     };
-    // Along y: each thread a block of rows, a running sum of whole rows; the rows' sums along x computed
-    // four at a time as the window reaches them (a block's first window computes its own radius rows above).
+    // Row y's inputs into `to`: wrapped when periodic, zeros outside the grid otherwise.
+    auto load = [&](Index y, double* to) {
+      if (periodic) {
+        value_row((y % ny + ny) % ny, to);
+      } else if (y < 0 || y >= ny) {
+        std::fill(to, to + nx, 0.0);
+      } else {
+        value_row(y, to);
+      }
+    };
     const Index first = ny * thread / team, last = ny * (thread + 1) / team;
-    Index computed = first - radius;  // the next row whose sums along x are to be made
-    auto reach = [&](Index y) {
-      for (; computed <= y; computed += kLanes)
-        along_x(computed);
-    };
     if (first < last) {
-      reach(first + radius);
-      for (Index x = 0; x < nx; ++x)
-        sum[x] = 0;
-      for (Index d = -radius; d <= radius; ++d) {
-        const double* const source = slot(first + d);
+      std::fill(column, column + nx, 0.0);
+      for (Index y = first - radius; y <= first + radius; ++y) {
+        double* const values = slot(y);
+        load(y, values);
         for (Index x = 0; x < nx; ++x)
-          sum[x] += source[x];
+          column[x] += values[x];
       }
+      std::fill(line, line + line_size, 0.0);
     }
     for (Index y = first; y < last; ++y) {
-      for (Index x = 0; x < nx; ++x)
-        emit(static_cast<std::size_t>(y * nx + x), sum[x], static_cast<int>(thread));
+      // Along x: the column sums into the line between its margins, then the running sums of each segment.
+      double* const middle = line + radius;
+      std::copy(column, column + nx, middle);
+      for (Index d = 1; d <= radius; ++d) {
+        middle[-d] = periodic ? column[nx - d] : 0.0;
+        middle[nx - 1 + d] = periodic ? column[d - 1] : 0.0;
+      }
+      double running[kChains] = {};
+      for (Index c = 0; c < kChains; ++c)
+        for (Index j = 0; j < window; ++j)
+          running[c] += line[c * segment + j];
+      for (Index i = 0; i < segment; ++i)
+        for (Index c = 0; c < kChains; ++c) {
+          const Index x = c * segment + i;
+          sums[x] = running[c];
+          running[c] += line[x + window] - line[x];
+        }
+      emit_row(y, static_cast<const double*>(sums), static_cast<int>(thread));
       if (y + 1 == last) break;
-      // The window moves down a row: the row below it enters, its top row leaves.
-      reach(y + radius + 1);
-      const double* const enter = slot(y + radius + 1);
-      const double* const leave = slot(y - radius);
+      // The window moves down a row: row y + radius + 1 enters the ring in the slot of row y - radius, which
+      // leaves.
+      load(y + radius + 1, entering);
+      double*& leaving = slot(y - radius);
       for (Index x = 0; x < nx; ++x)
-        sum[x] += enter[x] - leave[x];
+        column[x] += entering[x] - leaving[x];
+      std::swap(entering, leaving);
     }
   }
 }

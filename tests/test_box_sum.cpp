@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -44,8 +45,10 @@ TEST(BoxSum, MatchesTheSumOfEveryWindow) {
     for (const Index radius : {0, 1, 2, 4})
       for (const int threads : {1, 2, 3, 4}) {
         box_sum(
-            nx, ny, radius, periodic, [&](std::size_t k) { return values[k]; },
-            [&](std::size_t k, double sum, int) { sums[k] = sum; }, scratch, threads);
+            nx, ny, radius, periodic,
+            [&](Index y, double* row) { std::copy_n(values.begin() + y * nx, nx, row); },
+            [&](Index y, const double* row, int) { std::copy_n(row, nx, sums.begin() + y * nx); }, scratch,
+            threads);
         for (Index y = 0; y < ny; ++y)
           for (Index x = 0; x < nx; ++x)
             EXPECT_NEAR(sums[static_cast<std::size_t>(y * nx + x)],
@@ -55,17 +58,19 @@ TEST(BoxSum, MatchesTheSumOfEveryWindow) {
       }
 }
 
-TEST(BoxSum, EmitsEveryPointOnceFromAThreadOfTheTeam) {
+TEST(BoxSum, EmitsEveryRowOnceFromAThreadOfTheTeam) {
   const Index nx = 16, ny = 13;
   std::vector<int> visits(static_cast<std::size_t>(nx * ny), 0);
   std::vector<double> scratch;
   box_sum(
-      nx, ny, 3, false, [](std::size_t) { return 1.0; },
-      [&](std::size_t k, double, int thread) {
+      nx, ny, 3, false, [&](Index, double* row) { std::fill_n(row, nx, 1.0); },
+      [&](Index y, const double*, int thread) {
         EXPECT_GE(thread, 0);
         EXPECT_LT(thread, 2);
+        for (Index x = 0; x < nx; ++x) {
 #pragma omp atomic
-        ++visits[k];
+          ++visits[static_cast<std::size_t>(y * nx + x)];
+        }
       },
       scratch, 2);
   for (const int v : visits)
