@@ -48,6 +48,31 @@ constexpr double kExtensionFloor = 0.25;
 static_assert((2 * kExtensionRadius + 1) * (2 * kExtensionRadius + 1) <=
               std::numeric_limits<std::uint16_t>::max());
 
+// Sums over a row of nx points of z on the contact set (in), with and without the transpose of the
+// extension. E^T adds to each set node the window sum of z off the set, so each off-set z is added once per
+// set node in its window (count, the window's count of set nodes): the sum on the set after E^T, made while
+// z is written, before the transpose itself runs.
+template <class T>
+double sum_after_transpose(const std::uint8_t* in, const T* z, const std::uint16_t* count, Index nx) {
+  double sum = 0;
+#pragma omp simd reduction(+ : sum)
+  for (Index x = 0; x < nx; ++x) {
+    const double times = count[x];  // (loaded whatever in[x]: the loop vectorises)
+    sum += static_cast<double>(z[x]) * (in[x] ? 1.0 : times);
+  }
+  return sum;
+}
+template <class T>
+double sum_on_set(const std::uint8_t* in, const T* z, Index nx) {
+  double sum = 0;
+#pragma omp simd reduction(+ : sum)
+  for (Index x = 0; x < nx; ++x) {
+    const double value = z[x];
+    sum += in[x] ? value : 0.0;
+  }
+  return sum;
+}
+
 // Coarse pixel values on the fine grid: bilinear between coarse pixel centres (fine pixel 2y + a sits at
 // coarse coordinate y + (2a - 1)/4), wrapped when periodic, clamped at the edges otherwise; each value then
 // clamped to [0, cap]. Rows split over `threads` threads.
@@ -112,6 +137,8 @@ class ActiveSet {
     height_range_ = highest_ - static_cast<double>(*low);
     if (!(height_range_ > 0)) height_range_ = 1;  // a flat surface: relative to 1 m, as ContactSolution
     make_coarse_level();                          // the whole hierarchy, with its FFT plans, made once
+    for (int thread = 0; thread < team(); ++thread)
+      window_rows_.emplace_back(grid_.nx, grid_.ny, extension_radius(), grid_.periodic);
     changes_.resize(sums_.size());
     flips_.resize(sums_.size());
     window_count_.resize(n_);
@@ -348,6 +375,11 @@ class ActiveSet {
   }
 
   int team() const { return static_cast<int>(sums_.size()); }
+  // The next window sums start afresh (their inputs changed).
+  void restart_windows() {
+    for (WindowRows& window : window_rows_)
+      window.restart();
+  }
   Index extension_radius() const {
     return std::min(kExtensionRadius, (std::min(grid_.nx, grid_.ny) - 1) / 2);
   }
@@ -706,13 +738,14 @@ class ActiveSet {
   // across many small spots: those are the CG's slow modes (scripts/extended_filter_model.py, a numpy model
   // of this CG: the largest eigenvalue of the preconditioned operator on an H = 0.8 surface at 512^2 and
   // 10 % contact is 11.5 without E and 3.2 with a window of radius 6; the smallest is 1 with or without).
-  // An iteration is two convolutions and two window sums (bem/convolution.hpp, bem/box_sum.hpp):
-  //   extension: r off the set = the weighted window sums of r on the set (stored in r there);
-  //   filter:    producing Er | consuming F E r: kept on the set, times the weight off it; <r, z> is
-  //              <Er, F Er>, the transform's own product;
-  //   gather:    z on the set += the window sums of z off it (E^T), and z's sum on the set;
-  //   operator:  producing the direction t | the step length from <t, G t>, the transform's product, before
-  //              any row comes back | consuming G t: p, u and r stepped, and the sums of the next residual.
+  // An iteration is two convolutions (bem/convolution.hpp), the window sums riding in their producers
+  // (bem/box_sum.hpp, WindowRows: each thread's rows come in order):
+  //   filter:    producing Er (off the set the weighted window sums of r on the set) | consuming F E r, in
+  //              single precision: kept on the set, times the weight off it, and the sum on the set that
+  //              E^T will leave (sum_after_transpose); <r, z> is <Er, F Er>, the transform's own product;
+  //   operator:  producing the direction t from z on the set plus the window sums of z off it (E^T) | the
+  //              step length from <t, G t>, the transform's product, before any row comes back | consuming
+  //              G t: p, u and r stepped, and the sums of the next residual.
   // Sums are per thread and combined in thread order: deterministic for a fixed thread count.
   Index cg_on_set(std::vector<T>& p, double scale, double reduction, double absolute, double step_change,
                   Index budget, const std::function<void()>& between) {
@@ -802,7 +835,7 @@ class ActiveSet {
                 weight[k] = weight_of(k, sums[x]);
               }
             },
-            box_scratch_, team());
+            window_rows_, team());
       }
       weights_current_ = true;
       pending_flips_.clear();
@@ -834,52 +867,78 @@ class ActiveSet {
     // Filter: r in; z = its image kept on the set out, with its sum.
     T shift_c = 0;
     double to_filter = 1, from_filter = 1;  // powers of two: the residual's scale into the filter and back
-    auto residual_in = [&](Index first, Index rows, float* buffer, Index ld, int) {
+    // E's inputs: the residual on the set, 0 off it.
+    auto extension_inputs = [&](Index y, double* values) {
+      const std::uint8_t* const in_row = in + y * nx;
+      const T* const r_row = r + y * nx;
+      const T cc = shift_c;
+      for (Index x = 0; x < nx; ++x) {
+        const T rv = r_row[x];
+        values[x] = static_cast<double>((in_row[x] ? rv : cc) - cc);
+      }
+    };
+    auto residual_in = [&](Index first, Index rows, float* buffer, Index ld, int thread) {
       const T cc = shift_c;
       const double scale_in = to_filter;
-      const bool extended = radius > 0;
+      WindowRows& window = window_rows_[static_cast<std::size_t>(thread)];
       for (Index y = 0; y < rows; ++y) {
         const Index i0 = (first + y) * nx;
-        for (Index x = 0; x < nx; ++x) {
-          const T rv = r[i0 + x];
-          const T v = in[i0 + x] ? rv - cc : (extended ? rv : T(0));
-          buffer[y * ld + x] = static_cast<float>(static_cast<double>(v) * scale_in);
+        float* const out = buffer + y * ld;
+        if (radius > 0) {  // off the set: the window sum of r on the set x weight
+          const double* const sums = window.sums(first + y, extension_inputs);
+          for (Index x = 0; x < nx; ++x) {
+            const double on_set = static_cast<double>(r[i0 + x] - cc);
+            const double off_set = sums[x] * static_cast<double>(weight[i0 + x]);
+            out[x] = static_cast<float>((in[i0 + x] ? on_set : off_set) * scale_in);
+          }
+        } else {
+          for (Index x = 0; x < nx; ++x) {
+            const double on_set = static_cast<double>(r[i0 + x] - cc);
+            out[x] = static_cast<float>((in[i0 + x] ? on_set : 0.0) * scale_in);
+          }
         }
       }
     };
     auto filtered_out = [&](Index first, Index rows, const float* buffer, Index ld, int thread) {
       const double scale_out = from_filter;
+      double z_sum = 0;
       for (Index y = 0; y < rows; ++y) {
         const Index i0 = (first + y) * nx;
-        if (radius > 0) {  // z's sum on the set comes with the transpose's pass
-          for (Index x = 0; x < nx; ++x) {
-            const T filtered = static_cast<T>(static_cast<double>(buffer[y * ld + x]) * scale_out);
-            const T w = static_cast<T>(weight[i0 + x]);
-            z[i0 + x] = in[i0 + x] ? filtered : filtered * w;
-          }
-        } else {
-          double z_sum = 0;
-          for (Index x = 0; x < nx; ++x) {
-            const T filtered = static_cast<T>(static_cast<double>(buffer[y * ld + x]) * scale_out);
-            z[i0 + x] = in[i0 + x] ? filtered : T(0);
-            z_sum += in[i0 + x] ? static_cast<double>(filtered) : 0.0;
-          }
-          sums_[static_cast<std::size_t>(thread)].a += z_sum;
+        for (Index x = 0; x < nx; ++x) {
+          const T filtered = static_cast<T>(static_cast<double>(buffer[y * ld + x]) * scale_out);
+          const T w = static_cast<T>(weight[i0 + x]);
+          z[i0 + x] = in[i0 + x] ? filtered : (radius > 0 ? filtered * w : T(0));
         }
+        z_sum += radius > 0 ? sum_after_transpose(in + i0, z + i0, window_count_.data() + i0, nx)
+                            : sum_on_set(in + i0, z + i0, nx);
       }
+      sums_[static_cast<std::size_t>(thread)].a += z_sum;
     };
     // Operator: the direction t = (z - zbar) + beta t on the set in; the step tau = <r, z>/<t, G t> once the
     // spectrum is multiplied; G t out: p -= tau t, u -= tau G t, and the sums of the new residual and of the
     // pressure's change.
     T zbar = 0, beta = 0, tau = 0;
     double rz = 0, t_gt = 0;
-    auto direction_in = [&](Index first, Index rows, T* buffer, Index ld, int) {
+    // E^T's inputs: z off the set (already times its weight), 0 on it.
+    auto transpose_inputs = [&](Index y, double* values) {
+      const std::uint8_t* const in_row = in + y * nx;
+      const T* const z_row = z + y * nx;
+      for (Index x = 0; x < nx; ++x) {
+        const double off_set = static_cast<double>(z_row[x]);
+        values[x] = in_row[x] ? 0.0 : off_set;
+      }
+    };
+    auto direction_in = [&](Index first, Index rows, T* buffer, Index ld, int thread) {
       const T zb = zbar, b = beta;
+      WindowRows& window = window_rows_[static_cast<std::size_t>(thread)];
       for (Index y = 0; y < rows; ++y) {
         const Index i0 = (first + y) * nx;
+        // z on the set gains the window sums of z off it (E^T)
+        const double* const sums = radius > 0 ? window.sums(first + y, transpose_inputs) : nullptr;
         for (Index x = 0; x < nx; ++x)  // t is read and written on the set only (b = 0 at a start)
           if (in[i0 + x]) {
-            const T tv = (z[i0 + x] - zb) + b * t[i0 + x];
+            const T zk = sums ? static_cast<T>(static_cast<double>(z[i0 + x]) + sums[x]) : z[i0 + x];
+            const T tv = (zk - zb) + b * t[i0 + x];
             t[i0 + x] = tv;
             buffer[y * ld + x] = tv;
           } else {
@@ -929,62 +988,13 @@ class ActiveSet {
       if (iterations == 0 && radius > 0) make_weights();
       clear();
       shift_c = static_cast<T>(c);
-      if (radius > 0)  // the residual extended off the set: r there = its window sum on the set x weight
-        box_sum(
-            grid_.nx, grid_.ny, radius, grid_.periodic,
-            [&](Index y, double* values) {
-              const std::uint8_t* const in_row = in + y * nx;
-              const T* const r_row = r + y * nx;
-              const T cc = shift_c;
-              for (Index x = 0; x < nx; ++x) {
-                const double on_set = static_cast<double>(r_row[x] - cc);
-                values[x] = in_row[x] ? on_set : 0.0;
-              }
-            },
-            [&](Index y, const double* sums, int) {
-              const std::uint8_t* const in_row = in + y * nx;
-              const float* const weight_row = weight + y * nx;
-              T* const r_row = r + y * nx;
-              for (Index x = 0; x < nx; ++x) {
-                const T on_set = r_row[x];
-                const T extended = static_cast<T>(sums[x] * static_cast<double>(weight_row[x]));
-                r_row[x] = in_row[x] ? on_set : extended;
-              }
-            },
-            box_scratch_, team());
       // Into the filter scaled by a power of two to about 1 (float's range: a residual of 1e-20 m squared
       // in the product would underflow), out scaled back: exact apart from float's rounding.
       to_filter = std::ldexp(1.0, -std::ilogb(largest));
       from_filter = std::ldexp(1.0, std::ilogb(largest));
+      restart_windows();
       rz = filter_->apply(FilterProducer(residual_in), FilterConsumer(filtered_out), {}, true) * from_filter *
            from_filter;  // <r, z>
-      if (radius > 0) {  // the transpose: z on the set gains the window sums of z x weight off it
-        clear();
-        box_sum(
-            grid_.nx, grid_.ny, radius, grid_.periodic,
-            [&](Index y, double* values) {
-              const std::uint8_t* const in_row = in + y * nx;
-              const T* const z_row = z + y * nx;
-              for (Index x = 0; x < nx; ++x) {
-                const double off_set = static_cast<double>(z_row[x]);
-                values[x] = in_row[x] ? 0.0 : off_set;
-              }
-            },
-            [&](Index y, const double* sums, int thread) {
-              const std::uint8_t* const in_row = in + y * nx;
-              T* const z_row = z + y * nx;
-              double z_sum = 0;
-#pragma omp simd reduction(+ : z_sum)
-              for (Index x = 0; x < nx; ++x) {
-                const T off_set = z_row[x];
-                const T on_set = static_cast<T>(static_cast<double>(off_set) + sums[x]);
-                z_row[x] = in_row[x] ? on_set : off_set;
-                z_sum += in_row[x] ? static_cast<double>(on_set) : 0.0;
-              }
-              sums_[static_cast<std::size_t>(thread)].a += z_sum;
-            },
-            box_scratch_, team());
-      }
       zbar = static_cast<T>(load_control_ ? combined().a / set_size_ : 0.0);
       if (!(rz > 0)) break;  // no descent left (a set of one node, or round-off)
       beta = static_cast<T>(rz_old > 0 ? rz / rz_old : 0.0);
@@ -992,6 +1002,7 @@ class ActiveSet {
       clear();
       for (Sums& s : sums_)
         s.e = s.f = -std::numeric_limits<double>::infinity();
+      restart_windows();
       operator_->apply(Producer(direction_in), Consumer(stepped_out), {}, true, ProductHook(step_length));
       displacement_fresh_ = false;  // u stepped
       if (!(t_gt > 0)) break;       // nothing moved: tau was 0
@@ -1058,7 +1069,8 @@ class ActiveSet {
   // (surface A at 1 % contact: the same iterations in the 30 cases, 2 to 4 % less time at 1024^2 and
   // 2048^2).
   std::vector<float> extension_weight_;
-  std::vector<double> box_scratch_;
+  // The window sums of the extended filter, one per thread of the team (bem/box_sum.hpp).
+  std::vector<WindowRows> window_rows_;
   std::vector<std::uint8_t> in_;       // the elastic contact set
   std::vector<std::uint8_t> plastic_;  // the plastic set, p = H (none without a hardness)
   bool load_control_ = true;

@@ -40,7 +40,8 @@ TEST(BoxSum, MatchesTheSumOfEveryWindow) {
   std::vector<double> values(static_cast<std::size_t>(nx * ny));
   for (double& v : values)
     v = uniform(random);
-  std::vector<double> scratch, sums(values.size());
+  std::vector<WindowRows> scratch;
+  std::vector<double> sums(values.size());
   for (const bool periodic : {true, false})
     for (const Index radius : {0, 1, 2, 4})
       for (const int threads : {1, 2, 3, 4}) {
@@ -58,10 +59,38 @@ TEST(BoxSum, MatchesTheSumOfEveryWindow) {
       }
 }
 
+TEST(BoxSum, RowsAskedInAnyOrderHaveTheirWindowSums) {
+  // A convolution's producer asks a thread's rows in order, chunk after chunk, and starts again at the
+  // next apply: rows in sequence, jumps forward and back, the same row twice, and a restart after the
+  // inputs changed. Tolerance as above.
+  const Index nx = 13, ny = 10, radius = 3;
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  std::vector<double> values(static_cast<std::size_t>(nx * ny));
+  for (double& v : values)
+    v = uniform(random);
+  auto value_row = [&](Index y, double* row) { std::copy_n(values.begin() + y * nx, nx, row); };
+  for (const bool periodic : {true, false}) {
+    WindowRows window(nx, ny, radius, periodic);
+    for (int pass = 0; pass < 2; ++pass) {
+      for (const Index y : {2, 3, 4, 5, 9, 0, 1, 1, 7, 8, 9}) {
+        const double* sums = window.sums(y, value_row);
+        for (Index x = 0; x < nx; ++x)
+          EXPECT_NEAR(sums[x], direct_sum(values, nx, ny, radius, periodic, x, y), 1e-12)
+              << (periodic ? "periodic" : "non-periodic") << ", pass " << pass << ", at (" << x << ", " << y
+              << ")";
+      }
+      for (double& v : values)  // new inputs: the window must not reuse the old rows
+        v = uniform(random);
+      window.restart();
+    }
+  }
+}
+
 TEST(BoxSum, EmitsEveryRowOnceFromAThreadOfTheTeam) {
   const Index nx = 16, ny = 13;
   std::vector<int> visits(static_cast<std::size_t>(nx * ny), 0);
-  std::vector<double> scratch;
+  std::vector<WindowRows> scratch;
   box_sum(
       nx, ny, 3, false, [&](Index, double* row) { std::fill_n(row, nx, 1.0); },
       [&](Index y, const double*, int thread) {
