@@ -3,9 +3,10 @@
 // separation control, elastic or with pressures capped at a hardness H (perfectly plastic).
 //
 // Guess the contact set A; solve the LINEAR problem on it (gap = 0 on A, p = 0 elsewhere, sum p = the load)
-// by a conjugate gradient preconditioned by the Fourier filter (E*/2)|q| (bem/fourier_preconditioner.hpp)
-// applied to the residual extended off A by its local averages (the extended filter, bem/box_sum.hpp), the
-// result gathered back onto A by the transpose and its mean there removed; then update the set, A <- {i in A:
+// by a conjugate gradient preconditioned by the Fourier filter (E*/2)|q| (bem/fourier_preconditioner.hpp; in
+// single precision whatever the solver's, as it only shapes the search direction) applied to the residual
+// extended off A by its local averages (the extended filter, bem/box_sum.hpp), the result gathered back onto
+// A by the transpose and its mean there removed; then update the set, A <- {i in A:
 // p_i > 0} u {i not in A: g_i < 0}, and repeat. The outer steps settle the set; the inner CG sees a fixed
 // set, so it is a plain preconditioned CG whose convergence is not disturbed by nodes entering and leaving.
 // Inner solves stop at a loose relative residual (kInnerReduction), or once the gap on the set is within the

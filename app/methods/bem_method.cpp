@@ -213,8 +213,8 @@ class BemMethod final : public Method {
   // levels, set arrays and the extended filter's weights and window sums, +94 / +119 (+56 / +66 in single
   // precision; measured the same way on surface A at 2048^2, P/(E* A0) = 0.01: 241, 293, 170 and 197 bytes
   // per point in all; again after its response to a unit load and single-precision weights, 237, 290, 168
-  // and 194). extrapolate = true solves the same loads again on 4 times the points, after the first
-  // grid is freed: the finer solve is the peak.
+  // and 194; with the filter in single precision, 229, 272, 168 and 194). extrapolate = true solves the same
+  // loads again on 4 times the points, after the first grid is freed: the finer solve is the peak.
   void check_memory(const MethodCheck& check) const {
     const Grid& grid = check.surface.grid();
     const Index nx = solve_.refine > 0 ? solve_.refine : grid.nx;
