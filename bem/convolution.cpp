@@ -191,7 +191,7 @@ struct Convolution<T>::Impl {
 };
 
 template <class T>
-Convolution<T>::Convolution(Index nx, Index ny, bool padded, int threads)
+Convolution<T>::Convolution(Index nx, Index ny, bool padded, int threads, FftRigor plan_rigor)
     : nx_(nx),
       ny_(ny),
       padded_(padded),
@@ -230,8 +230,10 @@ Convolution<T>::Convolution(Index nx, Index ny, bool padded, int threads)
                              F::alignment_of(reinterpret_cast<T*>(spectrum));
   // Measured plans apply 10-30 % faster than estimated ones (measured at 128^2 to 1024^2) and cost 0.25 s
   // (256^2) to 1.3 s (1024^2, padded) to make, once per shape and process (FFTW keeps the wisdom: a load
-  // curve, or a second solver of the same grid, plans instantly). Small lattices are estimated.
-  const unsigned rigor = lx_ * ly_ >= kMinPointsForThreads ? FFTW_MEASURE : FFTW_ESTIMATE;
+  // curve, or a second solver of the same grid, plans instantly). Small lattices are estimated, and so is
+  // any convolution asked to be.
+  const bool measured = plan_rigor == FftRigor::measure && lx_ * ly_ >= kMinPointsForThreads;
+  const unsigned rigor = measured ? FFTW_MEASURE : FFTW_ESTIMATE;
   const unsigned flags = rigor | (aligned ? 0u : FFTW_UNALIGNED);
   const int n_x = static_cast<int>(lx_), n_y = static_cast<int>(ly_), nxh = static_cast<int>(m.nxh);
   const int rest_rows = static_cast<int>(ny_ % kRowsPerChunk), rest_columns = static_cast<int>(m.nxh % B);

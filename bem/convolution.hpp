@@ -25,6 +25,7 @@
 #include <memory>
 #include <type_traits>
 
+#include "contactbench/core/fft.hpp"
 #include "contactbench/core/types.hpp"
 
 namespace contactbench {
@@ -63,8 +64,10 @@ class Convolution {
   // product in . out (e.g. a step length that the consumers then apply).
   using ProductHook = FunctionRef<void(double)>;
 
-  // nx x ny grid; `padded`: linear convolution (zero padding to 2 nx x 2 ny), else circular.
-  Convolution(Index nx, Index ny, bool padded, int threads);
+  // nx x ny grid; `padded`: linear convolution (zero padding to 2 nx x 2 ny), else circular. `rigor`: how
+  // the plans are made (measured by default; lattices below kMinPointsForThreads points are always
+  // estimated).
+  Convolution(Index nx, Index ny, bool padded, int threads, FftRigor rigor = FftRigor::measure);
   ~Convolution();
   Convolution(const Convolution&) = delete;
   Convolution& operator=(const Convolution&) = delete;

@@ -31,8 +31,8 @@ Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> filter_mul
 template <class T>
 std::unique_ptr<Convolution<T>> make_filter(
     const Grid& grid, const Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& multiplier,
-    int threads) {
-  auto convolution = std::make_unique<Convolution<T>>(grid.nx, grid.ny, !grid.periodic, threads);
+    int threads, FftRigor rigor) {
+  auto convolution = std::make_unique<Convolution<T>>(grid.nx, grid.ny, !grid.periodic, threads, rigor);
   convolution->set_multiplier(multiplier);
   return convolution;
 }
@@ -41,22 +41,23 @@ std::unique_ptr<Convolution<T>> make_filter(
 
 template <class T>
 std::unique_ptr<Convolution<T>> make_fourier_preconditioner(const Grid& grid, Real modulus, int threads) {
-  return make_filter<T>(grid, filter_multiplier(grid, modulus), threads);
+  return make_filter<T>(grid, filter_multiplier(grid, modulus), threads, FftRigor::measure);
 }
 
 template <class T>
-std::unique_ptr<Convolution<T>> make_unit_fourier_preconditioner(const Grid& grid, int threads) {
+std::unique_ptr<Convolution<T>> make_unit_fourier_preconditioner(const Grid& grid, int threads,
+                                                                 FftRigor rigor) {
   // |q| / max |q| with the pair's normalisation, 1 / the lattice's points, kept.
   auto multiplier = filter_multiplier(grid, 1.0);
   const double peak = multiplier.maxCoeff();
   const double lattice_points = static_cast<double>(grid.points()) * (grid.periodic ? 1 : 4);
   if (peak > 0) multiplier /= peak * lattice_points;  // (a 1 x 1 grid has only the q = 0 mode)
-  return make_filter<T>(grid, multiplier, threads);
+  return make_filter<T>(grid, multiplier, threads, rigor);
 }
 
 template std::unique_ptr<Convolution<double>> make_fourier_preconditioner(const Grid&, Real, int);
 template std::unique_ptr<Convolution<float>> make_fourier_preconditioner(const Grid&, Real, int);
-template std::unique_ptr<Convolution<double>> make_unit_fourier_preconditioner(const Grid&, int);
-template std::unique_ptr<Convolution<float>> make_unit_fourier_preconditioner(const Grid&, int);
+template std::unique_ptr<Convolution<double>> make_unit_fourier_preconditioner(const Grid&, int, FftRigor);
+template std::unique_ptr<Convolution<float>> make_unit_fourier_preconditioner(const Grid&, int, FftRigor);
 
 }  // namespace contactbench

@@ -32,7 +32,9 @@ std::unique_ptr<Convolution<T>> make_fourier_preconditioner(const Grid& grid, Re
 // the units of the grid and the modulus: for a preconditioned CG (invariant to a constant factor of its
 // preconditioner) that runs the filter in single precision, where E* of 1e90 Pa or a pixel of 1e-90 m would
 // leave float's range.
+// `rigor`: how its plans are made (Convolution).
 template <class T>
-std::unique_ptr<Convolution<T>> make_unit_fourier_preconditioner(const Grid& grid, int threads = 1);
+std::unique_ptr<Convolution<T>> make_unit_fourier_preconditioner(const Grid& grid, int threads = 1,
+                                                                 FftRigor rigor = FftRigor::measure);
 
 }  // namespace contactbench
