@@ -45,7 +45,7 @@ constexpr Index kMaxOuter = 500;
 constexpr Index kExtensionRadius = 12;
 constexpr double kExtensionFloor = 0.25;
 // The preconditioner's filter runs in single precision, on plans FFTW estimates: measured float plans
-// applied 3 % faster in the solve (surface A at 1024^2, 1 %, periodic: 0.158-0.168 s against 0.164-0.177 s)
+// applied 3 % faster in the solve (surface A at 1024^2, 1 %, periodic: 0.159-0.168 s against 0.164-0.177 s)
 // but cost about 1.1 s to make per process at 1024^2 (the double filter shared the operator's measured
 // plans), which a scene of a few dozen solves never earns back (the paper's default scene: 7.1 s against
 // 6.4 s before the float filter).
