@@ -149,6 +149,7 @@ def bem_solvers(data):
     curves = defaultdict(dict)  # (boundary, n) -> (solver, start) -> row
     capped = defaultdict(dict)  # (boundary, n, H/E*) -> solver -> row
     separations = defaultdict(dict)  # (surface, boundary, contact, n) -> solver -> row
+    float_sizes = set()  # grid sizes solved in single precision (names ending /precision:float)
     for name, row in rows.items():
         parts = name.split("/")
         solver, boundary = parts[1], parts[2]
@@ -161,7 +162,12 @@ def bem_solvers(data):
             separations[(parts[5], boundary, int(f["separation"]), int(f["n"]))][solver] = row
         elif "contact" in f:
             cases[(parts[5], boundary, int(f["contact"]))].setdefault(int(f["n"]), {})[solver] = row
+            if f.get("precision") == "float":
+                float_sizes.add(int(f["n"]))
     solvers = sorted({s for c in cases.values() for r in c.values() for s in r})
+    def size_label(n):
+        return f"{n} float" if n in float_sizes else str(n)
+
     lines = header(data, "The boundary-element solvers at equal accuracy", "scripts/bench.sh bem_solvers")
     lines.append("Each solver is run from a cold start at the tolerances 1e-3, 1e-4, ... until its contact area "
                  "(node count) is within 1e-4 relative and its pressure within 1e-4 relative L2 of a reference "
@@ -169,7 +175,9 @@ def bem_solvers(data):
                  "those of that solve (seconds: the median of three runs), `tol` the tolerance it needed. surface_a: the paper's surface A Fourier-"
                  "refined to n x n; h08: H = 0.8, roll-off at 4 (2 pi/L), cut at each grid's Nyquist wavevector. "
                  "contact: nominal % (the reference's area fraction in the `area` column). FFT pairs / iteration: "
-                 "one iteration over one r2c + c2r pair of the padded size (FFTW_MEASURE) in the same binary.")
+                 "one iteration over one r2c + c2r pair of the padded size (FFTW_MEASURE) in the same binary. "
+                 "n marked float: solved in single precision, the ladder ending at float's smallest tolerance, "
+                 "1e-6 (the reference is the same double solve; the FFT pair is a float one).")
     lines.append("")
     head = "| surface | boundary | contact % | n | area |"
     rule = "|---|---|---|---|---|"
@@ -187,7 +195,7 @@ def bem_solvers(data):
         for n in sorted(cases[key]):
             r = cases[key][n]
             area = next(iter(r.values())).get("area_fraction")
-            line = f"| {key[0]} | {key[1]} | {key[2]} | {n} | {fmt(area)} |"
+            line = f"| {key[0]} | {key[1]} | {key[2]} | {size_label(n)} | {fmt(area)} |"
             for s in solvers:
                 row = r.get(s, {})
                 if not row:
@@ -207,7 +215,7 @@ def bem_solvers(data):
     # Growth of the iteration count with the grid: the count at n over the count at the smallest n.
     lines += ["", "Iterations at n over iterations at the smallest n of the case (the growth with the grid):", ""]
     lines += ["| surface | boundary | contact % | solver | " + " | ".join(
-        f"n = {n}" for n in sorted({n for c in cases.values() for n in c})) + " |"]
+        f"n = {size_label(n)}" for n in sorted({n for c in cases.values() for n in c})) + " |"]
     sizes = sorted({n for c in cases.values() for n in c})
     lines += ["|---|---|---|---|" + "---|" * len(sizes)]
     for key in sorted(cases):
