@@ -6,6 +6,7 @@ Medians of the repetitions, in milliseconds, and ratios to the references measur
 Usage: render_bench.py results/bench/labelling.json > results/bench/labelling.md
 """
 import json
+import re
 import sys
 from collections import defaultdict
 
@@ -33,10 +34,39 @@ def fmt(value):
     return "-" if value is None else (f"{value:.3g}" if value < 100 else f"{value:.0f}")
 
 
+def runs(context, command):
+    """(command, commit, date) of each run recorded in the context; runs appended by BENCH_APPEND=1 are joined
+    by '; then ' in each of the three keys (scripts/bench.sh)."""
+    fields = [str(context.get(key, default)).split("; then ")
+              for key, default in (("command", command), ("commit", "?"), ("date", "?"))]
+    if len({len(f) for f in fields}) != 1:  # not aligned: show each key whole
+        return [tuple("; then ".join(f) for f in fields)]
+    return list(zip(*fields))
+
+
+def run_of(name, made):
+    """The number (1, 2, ...) of the last run whose BENCH_FILTER matches `name` (Google Benchmark's filter is a
+    regular expression searched in the name): the run that made the recorded row."""
+    found = None
+    for k, (cmd, _, _) in enumerate(made, 1):
+        _, _, pattern = cmd.partition(" with BENCH_FILTER set to ")
+        if not pattern or re.search(pattern, name):
+            found = k
+    return found
+
+
 def header(data, title, command):
     c = data["context"]
     lines = [f"# {title}", ""]
-    lines.append(f"Made by `{c.get('command', command)}` at commit {c.get('commit', '?')} on {c.get('date', '?')};")
+    made = runs(c, command)
+    if len(made) == 1:
+        lines.append(f"Made by `{made[0][0]}` at commit {made[0][1]} on {made[0][2]};")
+    else:
+        lines.append(f"Made in {len(made)} runs, each replacing the rows it ran (BENCH_APPEND=1), oldest first:")
+        lines.append("")
+        lines += [f"{k}. {date[:16].replace('T', ' ')} at commit {commit}: `{cmd}`"
+                  for k, (cmd, commit, date) in enumerate(made, 1)]
+        lines.append("")
     lines.append(f"{c.get('threads', '?')} threads, machine: {c.get('machine', c.get('host_name', '?'))}, "
                  f"{c.get('num_cpus', '?')} CPUs at {c.get('mhz_per_cpu', '?')} MHz; OpenCV: {c.get('opencv', 'n/a')}.")
     lines.append("Times are medians of the repetitions, in ms (wall clock). The machine is shared and noisy.")
@@ -190,6 +220,10 @@ def bem_solvers(data):
     for s in others:
         head += f" iterations {base_solver} / {s} | time {base_solver} / {s} |"
         rule += "---|---|"
+    made = runs(data["context"], "scripts/bench.sh bem_solvers")
+    if len(made) > 1:
+        head += " runs |"
+        rule += "---|"
     lines += [head, rule]
     for key in sorted(cases):
         for n in sorted(cases[key]):
@@ -211,6 +245,9 @@ def bem_solvers(data):
                 ok = all(x.get("iterations") and not x.get("error_occurred") for x in (a, b))
                 line += (f" {fmt(a['iterations'] / b['iterations'])} | {fmt(a['seconds'] / b['seconds'])} |"
                          if ok else " - | - |")
+            if len(made) > 1:  # which runs (numbered above) made the row's cells
+                line += " " + ", ".join(str(k) for k in sorted({run_of(row["run_name"], made)
+                                                                  for row in r.values()})) + " |"
             lines.append(line)
     # Growth of the iteration count with the grid: the count at n over the count at the smallest n.
     lines += ["", "Iterations at n over iterations at the smallest n of the case (the growth with the grid):", ""]
@@ -230,8 +267,8 @@ def bem_solvers(data):
         lines += ["", "Load curves: 10 loads P/(E* A0) = 0.001 ... 0.01 on surface_a at tolerance 1e-8, in "
                   "increasing order. cold: each load by a new solver; warm: each from the last solution scaled "
                   "to the new load; extrapolated: each from the linear extrapolation of the last two solutions.",
-                  "", "| boundary | n | solver | start | iterations | seconds | iterations / cold |",
-                  "|---|---|---|---|---|---|---|"]
+                  "", "| boundary | n | solver | start | iterations | seconds | iterations / cold | run |",
+                  "|---|---|---|---|---|---|---|---|"]
         for key in sorted(curves):
             c = curves[key]
             for (solver, start) in sorted(c):
@@ -239,45 +276,50 @@ def bem_solvers(data):
                 cold = c.get((solver, "cold"), {}).get("iterations")
                 lines.append(f"| {key[0]} | {key[1]} | {solver} | {start} | {fmt(row.get('iterations'))} | "
                              f"{fmt(row.get('seconds'))} | "
-                             f"{fmt(row['iterations'] / cold) if cold else '-'} |")
+                             f"{fmt(row['iterations'] / cold) if cold else '-'} | "
+                             f"{run_of(row['run_name'], made)} |")
     if capped:
         lines += ["", "Capped load curves: the same 10 loads with the pressure capped at the hardness H (H/E* in the "
                   "table), warm-started, each solver at tolerance 1e-8. active_set caps each solve itself (a third, "
                   "plastic set); the others solve elastically, then search the flat's height with capped solves "
                   "under separation control. area and plastic: fractions at the last load.",
                   "", "| boundary | n | H/E* | solver | iterations | seconds | area | plastic | "
-                  "iterations polonsky_keer / solver | time polonsky_keer / solver |",
-                  "|---|---|---|---|---|---|---|---|---|---|"]
+                  "iterations polonsky_keer / solver | time polonsky_keer / solver | run |",
+                  "|---|---|---|---|---|---|---|---|---|---|---|"]
         lines += ratio_rows(capped, lambda key: f"{key[0]} | {key[1]} | {key[2]}",
-                            lambda row: f"{fmt(row.get('area_fraction'))} | {fmt(row.get('plastic_fraction'))}")
+                            lambda row: f"{fmt(row.get('area_fraction'))} | {fmt(row.get('plastic_fraction'))}",
+                            made)
     if separations:
         lines += ["", "Separation control: one cold solve with the flat at the height of the equal-accuracy "
                   "reference of the case (plain Polonsky-Keer, 1e-12, under load control), each solver at "
                   "tolerance 1e-8 (seconds: the median of three runs). load error: the solve's mean pressure "
                   "against the reference's load; area error: its node count against the reference's.",
                   "", "| surface | boundary | contact % | n | solver | iterations | seconds | load error | "
-                  "area error | iterations polonsky_keer / solver | time polonsky_keer / solver |",
-                  "|---|---|---|---|---|---|---|---|---|---|---|"]
+                  "area error | iterations polonsky_keer / solver | time polonsky_keer / solver | run |",
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|"]
         lines += ratio_rows(separations, lambda key: " | ".join(str(k) for k in key),
-                            lambda row: f"{row.get('load_error', 0):.1e} | {row.get('area_error', 0):.1e}")
+                            lambda row: f"{row.get('load_error', 0):.1e} | {row.get('area_error', 0):.1e}", made)
     return lines
 
 
-def ratio_rows(table, key_cells, extra_cells):
-    """Rows of key -> solver -> row: iterations, seconds, the extra cells, and plain Polonsky-Keer's over each."""
+def ratio_rows(table, key_cells, extra_cells, made):
+    """Rows of key -> solver -> row: iterations, seconds, the extra cells, plain Polonsky-Keer's over each, and
+    the run (of `made`) that made the row."""
     out = []
     for key in sorted(table):
         base = table[key].get("polonsky_keer", {})
         for solver in sorted(table[key]):
             row = table[key][solver]
             if row.get("error_occurred"):
-                out.append(f"| {key_cells(key)} | {solver} | did not converge | - | - | - | - |")
+                out.append(f"| {key_cells(key)} | {solver} | did not converge | - | - | - | - | "
+                           f"{run_of(row['run_name'], made)} |")
                 continue
             ok = base.get("iterations") and not base.get("error_occurred")
             ratios = (f"{fmt(base['iterations'] / row['iterations'])} | {fmt(base['seconds'] / row['seconds'])}"
                       if ok else "- | -")
             out.append(f"| {key_cells(key)} | {solver} | {fmt(row.get('iterations'))} | "
-                       f"{fmt(row.get('seconds'))} | {extra_cells(row)} | {ratios} |")
+                       f"{fmt(row.get('seconds'))} | {extra_cells(row)} | {ratios} | "
+                       f"{run_of(row['run_name'], made)} |")
     return out
 
 
