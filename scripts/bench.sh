@@ -35,15 +35,14 @@ for name in "${@:-labelling sweep bem}"; do
       --benchmark_context="commit=$commit,machine=$machine,command=scripts/bench.sh $bench${BENCH_FILTER:+ with BENCH_FILTER set to $BENCH_FILTER}"
     if [[ -n ${BENCH_APPEND:-} && -f $out ]]; then
       # Adds this run's benchmarks to the recorded ones (replacing any of the same name); the context keeps
-      # both commands, commits and dates.
+      # every run's command, commit and date, one entry each, so that render_bench.py can list the runs.
       python3 - "$out" "$out.tmp" <<'PY'
 import json, sys
 old, new = (json.load(open(p)) for p in sys.argv[1:3])
 names = {b["name"] for b in new["benchmarks"]}
 new["benchmarks"] = [b for b in old["benchmarks"] if b["name"] not in names] + new["benchmarks"]
 for key in ("command", "commit", "date"):
-    if old["context"].get(key) != new["context"].get(key):
-        new["context"][key] = f'{old["context"].get(key)}; then {new["context"].get(key)}'
+    new["context"][key] = f'{old["context"].get(key)}; then {new["context"].get(key)}'
 json.dump(new, open(sys.argv[2], "w"), indent=2)
 PY
     fi
