@@ -228,7 +228,7 @@ def bem_solvers(data):
     for key in sorted(cases):
         for n in sorted(cases[key]):
             r = cases[key][n]
-            area = next(iter(r.values())).get("area_fraction")
+            area = next((row["area_fraction"] for row in r.values() if "area_fraction" in row), None)
             line = f"| {key[0]} | {key[1]} | {key[2]} | {size_label(n)} | {fmt(area)} |"
             for s in solvers:
                 row = r.get(s, {})
