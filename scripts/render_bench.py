@@ -238,11 +238,17 @@ def bem_solvers(data):
                 if row.get("error_occurred"):
                     line += " did not reach | - | - | - |"
                     continue
+                if row.get("reached") == 0:  # the tightest solve's numbers, and how far it was
+                    line += (f" did not reach: {fmt(row.get('iterations'))} (area {row['area_error']:.0e}, "
+                             f"pressure {row['pressure_error']:.0e})"
+                             f" | {fmt(row.get('seconds'))} | {row.get('tolerance', 0):.0e} | - |")
+                    continue
                 line += (f" {fmt(row.get('iterations'))} | {fmt(row.get('seconds'))} | "
                          f"{row.get('tolerance', 0):.0e} | {fmt(row.get('fft_pairs_per_iteration'))} |")
             for s in others:
                 a, b = r.get(base_solver, {}), r.get(s, {})
-                ok = all(x.get("iterations") and not x.get("error_occurred") for x in (a, b))
+                ok = all(x.get("iterations") and not x.get("error_occurred") and x.get("reached", 1)
+                         for x in (a, b))
                 line += (f" {fmt(a['iterations'] / b['iterations'])} | {fmt(a['seconds'] / b['seconds'])} |"
                          if ok else " - | - |")
             if len(made) > 1:  # which runs (numbered above) made the row's cells
@@ -257,7 +263,8 @@ def bem_solvers(data):
     lines += ["|---|---|---|---|" + "---|" * len(sizes)]
     for key in sorted(cases):
         for s in solvers:
-            counts = {n: cases[key][n].get(s, {}).get("iterations") for n in cases[key]}
+            counts = {n: cases[key][n].get(s, {}).get("iterations") if cases[key][n].get(s, {}).get("reached", 1)
+                      else None for n in cases[key]}
             if not any(counts.values()):
                 continue
             base = counts.get(min(counts))
