@@ -221,9 +221,8 @@ def bem_solvers(data):
         head += f" iterations {base_solver} / {s} | time {base_solver} / {s} |"
         rule += "---|---|"
     made = runs(data["context"], "scripts/bench.sh bem_solvers")
-    if len(made) > 1:
-        head += " runs |"
-        rule += "---|"
+    head += " runs |"
+    rule += "---|"
     lines += [head, rule]
     for key in sorted(cases):
         for n in sorted(cases[key]):
@@ -247,13 +246,12 @@ def bem_solvers(data):
                          f"{row.get('tolerance', 0):.0e} | {fmt(row.get('fft_pairs_per_iteration'))} |")
             for s in others:
                 a, b = r.get(base_solver, {}), r.get(s, {})
-                ok = all(x.get("iterations") and not x.get("error_occurred") and x.get("reached", 1)
-                         for x in (a, b))
+                ok = at_equal_accuracy(a) and at_equal_accuracy(b)
                 line += (f" {fmt(a['iterations'] / b['iterations'])} | {fmt(a['seconds'] / b['seconds'])} |"
                          if ok else " - | - |")
-            if len(made) > 1:  # which runs (numbered above) made the row's cells
-                line += " " + ", ".join(str(k) for k in sorted({run_of(row["run_name"], made)
-                                                                  for row in r.values()})) + " |"
+            # Which runs (numbered above) made the row's cells.
+            made_by = sorted({run_of(row["run_name"], made) for row in r.values()})
+            line += " " + ", ".join(str(k) for k in made_by) + " |"
             lines.append(line)
     # Growth of the iteration count with the grid: the count at n over the count at the smallest n.
     lines += ["", "Iterations at n over iterations at the smallest n of the case (the growth with the grid):", ""]
@@ -263,8 +261,8 @@ def bem_solvers(data):
     lines += ["|---|---|---|---|" + "---|" * len(sizes)]
     for key in sorted(cases):
         for s in solvers:
-            counts = {n: cases[key][n].get(s, {}).get("iterations") if cases[key][n].get(s, {}).get("reached", 1)
-                      else None for n in cases[key]}
+            counts = {n: cases[key][n][s]["iterations"] if at_equal_accuracy(cases[key][n].get(s, {})) else None
+                      for n in cases[key]}
             if not any(counts.values()):
                 continue
             base = counts.get(min(counts))
@@ -307,6 +305,11 @@ def bem_solvers(data):
         lines += ratio_rows(separations, lambda key: " | ".join(str(k) for k in key),
                             lambda row: f"{row.get('load_error', 0):.1e} | {row.get('area_error', 0):.1e}", made)
     return lines
+
+
+def at_equal_accuracy(row):
+    """A solve that reached the accuracy (not an error row, not reached = 0), so its counts can be compared."""
+    return bool(row.get("iterations")) and not row.get("error_occurred") and row.get("reached", 1) == 1
 
 
 def ratio_rows(table, key_cells, extra_cells, made):
