@@ -21,24 +21,25 @@
 // from the previous pressure scaled to the load, on its contact set {p > 0}.
 //
 // Converged means: the set did not change in the last outer step (so p >= 0 on A and no node off A
-// penetrates by more than the threshold below), AND the complementarity residual, the largest |g| on A, is
-// at most the threshold tolerance x (max h - d) (the approach of the highest point: the scale of the gaps
-// that matter, where the height range could be made of a pit nothing touches; never below the gap's
-// round-off), AND the last CG step changed the pressure by at most the tolerance relative (PK's criterion,
-// on a settled set; a final solve that starts with the gap within the threshold takes no step and so meets
-// it). The test is thus on the residual itself, not only on a change that a stalled
-// iteration could make small. Nodes enter only when they penetrate by more than the threshold (nodes at
-// p = 0 and g = 0 within it would otherwise flip in and out for ever).
-// The iteration count: the inner CG iterations (each one application of G and one of the filter: two FFT
-// pairs, padded for non-periodic grids), plus one per outer step whose start needs a fresh displacement G p
-// (more than 16 nodes left the set or became plastic; nodes that only entered, at p = 0, change nothing,
-// and up to 16 changed pressures are added to G p as their columns of G, a pass over the grid per node,
-// not a transform, so not counted: its time is in the solve's), plus the
-// starting set's gap and the final gap (made again only after a clipping, or when the CG's steps could
-// have moved u from G p by a thousandth of the threshold: single precision, or tolerances near round-off),
-// plus the coarse levels' work: each level's iterations count a quarter of the next finer level's (a
-// quarter of the points; the transforms' N log N cost a little less), summed over the levels and rounded
-// once, to the nearest iteration (before, rounded up at each level: up to one iteration more per level).
+// penetrates beyond round-off, or beyond the threshold below after 30 outer steps), AND the complementarity
+// residual, the largest |g| on A, is at most the threshold tolerance x (max h - d) (the approach of the
+// highest point: the scale of the gaps that matter, where the height range could be made of a pit nothing
+// touches; never below the gap's round-off), AND the last CG step changed the pressure by at most the
+// tolerance relative (PK's criterion, on a settled set; a final solve that starts with the gap within the
+// threshold takes no step and so meets it). The test is thus on the residual itself, not only on a change
+// that a stalled iteration could make small. Nodes enter when they penetrate beyond the gap's round-off, so
+// that the area is not biased low by the nodes penetrating less than the threshold; after 30 outer steps only
+// beyond the threshold (nodes at p = 0 and g = 0 within it could otherwise flip in and out for ever). The
+// iteration count: the inner CG iterations (each one application of G and one of the filter: two FFT pairs,
+// padded for non-periodic grids), plus one per outer step whose start needs a fresh displacement G p (more
+// than 16 nodes left the set or became plastic; nodes that only entered, at p = 0, change nothing, and up to
+// 16 changed pressures are added to G p as their columns of G, a pass over the grid per node, not a
+// transform, so not counted: its time is in the solve's), plus the starting set's gap and the final gap (made
+// again only after a clipping, or when the CG's steps could have moved u from G p by a thousandth of the
+// threshold: single precision, or tolerances near round-off), plus the coarse levels' work: each level's
+// iterations count a quarter of the next finer level's (a quarter of the points; the transforms' N log N cost
+// a little less), summed over the levels and rounded once, to the nearest iteration (before, rounded up at
+// each level: up to one iteration more per level).
 //
 // Separation control: the flat's height d is given, so the linear problem on A is gap = 0 there with no
 // condition on the sum and no mean taken out of the residual, the filtered residual or G's response (the
