@@ -44,9 +44,9 @@
 // the surface's height range. What the tolerance buys (measured by bench/bench_bem_solvers.cpp against a
 // solve at 1e-12 on surface A and an H = 0.8 surface, 256^2 to 2048^2, 1 % to 30 % contact): the contact
 // area to 1e-4 relative and the pressure to 1e-4 relative L2 needed a tolerance of 1e-4 to 1e-6 with
-// polonsky_keer and 1e-3 to 1e-5 with preconditioned_cg, each once 1e-7 (where 1e-4 of the area is about
-// one node: the count must be exact), and 1e-4 to 1e-6 with active_set, once 1e-7 (2048^2 at 1 % contact);
-// over 41 cases, results/bench/bem_solvers.md, column tol. The defaults (1e-10 here, 1e-8 in scenes and
+// polonsky_keer, twice 1e-7, and 1e-3 to 1e-5 with preconditioned_cg, once 1e-7 (where 1e-4 of the area is
+// about one node: the count must be exact), and 1e-4 to 1e-6 with active_set (1e-5 in 29 of 45 cases, 1e-6
+// in 3); results/bench/bem_solvers.md, column tol. The defaults (1e-10 here, 1e-8 in scenes and
 // on the command line) are tighter than that for all three. A solve
 // that reaches the iteration cap is marked converged = false and says so through the options' warning sink;
 // it is never passed off as converged.
