@@ -37,8 +37,8 @@ constexpr std::size_t kFewChanges = 16;
 constexpr Index kMaxOuter = 500;
 // Nodes enter the contact set when they penetrate beyond the gap's round-off for this many outer steps, then
 // only beyond the convergence threshold (docs/solvers.md "Which nodes enter"): a node at p = 0 and g = 0
-// within the solve's accuracy could otherwise enter and leave again for ever. Solves take 5 to 15 outer
-// steps (at most 16 in tests/).
+// within the solve's accuracy could otherwise enter and leave again for ever. Solves in tests/ take 5 to 16
+// outer steps.
 constexpr Index kLaxEntrySteps = 30;
 // The extended filter (docs/solvers.md "The extended filter"): the residual is extended off the contact set
 // by its average over the set nodes of a (2 kExtensionRadius + 1)^2 window before the Fourier filter, and the
