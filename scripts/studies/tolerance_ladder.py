@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """The equal-accuracy yardstick of bench/bench_bem_solvers.cpp for one case, with the errors shown: which
 tolerance a solver needs for its contact area (node count) within 1e-4 relative and its pressure within 1e-4
-relative L2 of a tight reference solve, and which of the two binds at each rung (docs/solvers.md, "A fair
-yardstick" and "Which nodes enter").
+relative L2 of a tight reference solve, and which of the two binds at each rung (docs/solvers.md, "Stopping
+criteria and what the tolerance buys" and "Growth on the rough surface, at a fixed tolerance").
 
 The case is the benchmark's (the same surfaces, bit for bit, and the same nominal loads): surface_a, the
 paper's surface A refined to n x n; h08, H = 0.8 with roll-off at 4 (2 pi/L), pixel-rough at every n; the load
@@ -12,7 +12,8 @@ P/(E* A0) = (contact/100) gbar/2. Or any topography file with --file and --load.
 takes seconds and gave the same errors to the printed digits on the h08 surface at 2048^2, periodic, 10 and
 30 %).
 
-Prints one Markdown row per rung: tolerance, iterations, seconds, converged, area error, pressure error, and
+Prints one Markdown row per rung: tolerance, iterations, seconds, converged, area error (signed: + too many
+nodes), pressure error, and
 stops at the first rung that meets the accuracy (--all: runs every rung).
 
 Run: PYTHONPATH=build/release/python /usr/bin/python3 scripts/studies/tolerance_ladder.py \
