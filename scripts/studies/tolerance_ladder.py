@@ -13,8 +13,7 @@ takes seconds and gave the same errors to the printed digits on the h08 surface 
 30 %).
 
 Prints one Markdown row per rung: tolerance, iterations, seconds, converged, area error (signed: + too many
-nodes), pressure error, and
-stops at the first rung that meets the accuracy (--all: runs every rung).
+nodes), pressure error; stops at the first rung that meets the accuracy (--all: runs every rung).
 
 Run: PYTHONPATH=build/release/python /usr/bin/python3 scripts/studies/tolerance_ladder.py \
        --surface h08 --n 2048 --contact 10 --periodic [--solver active_set] [--threads 2]
