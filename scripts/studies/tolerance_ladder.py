@@ -66,14 +66,35 @@ def main():
     parser.add_argument("--all", action="store_true", help="run every rung, not only up to the first met")
     parser.add_argument("--threads", type=int, default=2)
     args = parser.parse_args()
+    if args.file and args.load is None:
+        parser.error("--file needs --load")
+    if args.load is not None and not (args.load > 0 and math.isfinite(args.load)):
+        parser.error(f"--load: expected a finite P/(E* A0) > 0, got {args.load}")
+    if not 0 < args.contact < 100:
+        parser.error(f"--contact: expected a nominal contact in (0, 100) %, got {args.contact}")
+    if args.n < 2:
+        parser.error(f"--n: expected at least 2 points a side, got {args.n}")
+    # The reference must be far tighter than the rungs it judges (and the errors' 1e-4).
+    if not 1e-13 <= args.reference_tolerance <= 1e-8:
+        parser.error(f"--reference-tolerance: expected 1e-13 to 1e-8, got {args.reference_tolerance}")
+    if not 0 < args.accuracy < 1:
+        parser.error(f"--accuracy: expected a relative accuracy in (0, 1), got {args.accuracy}")
+    try:
+        # Unknown solver names fail here, before the reference solve (the message lists the known ones).
+        tiny = cb.Surface(np.zeros((2, 2)), lx=1e-6, periodic=True)
+        for option, name in (("--solver", args.solver), ("--reference-solver", args.reference_solver)):
+            try:
+                cb.BemSolver(tiny, E_STAR, solver=name)
+            except cb.Error as error:
+                parser.error(f"{option}: {error}")
+        run(args)
+    except cb.Error as error:  # the library's message names the file, key or value
+        sys.exit(f"tolerance_ladder.py: {error}")
 
+
+def run(args):
     if args.file:
-        if args.load is None:
-            parser.error("--file needs --load")
-        try:
-            surface = cb.read_topography(args.file)
-        except cb.InputError as error:
-            sys.exit(f"tolerance_ladder.py: {error}")
+        surface = cb.read_topography(args.file)
         load, label = args.load, args.file
     else:
         # As the benchmark: the load from the rms gradient of the surface as solved (periodic or not; the
@@ -86,7 +107,7 @@ def main():
     reference, p_ref = solve(surface, periodic, load, args.reference_solver, args.reference_tolerance,
                              args.threads, False)
     if not reference.converged:
-        sys.exit("the reference solve did not converge")
+        sys.exit("tolerance_ladder.py: the reference solve did not converge (its cap is 100000 iterations)")
     nodes_ref, norm_ref = reference.contact_points, np.linalg.norm(p_ref)
     print(f"{label}, {'periodic' if periodic else 'non-periodic'}, load {load:.6g}; reference "
           f"{args.reference_solver} at {args.reference_tolerance:g}: {nodes_ref} nodes, "
