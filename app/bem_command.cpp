@@ -44,7 +44,7 @@ const FlagNames kFlags = {{"surface.file", "FILE"},
                           {"loads.values", "--loads"},
                           {"methods.bem.tolerance", "--tolerance"},
                           {"methods.bem.max_iterations", "--max-iterations"},
-                          {"methods.bem.hardness", "--hardness"},
+                          {"interface.hardness", "--hardness"},
                           {"methods.bem.precision", "--float"},
                           {"methods.bem.fields", "--fields"},
                           {"methods.bem.connectivity", "--connectivity"},
@@ -66,17 +66,18 @@ toml::table scene_of(const BemOptions& o) {
   if (o.non_periodic) bem.insert("periodic", false);
   if (o.tolerance) bem.insert("tolerance", *o.tolerance);
   if (o.max_iterations) bem.insert("max_iterations", static_cast<std::int64_t>(*o.max_iterations));
-  if (o.hardness) bem.insert("hardness", *o.hardness);
   if (o.single_precision) bem.insert("precision", "single");
   if (!o.fields.empty()) bem.insert("fields", o.fields);
   if (o.connectivity) bem.insert("connectivity", *o.connectivity);
   if (o.solver) bem.insert("solver", *o.solver);
   if (o.allow_unconverged) bem.insert("allow_unconverged", true);
-  return toml::table{{"name", "bem"},
-                     {"surface", surface_keys(o.topography)},
-                     {"material", material},
-                     {"loads", toml::table{{"values", loads}}},
-                     {"methods", toml::table{{"bem", bem}}}};
+  toml::table document{{"name", "bem"},
+                       {"surface", surface_keys(o.topography)},
+                       {"material", material},
+                       {"loads", toml::table{{"values", loads}}},
+                       {"methods", toml::table{{"bem", bem}}}};
+  if (o.hardness) document.insert("interface", toml::table{{"hardness", *o.hardness}});
+  return document;
 }
 
 // The command as given, every option that changes the result included, so that the header reruns it.

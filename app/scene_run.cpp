@@ -33,6 +33,33 @@ double run_stage(SceneReport& report, const RunObserver& observer, const std::st
   return seconds;
 }
 
+// Every method against the scene's interface (app/interface.hpp): an effect it does not model is refused
+// unless its table ignores it; an ignore that changes nothing is a mistake worth saying.
+void check_effects(const Scene& scene, Problems& problems) {
+  for (const MethodSpec& m : scene.methods) {
+    const std::vector<Effect> modelled = m.method->models();
+    const std::string key = "methods." + m.label;
+    for (const Effect e : scene.interface.effects()) {
+      const bool models = std::find(modelled.begin(), modelled.end(), e) != modelled.end();
+      const bool ignores = std::find(m.ignored.begin(), m.ignored.end(), e) != m.ignored.end();
+      if (!models && !ignores)
+        problems.add(0, key,
+                     "the method " + std::string(m.name()) + " does not model the interface's " +
+                         std::string(effect_name(e)) + " (interface." + std::string(effect_name(e)) + ")",
+                     "a method that models it, or ignore = [\"" + std::string(effect_name(e)) + "\"] in [" +
+                         key + "] to run it without, its rows marked");
+    }
+    for (const Effect e : m.ignored)
+      if (!scene.interface.has(e))
+        problems.add(
+            0, key + ".ignore",
+            "ignores " + std::string(effect_name(e)) + ", which the scene's [interface] does not call for",
+            "only effects of [interface]: " + (scene.interface.effects().empty()
+                                                   ? std::string("none here (remove ignore)")
+                                                   : effects_text(scene.interface.effects())));
+  }
+}
+
 std::string origin_of(const Scene& scene) {
   return scene.file.empty() ? "<scene>" : scene.file.string();
 }
@@ -60,12 +87,16 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
 
   // Every preflight, before any stage: one SceneError lists every problem of every method.
   Problems problems(origin_of(scene));
-  for (const MethodSpec& m : scene.methods)
+  check_effects(scene, problems);
+  for (const MethodSpec& m : scene.methods) {
+    const InterfaceSpec interface = method_context(plan.context, scene, m).interface;
     m.method->preflight(MethodCheck{.scene = scene,
+                                    .interface = interface,
                                     .surface = surface,
                                     .moments = report.moments,
                                     .key = "methods." + m.label,
                                     .problems = problems});
+  }
 #if CONTACTBENCH_WITH_MPI
   // Run as several MPI ranks: a BEM stage the distributed solver cannot do is refused here, before any work.
   if (stages_are_distributed()) {
@@ -98,7 +129,7 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
   for (std::size_t m = 0; m < scene.methods.size(); ++m) {
     const MethodSpec& spec = scene.methods[m];
     const ScenePlan::Stages& stages = plan.of_method[m];
-    const MethodNeeds needs = spec.method->needs(plan.context);
+    const MethodNeeds needs = spec.method->needs(method_context(plan.context, scene, spec));
     const MethodInputs inputs{
         .scene = scene,
         .surface = surface,

@@ -166,6 +166,7 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
   if (solved.grid().periodic != stage.periodic) solved = solved.with_periodic(stage.periodic);
   products.points = solved.grid().points();
   products.periodic = stage.periodic;
+  products.hardness = stage.hardness;
   solve_loads(stage, solved, estar, mean_pressures, connectivities, context, stage.fields, start,
               products.solutions, products.statistics, products.bytes_per_rank);
   if (stage.extrapolate) {

@@ -65,6 +65,7 @@ struct BemProducts {
   double seconds = 0;                                        // refinement + solves + statistics
   Index points = 0;                                          // nodes of the grid solved on
   bool periodic = true;                                      // the boundary solved
+  std::optional<Real> hardness;                              // the cap solved with [Pa]; none: elastic
   // With BemStage::extrapolate: the same loads solved on twice the points a side (fields dropped too).
   std::vector<ContactSolution> fine_solutions;
   std::map<int, std::vector<ContactStatistics>> fine_statistics;  // by connectivity

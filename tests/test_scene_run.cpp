@@ -121,13 +121,15 @@ tolerance = 1e-4
 
 // An effect runs only where a method names it: the pressure cap shows in its stage and its own column, and
 // the elastic method beside it has neither (and caps nothing: more area under the cap at the same load).
-TEST(ScenePlan, AHardnessRunsOnlyForTheMethodThatAsksForIt) {
+TEST(ScenePlan, AHardnessRunsOnlyForTheMethodThatRunsWithIt) {
   const SceneReport report = run_text("name = \"cap\"\nreference = \"\"\n" + kSmallSurface + R"(
+[interface]
+hardness = 2e9
 [methods.elastic]
 method = "bem"
+ignore = ["hardness"]
 [methods.capped]
 method = "bem"
-hardness = 2e9
 )");
   std::vector<std::string> solves;
   for (const StageRecord& stage : report.stages)
