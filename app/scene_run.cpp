@@ -5,11 +5,9 @@
 #include <optional>
 #include <sstream>
 
-#if CONTACTBENCH_WITH_MPI
-#include "contactbench/app/distributed_stages.hpp"
-#endif
 #include "contactbench/app/scene_plan.hpp"
 #include "contactbench/app/scene_toml.hpp"
+#include "contactbench/app/stage_runner.hpp"
 
 namespace contactbench {
 
@@ -97,20 +95,18 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
                                     .key = "methods." + m.label,
                                     .problems = problems});
   }
-#if CONTACTBENCH_WITH_MPI
-  // Run as several MPI ranks: a BEM stage the distributed solver cannot do is refused here, before any work.
-  if (stages_are_distributed()) {
-    report.ranks = distributed_rank_count();
-    for (std::size_t m = 0; m < scene.methods.size(); ++m)
-      if (const int b = plan.of_method[m].bem; b >= 0)
-        if (const std::string refusal = distributed_bem_refusal(plan.bems[static_cast<std::size_t>(b)].stage);
-            !refusal.empty())
-          problems.add(0, "methods." + scene.methods[m].label, refusal);
-  }
-#endif
+  // A BEM stage the runner cannot do (e.g. an option the distributed solver lacks) is refused here, before
+  // any work, with the reason: never run with another solver than the scene says.
+  const StageRunner& runner = options.runner ? *options.runner : serial_runner();
+  report.ranks = runner.ranks();
+  for (std::size_t m = 0; m < scene.methods.size(); ++m)
+    if (const int b = plan.of_method[m].bem; b >= 0)
+      if (const std::string refusal = runner.bem_refusal(plan.bems[static_cast<std::size_t>(b)].stage);
+          !refusal.empty())
+        problems.add(0, "methods." + scene.methods[m].label, refusal);
   problems.throw_if_any();
 
-  const StageContext context{.threads = options.threads, .observer = &observer};
+  const StageContext context{.threads = options.threads, .observer = &observer, .stage_runner = &runner};
   std::vector<SweepProducts> sweeps(plan.sweeps.size());
   for (std::size_t s = 0; s < plan.sweeps.size(); ++s)
     run_stage(report, observer, plan.sweeps[s].name(),

@@ -46,9 +46,12 @@ struct SceneReport {
   const std::vector<Real>& loads() const { return scene.loads; }
 };
 
+class StageRunner;  // app/stage_runner.hpp
+
 struct RunOptions {
   int threads = 1;
   const RunObserver* observer = nullptr;  // stages, progress and warnings; null: quiet
+  const StageRunner* runner = nullptr;    // where the heavy stages run; null: this process
 };
 
 // Throws SceneError listing every problem the preflights found (then no sweep, solve or theory has run).

@@ -21,10 +21,6 @@
 
 namespace contactbench {
 
-// The BEM solver of a method that names none: kDefaultSolver, or kDefaultDistributedSolver when the stages
-// run on several MPI ranks (app/distributed_stages.hpp), where the default has no distributed version.
-SolverKind default_bem_solver();
-
 struct SweepStage {
   Topology topology;
   SweepLevels levels;
@@ -75,9 +71,13 @@ struct BemProducts {
   std::size_t bytes_per_rank = 0;
 };
 
+class StageRunner;  // app/stage_runner.hpp
+
 struct StageContext {
   int threads = 1;
-  const RunObserver* observer = nullptr;  // may be null: quiet
+  const RunObserver* observer = nullptr;      // may be null: quiet
+  const StageRunner* stage_runner = nullptr;  // where the stages run; null: this process
+  const StageRunner& runner() const;
 };
 
 // The field file of load k (1-based, in the order solved): <prefix>_load<k>_<what>.txt, what = pressure |

@@ -41,7 +41,7 @@ void write_csv(std::ostream& out, const SweepCurve& curve, const std::string& fi
         << '\n';
 }
 
-void run_sweep(const SweepOptions& o) {
+void run_sweep(const SweepOptions& o, const CommandContext& command_context) {
   const std::string command = "contactbench sweep";
   // --levels K is an integer key, "exact" and "paper" strings, as in a scene.
   toml::table plateau{{"method", "plateau"}};
@@ -71,14 +71,14 @@ void run_sweep(const SweepOptions& o) {
                              .surface_periodic = heights.grid().periodic};
   const SweepStage stage = *method->needs(context).sweep;
   const RunObserver observer = terminal_observer(command);
-  const SweepProducts products =
-      run_sweep_stage(stage, heights, {.threads = o.threads, .observer = &observer});
+  const SweepProducts products = run_sweep_stage(
+      stage, heights, {.threads = o.threads, .observer = &observer, .stage_runner = command_context.runner});
   write_output(o.out, [&](std::ostream& out) { write_csv(out, products.sweep, o.topography.file); });
 }
 
 }  // namespace
 
-void add_sweep_command(CLI::App& parent) {
+void add_sweep_command(CLI::App& parent, const CommandContext& context) {
   auto options = std::make_shared<SweepOptions>();
   CLI::App* command = parent.add_subcommand(
       "sweep",
@@ -94,7 +94,7 @@ void add_sweep_command(CLI::App& parent) {
   command->add_option("--out", options->out, "CSV file (default: standard output)")
       ->check(refuse_empty_output_name);
   add_threads_option(*command, options->threads);
-  command->callback([options] { run_sweep(*options); });
+  command->callback([options, &context] { run_sweep(*options, context); });
 }
 
 }  // namespace contactbench

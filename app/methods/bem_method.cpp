@@ -54,7 +54,7 @@ class BemMethod final : public Method {
                       "fields", "connectivity", "solver", "extrapolate", "area", "allow_unconverged"});
     std::vector<std::string_view> solvers(solver_names().begin(), solver_names().end());
     solve_.solver =
-        solver_kind(s.choice("solver", solvers).value_or(std::string(solver_name(default_bem_solver()))));
+        solver_kind(s.choice("solver", solvers).value_or(std::string(solver_name(kDefaultSolver))));
     solve_.refine = read_refine_key(s, context, solve_.refine);
     const auto precision = s.choice("precision", {"double", "single"});
     solve_.single_precision = precision == "single";
