@@ -21,17 +21,15 @@ Comparison compare(const SceneReport& report) {
   };
 
   if (reference)
-    for (const auto& [name, values] : reference->curve.columns)
-      if (name == "area_fraction_error")
-        for (std::size_t k = 0; k < values.size(); ++k)
-          comparison.reference_uncertainty.push_back(values[k] / reference->curve.area_fraction[k]);
+    for (std::size_t k = 0; k < reference->curve.area_fraction_error.size(); ++k)
+      comparison.reference_uncertainty.push_back(reference->curve.area_fraction_error[k] /
+                                                 reference->curve.area_fraction[k]);
 
   for (const MethodResult& m : report.methods) {
     MethodComparison c;
     c.label = m.label;
     c.kappa = m.curve.area_fraction.empty() ? nan : kappa(m.curve.area_fraction.front());
-    for (const auto& [name, values] : m.curve.columns)
-      if (name == "area_fraction_nodes" && !values.empty()) c.kappa_nodes = kappa(values.front());
+    if (!m.curve.area_fraction_nodes.empty()) c.kappa_nodes = kappa(m.curve.area_fraction_nodes.front());
     if (reference) {
       Real sum_squares = 0, largest = 0;
       std::size_t counted = 0;

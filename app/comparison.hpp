@@ -21,7 +21,7 @@ struct MethodComparison {
   Real rms_relative_error = 0;
   // Areal kappa = (A/A0) / (p/(E* gbar)) at the smallest load, gbar = sqrt(m2x + m2y) of the scene's surface.
   Real kappa = 0;
-  std::optional<Real> kappa_nodes;  // the BEM's node-count area, beside its corrected one
+  std::optional<Real> kappa_nodes;  // of the node count, when the method has one (MethodCurve)
 };
 
 struct Comparison {
@@ -29,8 +29,8 @@ struct Comparison {
   Real rms_gradient = 0;                  // gbar
   Real kappa_load = 0;                    // the smallest load P/(E* A0), where kappa is evaluated
   std::vector<MethodComparison> methods;  // in the report's order
-  // The reference's own discretisation error relative to its area, at each load (its column
-  // area_fraction_error / its area: a BEM with extrapolate = true); empty when it reports none.
+  // The reference's own discretisation error relative to its area, at each load (its
+  // MethodCurve::area_fraction_error / its area: a BEM with extrapolate = true); empty when it has none.
   std::vector<Real> reference_uncertainty;
 };
 

@@ -17,6 +17,14 @@ std::string shell_quote(const std::string& text) {
   return quoted + "'";
 }
 
+// Text inside gnuplot's single quotes, where a quote is written twice (a method's note is free text).
+std::string gnuplot_quote(const std::string& text) {
+  std::string quoted = "'";
+  for (const char ch : text)
+    quoted += ch == '\'' ? std::string("''") : std::string(1, ch);
+  return quoted + "'";
+}
+
 // The gnuplot commands of the two panels: linear axes (as the paper draws them) and log-log (small loads).
 void write_panels(std::ostream& out, const SceneReport& report) {
   out << "set multiplot layout 1,2 title " << '"' << report.scene.name
@@ -34,9 +42,8 @@ void write_panels(std::ostream& out, const SceneReport& report) {
       const bool reference = label == report.scene.reference;
       out << (m == 0 ? "" : ", \\\n     ") << "'curves.csv' using (strcol(1) eq '" << label
           << "' ? $3 : NaN):4 with linespoints " << (reference ? "lw 3 pt 7 ps 0.8 lc rgb 'black'" : "lw 1.5")
-          << " title '" << label << (reference ? " (reference)" : "")
-          << (report.methods[m].method == "plateau_hertz" ? " (Hertz-consistent plateaus, this project)" : "")
-          << "'";
+          << " title "
+          << gnuplot_quote(label + (reference ? " (reference)" : "") + report.methods[m].note_suffix());
     }
     out << '\n';
   }

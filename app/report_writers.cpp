@@ -140,10 +140,12 @@ void write_summary_json(std::ostream& out, const SceneReport& report, const Comp
     o.add("area_fraction", std::span<const double>(r.curve.area_fraction));
     o.add("relative_error", std::span<const double>(c.relative_error));
     o.add("max_abs_relative_error", c.max_abs_relative_error).add("rms_relative_error", c.rms_relative_error);
-    // The BEM's extrapolated area and its discretisation error (extrapolate = true), beside its area.
-    for (const auto& [name, values] : r.curve.columns)
-      if (name == "area_fraction_extrapolated" || name == "area_fraction_error")
-        o.add(name, std::span<const double>(values));
+    // The columns the method repeats here (the BEM's extrapolated area), and its own error estimate.
+    for (const std::string& name : r.curve.summary_columns)
+      for (const auto& [column, values] : r.curve.columns)
+        if (column == name) o.add(name, std::span<const double>(values));
+    if (!r.curve.area_fraction_error.empty())
+      o.add("area_fraction_error", std::span<const double>(r.curve.area_fraction_error));
     // Where the method's iteration did not converge (app/unconverged.hpp): those loads' answers, and every
     // error against them when the method is the reference, are not to be trusted.
     std::vector<double> unconverged;
@@ -177,9 +179,8 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
   for (std::size_t m = 0; m < report.methods.size(); ++m) {
     const MethodResult& r = report.methods[m];
     const MethodComparison& c = comparison.methods[m];
-    out << "| " << r.label
-        << (r.method == "plateau_hertz" ? " (Hertz-consistent plateaus, this project)" : "") << " | "
-        << table_number(r.seconds, "%.3g") << " | " << table_number(c.kappa, "%.3f");
+    out << "| " << r.label << r.note_suffix() << " | " << table_number(r.seconds, "%.3g") << " | "
+        << table_number(c.kappa, "%.3f");
     if (c.kappa_nodes) out << " (nodes " << table_number(*c.kappa_nodes, "%.3f") << ")";
     out << " | "
         << (r.label == comparison.reference ? "reference" + reference_uncertainty_text(comparison)

@@ -135,6 +135,7 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
     MethodResult result{.label = spec.label,
                         .method = std::string(spec.name()),
                         .compared_area = spec.method->compared_area(),
+                        .note = spec.method->note(),
                         .curve = {},
                         .seconds = 0};
     result.seconds = run_stage(report, observer, "evaluate " + spec.label,

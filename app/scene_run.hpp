@@ -25,10 +25,15 @@ struct MethodResult {
   std::string label;
   std::string method;         // the registry name
   std::string compared_area;  // which area curve.area_fraction is (Method::compared_area)
-  MethodCurve curve;          // at the report's loads, report.scene.loads
+  // Shown after the label, in parentheses, in table.md and the plot legend (Method::note); empty: nothing.
+  std::string note;
+  MethodCurve curve;  // at the report's loads, report.scene.loads
   // Wall time of the stages the method needed (shared stages are charged in full to each method that needs
   // them) plus its own evaluation; making the scene's surface is charged to no method.
   double seconds = 0;
+
+  // " (<note>)", or "" when there is none: what the tables and the legend add after the label.
+  std::string note_suffix() const { return note.empty() ? std::string() : " (" + note + ")"; }
 };
 
 struct SceneReport {

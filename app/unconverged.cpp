@@ -17,10 +17,8 @@ std::string loads_of(const SceneReport& report, const MethodResult& method) {
 
 std::vector<std::size_t> unconverged_loads(const MethodCurve& curve) {
   std::vector<std::size_t> loads;
-  for (const auto& [name, values] : curve.columns)
-    if (name == "converged")
-      for (std::size_t k = 0; k < values.size(); ++k)
-        if (values[k] == 0) loads.push_back(k);
+  for (std::size_t k = 0; k < curve.converged.size(); ++k)
+    if (!curve.converged[k]) loads.push_back(k);
   return loads;
 }
 

@@ -20,7 +20,8 @@ class UnconvergedError : public Error {
   using Error::Error;
 };
 
-// The loads (indices) where a method's `converged` column is 0; none for methods without that column.
+// The loads (indices) where a method's iteration did not converge (MethodCurve::converged); none for methods
+// that do not iterate.
 std::vector<std::size_t> unconverged_loads(const MethodCurve& curve);
 
 // "bem at P/(E* A0) = 0.001, 0.01 (did not converge)": the methods' unconverged loads, those accepted too;

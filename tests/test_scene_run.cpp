@@ -12,11 +12,13 @@
 #include <vector>
 
 #include "contactbench/app/comparison.hpp"
+#include "contactbench/app/load_area_plots.hpp"
 #include "contactbench/app/provenance.hpp"
 #include "contactbench/app/report_writers.hpp"
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/scene_plan.hpp"
 #include "contactbench/app/scene_run.hpp"
+#include "contactbench/app/unconverged.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/topography_io.hpp"
 #include "small_scene.hpp"
@@ -232,6 +234,41 @@ method = "plateau_hertz"
   // Named apart from the paper's model wherever it is reported.
   EXPECT_NE(report.methods[1].curve.parameters.find("not the paper's model"), std::string::npos);
   EXPECT_NE(report.methods[1].compared_area.find("Hertz-consistent"), std::string::npos);
+}
+
+// The tables, the legend and the unconverged-load marking read a method's typed fields and its note, never
+// its name or a column's: a note set on any row (as an effect's mark would be) shows after its label, and a
+// load marked unconverged is marked whichever method it belongs to.
+TEST(SceneRun, WritersShowEveryNoteAndReadTypedFields) {
+  SceneReport report = run_text("name = \"typed\"\n" + kSmallSurface + R"(
+[methods.bem]
+[methods.hertz]
+method = "plateau_hertz"
+[methods.gw]
+method = "gw_mccool"
+)");
+  ASSERT_EQ(report.methods.size(), 3u);
+  const MethodResult& bem = report.methods[0];
+  EXPECT_EQ(bem.note, "");
+  EXPECT_EQ(bem.curve.converged, (std::vector<bool>{true, true}));
+  EXPECT_EQ(bem.curve.area_fraction_nodes.size(), 2u);
+  EXPECT_TRUE(bem.curve.area_fraction_error.empty());  // no extrapolation: no error estimate
+  EXPECT_EQ(report.methods[1].note, "Hertz-consistent plateaus, this project");
+  EXPECT_TRUE(report.methods[2].curve.converged.empty());  // a theory does not iterate
+  EXPECT_TRUE(describe_unconverged(report).empty());
+
+  report.methods[2].note = "elastic: ignores hardness";
+  report.methods[2].curve.converged = {true, false};
+  const Comparison comparison = compare(report);
+  std::ostringstream table, plot;
+  write_table_md(table, report, comparison, current_provenance(1, "test"));
+  write_gnuplot_script(plot, report, "a.png", "a.svg");
+  for (const std::string& row : {std::string("| hertz (Hertz-consistent plateaus, this project) |"),
+                                 std::string("| gw (elastic: ignores hardness) |")})
+    EXPECT_NE(table.str().find(row), std::string::npos) << row << " in\n" << table.str();
+  EXPECT_NE(plot.str().find("title 'gw (elastic: ignores hardness)'"), std::string::npos) << plot.str();
+  EXPECT_NE(table.str().find("(not converged)"), std::string::npos) << table.str();
+  EXPECT_EQ(unconverged_loads(report.methods[2].curve), (std::vector<std::size_t>{1}));
 }
 
 // The shipped paper scenes at 32 x 32 (BEM at 64 x 64): every method answers at every load (the

@@ -184,6 +184,7 @@ class BemMethod final : public Method {
       iterations.push_back(static_cast<Real>(s.iterations));
       residual.push_back(s.residual);
       converged.push_back(s.converged ? 1 : 0);
+      curve.converged.push_back(s.converged);
       seconds.push_back(s.seconds);
       plastic.push_back(static_cast<Real>(s.plastic_points) / static_cast<Real>(products.points));
     }
@@ -194,6 +195,7 @@ class BemMethod final : public Method {
     if (products.hardness) curve.columns.emplace_back("plastic_fraction", plastic);  // nodes at p = H / all
     if (solve_.extrapolate) extrapolate(products, curve);
     if (nodes_) curve.area_fraction = nodes;
+    curve.area_fraction_nodes = nodes;
     curve.accepts_unconverged = allow_unconverged_;
     BemStage stage = solve_;
     stage.periodic = products.periodic;
@@ -294,11 +296,15 @@ class BemMethod final : public Method {
       fine_iterations.push_back(static_cast<Real>(products.fine_solutions[k].iterations));
       curve.separation[k] = products.fine_solutions[k].separation;
       curve.spots[k] = static_cast<Real>(fine[k].spots);
-      if (!products.fine_solutions[k].converged)
+      if (!products.fine_solutions[k].converged) {
+        curve.converged[k] = false;
         for (auto& [name, values] : curve.columns)
           if (name == "converged") values[k] = 0;
+      }
     }
     curve.area_fraction = extrapolated;
+    curve.area_fraction_error = error;
+    curve.summary_columns = {"area_fraction_extrapolated"};
     curve.columns.emplace_back("area_fraction_nodes_fine", fine_nodes);
     curve.columns.emplace_back("area_fraction_corrected_fine", fine_corrected);
     curve.columns.emplace_back("area_fraction_extrapolated", extrapolated);

@@ -25,12 +25,12 @@ MethodCurve MethodCurve::from(const LoadAreaCurve& curve, const std::vector<Real
   const auto per_load = [&](const std::vector<Real>& values) {
     return values.empty() ? std::vector<Real>(loads.size(), std::nan("")) : values;
   };
-  return {.area_fraction = curve.area_fraction,
-          .separation = per_load(curve.separation),
-          .spots = per_load(curve.spots),
-          .parameters = curve.parameters,
-          .columns = {},
-          .accepts_unconverged = false};
+  MethodCurve answer;
+  answer.area_fraction = curve.area_fraction;
+  answer.separation = per_load(curve.separation);
+  answer.spots = per_load(curve.spots);
+  answer.parameters = curve.parameters;
+  return answer;
 }
 
 }  // namespace contactbench

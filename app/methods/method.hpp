@@ -68,17 +68,28 @@ struct MethodInputs {
   const BemProducts* bem = nullptr;      // when needs().bem
 };
 
-// A method's answer at the scene's loads (the loads themselves live once, in the scene of the report).
+// A method's answer at the scene's loads (the loads themselves live once, in the scene of the report). The
+// comparison, the tables and the plots read only these typed fields; `columns` are the method's own output.
 struct MethodCurve {
   std::vector<Real> area_fraction;  // A/A0: the area the comparison uses (compared_area() says which)
   std::vector<Real> separation;     // [m] from the mean plane of the heights; NaN where the method has none
   std::vector<Real> spots;          // NaN where the method counts none
   std::string parameters;           // the method as run, for the report
-  // The method's own columns beside those above (e.g. the BEM's iterations), one value per load.
-  std::vector<std::pair<std::string, std::vector<Real>>> columns;
-  // Whether loads whose `converged` column is 0 are accepted (the BEM's allow_unconverged = true): the tables
-  // mark them either way, and a run with any exits non-zero unless they are (app/unconverged.hpp).
+  // The node count, contact nodes / all nodes, where the method has it beside its compared area (the tables'
+  // "kappa (nodes ...)"); empty when it has none.
+  std::vector<Real> area_fraction_nodes;
+  // The method's own estimate of the error of area_fraction [A/A0] (the BEM's extrapolation error): the
+  // reference's uncertainty in the tables. Empty when the method has none; NaN at a load without one.
+  std::vector<Real> area_fraction_error;
+  // Whether each load's iteration converged; empty when the method does not iterate. Unconverged loads are
+  // marked in the tables, and a run with any exits non-zero unless the method accepts them (the BEM's
+  // allow_unconverged = true; app/unconverged.hpp).
+  std::vector<bool> converged;
   bool accepts_unconverged = false;
+  // The method's own columns beside those above (e.g. the BEM's iterations), one value per load, and the
+  // names of those summary.json repeats beside its area (the BEM's extrapolated area).
+  std::vector<std::pair<std::string, std::vector<Real>>> columns;
+  std::vector<std::string> summary_columns;
 
   // From a library's curve: checks that it answers at `loads` (Error otherwise) and drops its copy of them.
   static MethodCurve from(const LoadAreaCurve& curve, const std::vector<Real>& loads);
@@ -94,6 +105,9 @@ class Method {
   virtual std::vector<Effect> models() const { return {}; }
   // Which area its A/A0 is, as the tables say (e.g. "area_fraction_corrected: perimeter-corrected nodes").
   virtual std::string compared_area() const = 0;
+  // What the report's tables and plot legend add after its label, in parentheses (e.g. "Hertz-consistent
+  // plateaus, this project" for a variant that is not the paper's); empty: nothing.
+  virtual std::string note() const { return {}; }
 
   // Reads the keys of [methods.<label>] other than `method`; every unknown key and bad value is a problem.
   virtual void read(const Section& keys, const SceneContext& context) = 0;

@@ -13,6 +13,8 @@ namespace {
 class PlateauHertzMethod final : public PlateauMethod {
  public:
   std::string_view name() const override { return "plateau_hertz"; }
+  // Every table and legend says that this is not the paper's model.
+  std::string note() const override { return "Hertz-consistent plateaus, this project"; }
   std::string compared_area() const override {
     // The parameters (theories/plateau_hertz.cpp) and the table's row title already say it is not the
     // paper's model; saying it a third time here only lengthens the line.

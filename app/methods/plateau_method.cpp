@@ -89,6 +89,7 @@ MethodCurve PlateauMethod::evaluate(const MethodInputs& in) const {
   MethodCurve curve = MethodCurve::from(
       plateau_curve_at_loads(in.sweep->sweep, in.sweep->model, in.scene.loads), in.scene.loads);
   curve.parameters += refinement_text();
+  curve.area_fraction_nodes = curve.area_fraction;  // the model's area is the bearing area, a node count
   curve.columns.emplace_back("area_fraction_nodes", curve.area_fraction);
   return curve;
 }
