@@ -136,8 +136,14 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
                         .method = std::string(spec.name()),
                         .compared_area = spec.method->compared_area(),
                         .note = spec.method->note(),
+                        .ignored_effects = {},
                         .curve = {},
                         .seconds = 0};
+    // A method that runs without some of the scene's effects says so wherever its row shows.
+    for (const Effect e : spec.ignored)
+      result.ignored_effects.emplace_back(effect_name(e));
+    if (const std::string mark = ignored_effects_note(spec.ignored); !mark.empty())
+      result.note = result.note.empty() ? mark : result.note + "; " + mark;
     result.seconds = run_stage(report, observer, "evaluate " + spec.label,
                                [&] { result.curve = spec.method->evaluate(inputs); });
     if (needs.moments) result.seconds += moments_seconds;

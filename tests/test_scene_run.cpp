@@ -271,6 +271,35 @@ method = "gw_mccool"
   EXPECT_EQ(unconverged_loads(report.methods[2].curve), (std::vector<std::size_t>{1}));
 }
 
+// A scene with a hardness and a method that ignores it (app/interface.hpp): the method runs elastic, and
+// table.md, summary.json and the plot legend mark its row; the BEM, which models the cap, is unmarked and
+// solves capped.
+TEST(SceneRun, AMethodThatIgnoresAnEffectIsMarkedInEveryOutput) {
+  const SceneReport report = run_text("name = \"plastic\"\n" + kSmallSurface + R"(
+[interface]
+hardness = 2e9
+[methods.bem]
+[methods.persson]
+ignore = ["hardness"]
+)");
+  ASSERT_EQ(report.methods.size(), 2u);
+  EXPECT_EQ(report.methods[0].note, "");
+  EXPECT_NE(report.methods[0].curve.parameters.find("hardness 2e+09 Pa"), std::string::npos);
+  EXPECT_EQ(report.methods[1].note, "elastic: ignores hardness");
+  const Comparison comparison = compare(report);
+  std::ostringstream table, summary, plot;
+  write_table_md(table, report, comparison, current_provenance(1, "test"));
+  write_summary_json(summary, report, comparison, current_provenance(1, "test"));
+  write_gnuplot_script(plot, report, "a.png", "a.svg");
+  EXPECT_NE(table.str().find("| persson (elastic: ignores hardness) |"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("| bem |"), std::string::npos) << table.str();
+  EXPECT_NE(summary.str().find("\"note\": \"elastic: ignores hardness\""), std::string::npos)
+      << summary.str();
+  EXPECT_NE(summary.str().find("\"ignored_effects\": [\"hardness\"]"), std::string::npos) << summary.str();
+  EXPECT_NE(summary.str().find("\"interface\": {"), std::string::npos) << "the scene as understood";
+  EXPECT_NE(plot.str().find("title 'persson (elastic: ignores hardness)'"), std::string::npos) << plot.str();
+}
+
 // The shipped paper scenes at 32 x 32 (BEM at 64 x 64): every method answers at every load (the
 // Hertz-consistent variant up to the load it names), the reference's
 // error is zero, and the three files hold what they promise. Tolerances: none needed, these are structural.
