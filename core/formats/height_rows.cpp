@@ -41,18 +41,9 @@ DataBlock parse_data(const fs::path& path, std::span<const Line> lines, Real sca
     if (promised && block.rows == promised->rows)
       throw InputError(path, line.number, "more data rows than the header's " + promised->rows_name);
     const std::size_t before = block.values.size();
-    const char* position = line.text.data();
-    const char* const end = position + line.text.size();
-    while (position < end) {
-      while (position < end && is_blank(*position))
-        ++position;
-      const char* const start = position;
-      while (position < end && !is_blank(*position))
-        ++position;
-      if (position > start)
-        block.values.push_back(parse_height(
-            path, line.number, std::string_view(start, static_cast<std::size_t>(position - start)), scale));
-    }
+    for_each_token(line.text, is_blank, [&](std::string_view token) {
+      block.values.push_back(parse_height(path, line.number, token, scale));
+    });
     const auto count = static_cast<Index>(block.values.size() - before);
     if (promised && count != promised->cols)
       throw InputError(path, line.number,
