@@ -1,11 +1,15 @@
-// Running the contactbench binary from a test: its exit status and what it printed.
+// Running the contactbench binary from a test: its exit status and what it printed, and the fixture that
+// gives each test its own folder to run it in.
 #pragma once
+
+#include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <sys/wait.h>
 
@@ -23,13 +27,41 @@ inline std::string slurp(const std::filesystem::path& path) {
   return buffer.str();
 }
 
-// `contactbench <arguments>` (shell syntax) with its output captured in `folder`.
-inline CommandResult run_contactbench(const std::string& arguments, const std::filesystem::path& folder) {
-  const auto out = folder / "stdout.txt", err = folder / "stderr.txt";
-  const std::string command =
-      std::string(CB_CLI_PATH) + " " + arguments + " >" + out.string() + " 2>" + err.string() + " </dev/null";
+// `contactbench <arguments>` (shell syntax) with its output captured in `folder`. `environment`: VAR=value
+// assignments for the command (the shell's), or empty. `out`: where standard output goes instead of a file of
+// `folder` (a device, a pipe: it is then not read back), or empty.
+inline CommandResult run_contactbench(const std::string& arguments, const std::filesystem::path& folder,
+                                      const std::string& environment = "", const std::string& out = "") {
+  const auto stdout_file = folder / "stdout.txt", err = folder / "stderr.txt";
+  const std::string target = out.empty() ? stdout_file.string() : out;
+  const std::string command = environment + (environment.empty() ? "" : " ") + std::string(CB_CLI_PATH) +
+                              " " + arguments + " >" + target + " 2>" + err.string() + " </dev/null";
   const int raw = std::system(command.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out.empty() ? slurp(stdout_file) : "", slurp(err)};
 }
+
+// A test with its own empty folder in the temporary directory, removed afterwards, where the program runs.
+// The folder is named after `prefix` and the test: tests of one binary run in parallel under ctest.
+class CliTest : public ::testing::Test {
+ protected:
+  explicit CliTest(std::string prefix) : prefix_(std::move(prefix)) {}
+
+  void SetUp() override {
+    folder_ = std::filesystem::temp_directory_path() /
+              (prefix_ + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::remove_all(folder_);
+    std::filesystem::create_directories(folder_);
+  }
+  void TearDown() override { std::filesystem::remove_all(folder_); }
+
+  CommandResult run(const std::string& arguments, const std::string& environment = "") {
+    return run_contactbench(arguments, folder_, environment);
+  }
+
+  std::filesystem::path folder_;
+
+ private:
+  std::string prefix_;
+};
 
 }  // namespace contactbench::testing
