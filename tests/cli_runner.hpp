@@ -2,16 +2,15 @@
 // gives each test its own folder to run it in.
 #pragma once
 
-#include <gtest/gtest.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <utility>
 
 #include <sys/wait.h>
+
+#include "test_folder.hpp"
 
 namespace contactbench::testing {
 
@@ -40,28 +39,14 @@ inline CommandResult run_contactbench(const std::string& arguments, const std::f
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out.empty() ? slurp(stdout_file) : "", slurp(err)};
 }
 
-// A test with its own empty folder in the temporary directory, removed afterwards, where the program runs.
-// The folder is named after `prefix` and the test: tests of one binary run in parallel under ctest.
-class CliTest : public ::testing::Test {
+// A test with a folder of its own (FolderTest) where the program runs.
+class CliTest : public FolderTest {
  protected:
-  explicit CliTest(std::string prefix) : prefix_(std::move(prefix)) {}
-
-  void SetUp() override {
-    folder_ = std::filesystem::temp_directory_path() /
-              (prefix_ + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    std::filesystem::remove_all(folder_);
-    std::filesystem::create_directories(folder_);
-  }
-  void TearDown() override { std::filesystem::remove_all(folder_); }
+  explicit CliTest(const std::string& prefix) : FolderTest(prefix) {}
 
   CommandResult run(const std::string& arguments, const std::string& environment = "") {
     return run_contactbench(arguments, folder_, environment);
   }
-
-  std::filesystem::path folder_;
-
- private:
-  std::string prefix_;
 };
 
 }  // namespace contactbench::testing

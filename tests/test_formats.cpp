@@ -16,7 +16,6 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 #include <zip.h>
 
 #include "contactbench/core/error.hpp"
@@ -26,6 +25,7 @@
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/topography_io.hpp"
+#include "test_folder.hpp"
 #include "tolerances.hpp"
 
 namespace contactbench {
@@ -109,25 +109,10 @@ TopographyReadOptions with_level(Levelling level) {
   return options;
 }
 
-class FormatFiles : public ::testing::Test {
+class FormatFiles : public testing::FolderTest {
  protected:
-  FormatFiles() {
-    const std::string test_name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    folder_ = fs::temp_directory_path() /
-              ("contactbench_test_formats_" + std::to_string(::getpid()) + "_" + test_name);
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
-  }
-  ~FormatFiles() override {
-    std::error_code ignored;
-    fs::remove_all(folder_, ignored);
-  }
-  fs::path write(const std::string& name, std::string_view content) const {
-    const fs::path path = folder_ / name;
-    std::ofstream out(path, std::ios::binary);
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    return path;
-  }
+  FormatFiles() : FolderTest("contactbench_test_formats_") {}
+
   // A zip archive with the given members, stored uncompressed.
   fs::path write_zip(const std::string& name,
                      const std::vector<std::pair<std::string, std::string>>& members) const {
@@ -142,7 +127,6 @@ class FormatFiles : public ::testing::Test {
     EXPECT_EQ(zip_close(archive), 0);
     return path;
   }
-  fs::path folder_;
 };
 
 // The members of an archive, for building corrupt variants of a good one.

@@ -29,7 +29,6 @@ class OutputSafety : public testing::CliTest {
   OutputSafety() : CliTest("contactbench_output_") {}
 
   void SetUp() override {
-    CliTest::SetUp();
     surface_ = folder_ / "s.txt";
     ASSERT_EQ(cli("generate --sigma 1e-6 --hurst 0.8 --qr 2e5 --size 32e-6 --grid 16 --seed 1 --out " +
                   surface_.string()),
