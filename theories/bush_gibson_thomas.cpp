@@ -20,8 +20,6 @@ namespace {
 constexpr Real pi = std::numbers::pi;
 constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
 
-// Root finding in ln P: 1e-13 absolute is 1e-13 relative in the load (the requirement is 1e-12).
-constexpr Real kLogLoadTolerance = 1e-13;
 // Absolute floor of the bracket width in zeta = d/sqrt(m0).
 constexpr Real kSeparationTolerance = 1e-15;
 // The axis ratio: ln of the curvature ratio to 1e-15 gives (b/a)^2 to about 1e-15.

@@ -19,8 +19,6 @@ namespace {
 constexpr Real pi = std::numbers::pi;
 // McCool (1986) after Nayak (1971): the summit height variance is (1 - 0.8968/alpha) m0.
 constexpr Real kNayakSummitVariance = 0.8968;
-// Root finding in ln P: 1e-13 absolute is 1e-13 relative in the load (the requirement is 1e-12).
-constexpr Real kLogLoadTolerance = 1e-13;
 // Absolute floor of the bracket width in t (the relative floor 4 eps |t| comes first except near t = 0).
 constexpr Real kSeparationTolerance = 1e-15;
 

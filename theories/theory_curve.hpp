@@ -13,6 +13,10 @@
 
 namespace contactbench {
 
+// Theories that solve their separation for each load (GW, BGT) find the root in ln P to this absolute
+// tolerance, which is 1e-13 relative in the load (the requirement is 1e-12).
+inline constexpr Real kLogLoadTolerance = 1e-13;
+
 class TheoryCurve {
  public:
   // Starts the clock: the curve's seconds count from here.
