@@ -2,7 +2,6 @@
 // write-then-read round trips; every kind of bad file refused with a message naming it; invalid points
 // refused by default and filled on request; channels; levelling.
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -25,6 +24,7 @@
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/topography_io.hpp"
+#include "height_bits.hpp"
 #include "test_folder.hpp"
 #include "tolerances.hpp"
 
@@ -268,13 +268,7 @@ TEST(FormatSamples, NetcdfNonSquare) {
 // ---------------------------------------------------------------------------------------------------------
 // Round trips.
 
-std::vector<std::uint64_t> bits_of(const HeightMap& heights) {
-  std::vector<std::uint64_t> bits;
-  for (Index row = 0; row < heights.rows(); ++row)
-    for (Index column = 0; column < heights.cols(); ++column)
-      bits.push_back(std::bit_cast<std::uint64_t>(heights(row, column)));
-  return bits;
-}
+using testing::bits_of;
 
 Surface generated_surface() {
   // Non-square and rectangular pixels, so a transposition cannot go unnoticed.

@@ -2,9 +2,7 @@
 // plain matrices, and one test per kind of bad input.
 #include "contactbench/core/topography_io.hpp"
 
-#include <bit>
 #include <cmath>
-#include <cstdint>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -15,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "contactbench/core/error.hpp"
+#include "height_bits.hpp"
 #include "test_folder.hpp"
 #include "tolerances.hpp"
 
@@ -68,14 +67,7 @@ class TopographyIoFiles : public testing::FolderTest {
   TopographyIoFiles() : FolderTest("contactbench_test_topography_io_") {}
 };
 
-// Bit patterns, so that -0.0 and 0.0 differ and the comparison is truly bit for bit.
-std::vector<std::uint64_t> bits_of(const HeightMap& heights) {
-  std::vector<std::uint64_t> bits;
-  for (Index row = 0; row < heights.rows(); ++row)
-    for (Index column = 0; column < heights.cols(); ++column)
-      bits.push_back(std::bit_cast<std::uint64_t>(heights(row, column)));
-  return bits;
-}
+using testing::bits_of;
 
 TEST(TopographyIoMeasured, InterferometerSquareMatrix2) {
   const Surface surface = read_topography(measured_folder / "matrix-2.txt");
