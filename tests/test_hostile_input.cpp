@@ -43,7 +43,6 @@ class HostileInput : public testing::CliTest {
     write_surface(path, small_surface(height_scale));
     return "'" + path.string() + "'";
   }
-  fs::path folder_;
 };
 
 // Stopped far from the solution (one iteration; the pressure change may be small there, as it was with E* =
