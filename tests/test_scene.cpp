@@ -12,12 +12,12 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "contactbench/app/methods/method.hpp"
 #include "contactbench/app/methods/registry.hpp"
 #include "contactbench/app/scene_keys.hpp"
 #include "contactbench/core/material.hpp"
+#include "test_folder.hpp"
 
 namespace contactbench {
 namespace {
@@ -254,25 +254,9 @@ class JsonChecker {
 };
 
 // Each test that writes files gets a fresh folder of its own.
-class SceneFiles : public ::testing::Test {
+class SceneFiles : public testing::FolderTest {
  protected:
-  SceneFiles() {
-    const std::string test_name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    folder_ = fs::temp_directory_path() /
-              ("contactbench_test_scene_" + std::to_string(::getpid()) + "_" + test_name);
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
-  }
-  ~SceneFiles() override {
-    std::error_code ignored;
-    fs::remove_all(folder_, ignored);
-  }
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path path = folder_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
-  fs::path folder_;
+  SceneFiles() : FolderTest("contactbench_test_scene_") {}
 };
 
 TEST(Scene, FullSceneRoundTrips) {
