@@ -56,6 +56,7 @@ class Unpacker {
  public:
   explicit Unpacker(const std::vector<double>& values) : values_(values) {}
   double number() { return values_.at(next_++); }
+  void settings(BemSettings& settings) { unpack_settings(bem_settings(), values_, next_, settings); }
   Index integer() { return static_cast<Index>(number()); }
   bool flag() { return number() != 0; }
   Grid grid() {
@@ -82,9 +83,7 @@ Topology topology_of(int connectivity, bool periodic) {
 struct BemRequest {
   Grid grid;
   Real estar = 0;
-  Real tolerance = 0;
-  Index max_iterations = 0;
-  SolverKind solver = kDefaultSolver;
+  BemSettings settings;  // its solve settings the distributed solver takes (app/methods/bem_settings.hpp)
   int threads = 1;
   bool write_fields = false;
   std::vector<Real> mean_pressures;
@@ -95,11 +94,10 @@ BemRequest broadcast_request(const BemRequest& request) {
   std::vector<double> packed;
   if (is_root()) {
     pack_grid(packed, request.grid);
-    packed.insert(
-        packed.end(),
-        {request.estar, request.tolerance, static_cast<double>(request.max_iterations),
-         static_cast<double>(static_cast<int>(request.solver)), static_cast<double>(request.threads),
-         request.write_fields ? 1.0 : 0.0, static_cast<double>(request.mean_pressures.size())});
+    packed.push_back(request.estar);
+    pack_settings(bem_settings(), request.settings, packed);
+    packed.insert(packed.end(), {static_cast<double>(request.threads), request.write_fields ? 1.0 : 0.0,
+                                 static_cast<double>(request.mean_pressures.size())});
     packed.insert(packed.end(), request.mean_pressures.begin(), request.mean_pressures.end());
     packed.push_back(static_cast<double>(request.connectivities.size()));
     packed.insert(packed.end(), request.connectivities.begin(), request.connectivities.end());
@@ -109,9 +107,7 @@ BemRequest broadcast_request(const BemRequest& request) {
   BemRequest r;
   r.grid = in.grid();
   r.estar = in.number();
-  r.tolerance = in.number();
-  r.max_iterations = in.integer();
-  r.solver = static_cast<SolverKind>(static_cast<int>(in.integer()));
+  in.settings(r.settings);
   r.threads = static_cast<int>(in.integer());
   r.write_fields = in.flag();
   for (Index k = in.integer(); k > 0; --k)
@@ -131,10 +127,8 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
   const Grid& grid = request.grid;
   const mpi::Slab slab = mpi::slab_of(grid, kWorld);
   const HeightMap local = mpi::scatter_from_root(heights ? *heights : HeightMap(), slab, kWorld);
-  PolonskyKeerOptions options{.tolerance = request.tolerance,
-                              .max_iterations = request.max_iterations,
-                              .warning = warning,
-                              .solver = request.solver};
+  PolonskyKeerOptions options = request.settings.solver;
+  options.warning = warning;
   mpi::DistributedPolonskyKeer solver(grid, local, request.estar, kWorld, options, request.threads);
   SolvedLoads result;
   unsigned long long bytes = solver.bytes();
@@ -237,26 +231,23 @@ class DistributedRunner final : public StageRunner {
   int ranks() const override { return mpi::size_of(kWorld); }
 
   std::string bem_refusal(const BemStage& stage) const override {
+    // What the distributed solver lacks: the interface's effects, and the settings the declaration says
+    // (app/methods/bem_settings.cpp) it does not take.
     std::vector<std::string> missing;
-    if (stage.hardness) missing.push_back("a hardness");
-    if (stage.single_precision) missing.push_back("single precision (float)");
-    const bool solver_distributed =
-        stage.solver == SolverKind::polonsky_keer || stage.solver == SolverKind::preconditioned_cg;
-    if (!solver_distributed)
-      missing.push_back("solver = \"" + std::string(solver_name(stage.solver)) + "\"" +
-                        (stage.solver == kDefaultSolver ? " (the default, when a method names none)" : ""));
+    if (stage.hardness) missing.push_back("a hardness (interface.hardness)");
+    for (const std::string& setting :
+         undistributed_settings(bem_settings(), stage.settings, default_settings(bem_settings())))
+      missing.push_back(setting);
     if (missing.empty()) return "";
+    const bool names_default_solver = stage.settings.solver.solver == kDefaultSolver;
     std::string text = "the BEM stage has no distributed version with ";
     for (std::size_t k = 0; k < missing.size(); ++k)
       text += (k == 0 ? "" : k + 1 == missing.size() ? " and " : ", ") + missing[k];
-    return text + ": run it as one process" +
-           (solver_distributed
-                ? ""
-                : std::string(", or name a distributed solver (solver = \"preconditioned_cg\" or "
-                              "\"polonsky_keer\"; --solver on the command line)")) +
-           (missing.size() > 1 || solver_distributed
-                ? ", or without " + std::string(missing.size() > 1 ? "these" : "it")
-                : std::string()) +
+    if (names_default_solver) text += " (the default solver, when a method names none)";
+    return text + ": run it as one process, or without " + (missing.size() > 1 ? "these" : "it") +
+           (names_default_solver ? " (solver = \"preconditioned_cg\" or \"polonsky_keer\"; --solver on the "
+                                   "command line)"
+                                 : "") +
            " (docs/mpi.md)";
   }
 
@@ -268,9 +259,7 @@ class DistributedRunner final : public StageRunner {
     const RunObserver& observer = context.observer ? *context.observer : quiet;
     BemRequest request{.grid = solved.grid(),
                        .estar = estar,
-                       .tolerance = stage.tolerance,
-                       .max_iterations = stage.max_iterations,
-                       .solver = stage.solver,
+                       .settings = stage.settings,
                        .threads = context.threads,
                        .write_fields = !fields.empty(),
                        .mean_pressures = mean_pressures,

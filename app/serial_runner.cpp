@@ -26,12 +26,9 @@ class SerialRunner final : public StageRunner {
     const RunObserver quiet;
     const RunObserver& observer = context.observer ? *context.observer : quiet;
     const std::string name = stage.name();
-    PolonskyKeerOptions solver_options{.tolerance = stage.tolerance,
-                                       .max_iterations = stage.max_iterations,
-                                       .hardness = stage.hardness,  // absent: purely elastic
-                                       .single_precision = stage.single_precision,
-                                       .warning = [&](const std::string& text) { observer.warn(text); },
-                                       .solver = stage.solver};
+    PolonskyKeerOptions solver_options = stage.settings.solver;
+    solver_options.hardness = stage.hardness;  // absent: purely elastic
+    solver_options.warning = [&](const std::string& text) { observer.warn(text); };
     PolonskyKeer solver(solved, estar, solver_options, context.threads);
     std::map<int, Labeller> labellers;
     for (const int c : connectivities)

@@ -58,16 +58,22 @@ bool SweepStage::same_as(const SweepStage& other) const {
 }
 
 std::string BemStage::name() const {
+  const PolonskyKeerOptions& solver = settings.solver;
   std::ostringstream text;
   text << "bem (";
-  if (refine > 0) text << "refined to " << refine << " x " << refine << ", ";
-  text << solver_name(solver) << ", " << (periodic ? "periodic" : "non-periodic") << ", tolerance "
-       << tolerance;
-  if (single_precision) text << ", single precision";
+  if (settings.refine > 0) text << "refined to " << settings.refine << " x " << settings.refine << ", ";
+  text << solver_name(solver.solver) << ", " << (periodic ? "periodic" : "non-periodic") << ", tolerance "
+       << solver.tolerance;
+  if (solver.single_precision) text << ", single precision";
   if (hardness) text << ", hardness " << *hardness << " Pa";
-  if (extrapolate) text << ", again on twice the points a side for the extrapolated area";
+  if (settings.extrapolate) text << ", again on twice the points a side for the extrapolated area";
   text << ")";
   return text.str();
+}
+
+bool BemStage::operator==(const BemStage& other) const {
+  return periodic == other.periodic && hardness == other.hardness &&
+         same_settings(bem_settings(), SettingScope::solve, settings, other.settings);
 }
 
 SweepProducts run_sweep_stage(const SweepStage& stage, const Surface& surface, const StageContext& context) {
@@ -89,18 +95,19 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
                           const StageContext& context) {
   const auto start = Clock::now();
   BemProducts products;
-  Surface solved = stage.refine > 0 ? refine(surface, stage.refine, stage.refine, context.threads) : surface;
+  const Index refined = stage.settings.refine;
+  Surface solved = refined > 0 ? refine(surface, refined, refined, context.threads) : surface;
   const Index nx = solved.grid().nx, ny = solved.grid().ny;
   if (solved.grid().periodic != stage.periodic) solved = solved.with_periodic(stage.periodic);
   products.points = solved.grid().points();
   products.periodic = stage.periodic;
   products.hardness = stage.hardness;
   SolvedLoads loads = context.runner().solve_loads(stage, solved, estar, mean_pressures, connectivities,
-                                                   stage.fields, context);
+                                                   stage.settings.fields, context);
   products.solutions = std::move(loads.solutions);
   products.statistics = std::move(loads.statistics);
   products.bytes_per_rank = loads.bytes_per_rank;
-  if (stage.extrapolate) {
+  if (stage.settings.extrapolate) {
     // The same surface on twice the points a side (the method's preflight refuses a non-periodic one):
     // refined from the scene's surface, not from the first grid (the same trigonometric interpolation).
     Surface fine = refine(surface, 2 * nx, 2 * ny, context.threads);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "contactbench/app/methods/bem_settings.hpp"
 #include "contactbench/app/run_observer.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
 #include "contactbench/bem/polonsky_keer.hpp"
@@ -35,23 +36,17 @@ struct SweepProducts {
   double seconds = 0;   // refinement + sweep + model
 };
 
-// One BEM solve of every scene load, warm-started in increasing order. Its defaults are the BEM method's
-// (app/methods/bem_method.cpp reads every key into this struct). Methods that differ only in the
-// connectivity of their spot count share it: labelling is not part of the solve.
+// One BEM solve of every scene load, warm-started in increasing order: the solve settings of the BEM
+// method (app/methods/bem_settings.hpp; its method-only settings, e.g. the spot connectivity, left at their
+// defaults, since labelling is not part of the solve and methods differing only there share it), the
+// boundary resolved against the surface, and the interface's hardness as the method runs it.
 struct BemStage {
-  Index refine = 0;  // points a side after Fourier refinement; 0 = the scene's surface as it is
+  BemSettings settings;
   bool periodic = true;
-  Real tolerance = 1e-8;  // relative change of the pressure (bem/polonsky_keer.hpp)
-  Index max_iterations = 20000;
-  std::optional<Real> hardness;        // [Pa]: perfectly plastic pressure cap; absent = purely elastic
-  bool single_precision = false;       // iterate in float (bem/polonsky_keer.hpp)
-  std::string fields;                  // prefix of per-load pressure and gap files; empty: none written
-  SolverKind solver = kDefaultSolver;  // the BEM iteration (bem/solver_registry.hpp, docs/solvers.md)
-  // Solve every load again on the grid of twice the points a side (Fourier-refined, periodic surfaces only),
-  // for the Richardson-extrapolated area and its error estimate (docs/theory.md section 9).
-  bool extrapolate = false;
-  std::string name() const;                                // e.g. "bem (periodic, tolerance 1e-08)"
-  bool operator==(const BemStage& other) const = default;  // methods that ask for equal solves share one
+  std::optional<Real> hardness;  // [Pa]: perfectly plastic pressure cap; absent = purely elastic
+  std::string name() const;      // e.g. "bem (active_set, periodic, tolerance 1e-08)"
+  // Methods that ask for equal solves share one.
+  bool operator==(const BemStage& other) const;
 };
 
 // Per load, the solver's scalars and the contact statistics for each connectivity asked for.

@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 
+#include "contactbench/app/methods/bem_settings.hpp"
 #include "contactbench/app/methods/method.hpp"
 #include "contactbench/app/methods/refine_key.hpp"
 #include "contactbench/app/output.hpp"
@@ -27,19 +28,15 @@ namespace {
 // inside the residual the default tolerance accepts (100 x 1e-8); far beyond it, it is lost.
 constexpr Real kFullContactResolution = 1e6;
 
-// The tolerances a scene or the command line may ask for (read() says why).
-constexpr Real kSmallestTolerance = 1e-13;  // double precision
-constexpr Real kLargestTolerance = 1e-2;
-
 class BemMethod final : public Method {
  public:
   std::string_view name() const override { return "bem"; }
   std::vector<Effect> models() const override { return {Effect::hardness}; }
   std::string compared_area() const override {
-    if (nodes_)
+    if (settings_.node_area)
       return "area_fraction_nodes (contact nodes / all nodes, as a node-based finite-element model reports "
              "it; area = \"nodes\")";
-    if (solve_.extrapolate)
+    if (settings_.extrapolate)
       return "area_fraction_extrapolated (the node counts on the grid and on twice its points a side, "
              "Richardson-extrapolated at order 1; its error estimate is area_fraction_error; docs/theory.md "
              "section 9)";
@@ -47,96 +44,58 @@ class BemMethod final : public Method {
            "Molinari 2017; the node count is area_fraction_nodes)";
   }
 
-  // The schema of [methods.<label>] with method = "bem": one key, one field of BemStage (whose member
-  // initialisers are the defaults).
+  // Its keys are declared once, in app/methods/bem_settings.cpp; read() adds what depends on the scene.
   void read(const Section& s, const SceneContext& context) override {
-    s.reject_unknown({"method", "refine", "tolerance", "max_iterations", "periodic", "hardness", "precision",
-                      "fields", "connectivity", "solver", "extrapolate", "area", "allow_unconverged"});
-    std::vector<std::string_view> solvers(solver_names().begin(), solver_names().end());
-    solve_.solver =
-        solver_kind(s.choice("solver", solvers).value_or(std::string(solver_name(kDefaultSolver))));
-    solve_.refine = read_refine_key(s, context, solve_.refine);
-    const auto precision = s.choice("precision", {"double", "single"});
-    solve_.single_precision = precision == "single";
-    // The tolerances where the criterion means something (docs/solvers.md): above 1e-2 a solve stops far
-    // from the solution (plain Polonsky-Keer at 1e-2 already left a gap of the whole height range on its
-    // contact set, which the residual check then refuses to call converged); below 1e-13 the relative change
-    // of a sum over millions of nodes is round-off, never reliably met. Single precision resolves a relative
-    // change of about 1e-7: its default is the smallest it accepts.
-    const Real smallest = solve_.single_precision ? kSinglePrecisionTolerance : kSmallestTolerance;
-    if (solve_.single_precision) solve_.tolerance = kSinglePrecisionTolerance;
-    solve_.tolerance =
-        s.number("tolerance", false,
-                 {[smallest](Real v) { return v >= smallest && v <= kLargestTolerance; },
-                  solve_.single_precision ? "a number in [1e-06, 0.01] (single precision cannot resolve less)"
-                                          : "a number in [1e-13, 0.01]"})
-            .value_or(solve_.tolerance);
-    solve_.max_iterations = static_cast<Index>(
-        s.integer("max_iterations", false, int_range(1, std::numeric_limits<std::int32_t>::max()))
-            .value_or(solve_.max_iterations));
-    periodic_ = s.boolean("periodic");
+    std::vector<std::string_view> keys{"method", "hardness"};
+    for (const Setting<BemSettings>& row : bem_settings())
+      keys.push_back(row.key);
+    s.reject_unknown(keys);
+    settings_ = default_settings(bem_settings());
+    const std::vector<std::string> given = read_settings(s, bem_settings(), settings_);
+    settings_.refine = read_refine_key(s, context, settings_.refine);
+    // Relative to the scene file's folder, as the surface file is; stored resolved.
+    if (const auto fields = s.string("fields", false, find_setting(bem_settings(), "fields")->accepted))
+      settings_.fields = (context.folder / *fields).lexically_normal().string();
     if (s.has("hardness"))  // the key of earlier versions: an effect of the interface, not of one method
       s.problem("hardness",
                 "the hardness is a property of the interface, for every method, not a key of the BEM",
                 "interface.hardness = <H [Pa]> in the scene's [interface] table");
-    // Relative to the scene file's folder, as the surface file is; stored resolved.
-    if (const auto fields =
-            s.string("fields", false,
-                     "a path prefix for the per-load pressure and gap files (relative: to the "
-                     "scene file's folder)"))
-      solve_.fields = (context.folder / *fields).lexically_normal().string();
-    connectivity_ = static_cast<int>(
-        s.integer("connectivity", false, {[](std::int64_t v) { return v == 4 || v == 8; }, "4, 8"})
-            .value_or(connectivity_));
-    solve_.extrapolate = s.boolean("extrapolate").value_or(solve_.extrapolate);
-    // An unconverged load makes the run exit non-zero (its results written and marked) unless this says the
-    // scene accepts them (a deliberate iteration cap, e.g. to time a fixed number of iterations).
-    allow_unconverged_ = s.boolean("allow_unconverged").value_or(false);
-    nodes_ = s.choice("area", {"corrected", "nodes"}).value_or("corrected") == "nodes";
-    if (nodes_ && solve_.extrapolate)
-      s.problem("area", "area = \"nodes\" and extrapolate = true ask for two different compared areas",
-                "area = \"corrected\" (the default) with extrapolate = true, or extrapolate = false");
+    finish_bem_settings(settings_, given,
+                        [&](const std::string& key, const std::string& reason, const std::string& accepted) {
+                          s.problem(key, reason, accepted);
+                        });
   }
 
-  void write(SceneKeys& keys) const override {
-    keys.put("refine", std::int64_t{solve_.refine});
-    keys.put("tolerance", solve_.tolerance);
-    keys.put("max_iterations", std::int64_t{solve_.max_iterations});
-    if (periodic_) keys.put("periodic", *periodic_);
-    keys.put("precision", solve_.single_precision ? "single" : "double");
-    if (!solve_.fields.empty()) keys.put("fields", solve_.fields);
-    keys.put("connectivity", std::int64_t{connectivity_});
-    keys.put("solver", std::string(solver_name(solve_.solver)));
-    keys.put("extrapolate", solve_.extrapolate);
-    keys.put("area", nodes_ ? "nodes" : "corrected");
-    keys.put("allow_unconverged", allow_unconverged_);
-  }
+  void write(SceneKeys& keys) const override { write_settings(keys, bem_settings(), settings_); }
 
   MethodNeeds needs(const SceneContext& context) const override {
-    BemStage stage = solve_;
-    stage.periodic = periodic_.value_or(context.surface_periodic);
+    BemStage stage;
+    stage.settings = default_settings(bem_settings());
+    copy_settings(bem_settings(), SettingScope::solve, settings_, stage.settings);
+    stage.periodic = settings_.periodic.value_or(context.surface_periodic);
     stage.hardness = context.interface.hardness;  // absent, or ignored: purely elastic
-    return {.moments = false, .sweep = std::nullopt, .bem = stage, .bem_connectivity = connectivity_};
+    return {
+        .moments = false, .sweep = std::nullopt, .bem = stage, .bem_connectivity = settings_.connectivity};
   }
 
   void preflight(const MethodCheck& check) const override {
-    if (!solve_.fields.empty()) {
+    if (!settings_.fields.empty()) {
       // Field files are never written over a device, a link or a folder (app/output.hpp).
       try {
-        check_output_prefix(solve_.fields, "fields");
+        check_output_prefix(settings_.fields, "fields");
         for (std::size_t k = 0; k < check.scene.loads.size(); ++k)
           for (const char* field : {"pressure", "gap"})
-            check_replaceable_file(field_path(solve_.fields, k + 1, field));
+            check_replaceable_file(field_path(settings_.fields, k + 1, field));
       } catch (const Error& e) {
         check.problem("fields", e.what(), "a prefix of new or regular files in an existing folder");
       }
     }
-    check_refine_key(check, solve_.refine);
+    check_refine_key(check, settings_.refine);
     check_magnitudes(check);
-    if (solve_.extrapolate) {
+    if (settings_.extrapolate) {
       const Grid& grid = check.surface.grid();
-      const Index nx = solve_.refine > 0 ? solve_.refine : grid.nx;
-      const Index ny = solve_.refine > 0 ? solve_.refine : grid.ny;
+      const Index nx = settings_.refine > 0 ? settings_.refine : grid.nx;
+      const Index ny = settings_.refine > 0 ? settings_.refine : grid.ny;
       if (!grid.periodic)
         check.problem("extrapolate",
                       "the second solve, on twice the points a side, needs Fourier refinement, which needs a "
@@ -168,7 +127,7 @@ class BemMethod final : public Method {
 
   MethodCurve evaluate(const MethodInputs& in) const override {
     const BemProducts& products = *in.bem;
-    const std::vector<ContactStatistics>& stats = products.statistics.at(connectivity_);
+    const std::vector<ContactStatistics>& stats = products.statistics.at(settings_.connectivity);
     MethodCurve curve;
     std::vector<Real> nodes, corrected, mean_gap, max_pressure, iterations, residual, converged, seconds,
         plastic;
@@ -193,19 +152,18 @@ class BemMethod final : public Method {
                      {"iterations", iterations},     {"residual", residual},
                      {"converged", converged},       {"solve_seconds", seconds}};
     if (products.hardness) curve.columns.emplace_back("plastic_fraction", plastic);  // nodes at p = H / all
-    if (solve_.extrapolate) extrapolate(products, curve);
-    if (nodes_) curve.area_fraction = nodes;
+    if (settings_.extrapolate) extrapolate(products, curve);
+    if (settings_.node_area) curve.area_fraction = nodes;
     curve.area_fraction_nodes = nodes;
-    curve.accepts_unconverged = allow_unconverged_;
-    BemStage stage = solve_;
-    stage.periodic = products.periodic;
-    stage.hardness = products.hardness;
+    curve.accepts_unconverged = settings_.allow_unconverged;
+    BemStage stage{.settings = settings_, .periodic = products.periodic, .hardness = products.hardness};
     curve.parameters =
         "BEM " + stage.name().substr(4) +
-        (solve_.extrapolate ? std::string(", perimeter-corrected area in area_fraction_corrected")
-                            : std::string(", area perimeter-corrected")) +
-        " (node count in area_fraction_nodes), spots by " + std::to_string(connectivity_) + "-connectivity";
-    if (solve_.extrapolate)
+        (settings_.extrapolate ? std::string(", perimeter-corrected area in area_fraction_corrected")
+                               : std::string(", area perimeter-corrected")) +
+        " (node count in area_fraction_nodes), spots by " + std::to_string(settings_.connectivity) +
+        "-connectivity";
+    if (settings_.extrapolate)
       curve.parameters += "; area Richardson-extrapolated (order 1) from the node counts on " +
                           std::to_string(products.points) + " and " + std::to_string(products.fine_points) +
                           " nodes, error estimate |extrapolated - corrected area of the finer grid| "
@@ -224,13 +182,14 @@ class BemMethod final : public Method {
   // loads again on 4 times the points, after the first grid is freed: the finer solve is the peak.
   void check_memory(const MethodCheck& check) const {
     const Grid& grid = check.surface.grid();
-    const Index nx = solve_.refine > 0 ? solve_.refine : grid.nx;
-    const Index ny = solve_.refine > 0 ? solve_.refine : grid.ny;
-    const Index side = solve_.extrapolate ? 2 : 1;
-    const bool periodic = periodic_.value_or(grid.periodic);
-    std::uintmax_t per_point = solve_.single_precision ? (periodic ? 115 : 135) : (periodic ? 150 : 175);
-    if (solve_.solver == SolverKind::active_set)
-      per_point += solve_.single_precision ? (periodic ? 56 : 66) : (periodic ? 94 : 119);
+    const Index nx = settings_.refine > 0 ? settings_.refine : grid.nx;
+    const Index ny = settings_.refine > 0 ? settings_.refine : grid.ny;
+    const Index side = settings_.extrapolate ? 2 : 1;
+    const bool periodic = settings_.periodic.value_or(grid.periodic);
+    std::uintmax_t per_point =
+        settings_.solver.single_precision ? (periodic ? 115 : 135) : (periodic ? 150 : 175);
+    if (settings_.solver.solver == SolverKind::active_set)
+      per_point += settings_.solver.single_precision ? (periodic ? 56 : 66) : (periodic ? 94 : 119);
     const std::uintmax_t points =
         saturating_product(static_cast<std::uintmax_t>(side * nx), static_cast<std::uintmax_t>(side * ny));
     try {
@@ -239,7 +198,7 @@ class BemMethod final : public Method {
           "the BEM solve on " + std::to_string(side * nx) + " x " + std::to_string(side * ny) + " points");
     } catch (const Error& e) {
       check.problem(
-          solve_.refine > 0 ? "refine" : "", e.what(),
+          settings_.refine > 0 ? "refine" : "", e.what(),
           "a solve that fits: fewer points (refine), extrapolate = false or precision = \"single\"");
     }
   }
@@ -282,8 +241,8 @@ class BemMethod final : public Method {
   // estimated by the distance to an independent estimate of the same continuum area, the perimeter-corrected
   // area of the finer grid.
   void extrapolate(const BemProducts& products, MethodCurve& curve) const {
-    const std::vector<ContactStatistics>& coarse = products.statistics.at(connectivity_);
-    const std::vector<ContactStatistics>& fine = products.fine_statistics.at(connectivity_);
+    const std::vector<ContactStatistics>& coarse = products.statistics.at(settings_.connectivity);
+    const std::vector<ContactStatistics>& fine = products.fine_statistics.at(settings_.connectivity);
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     std::vector<Real> fine_nodes, fine_corrected, extrapolated, error, fine_iterations;
     for (std::size_t k = 0; k < coarse.size(); ++k) {
@@ -313,11 +272,7 @@ class BemMethod final : public Method {
   }
 
  private:
-  BemStage solve_;                // every solver key; periodic resolved against the surface in needs()
-  std::optional<bool> periodic_;  // default: the surface's own periodicity
-  int connectivity_ = 4;          // for counting contact spots
-  bool nodes_ = false;            // area = "nodes": compared by the node count (a node-based FE model's area)
-  bool allow_unconverged_ = false;  // allow_unconverged = true: unconverged loads marked, the run exits 0
+  BemSettings settings_ = default_settings(bem_settings());  // every key, as read
 };
 
 }  // namespace

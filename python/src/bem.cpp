@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "contactbench/app/methods/bem_settings.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
 #include "contactbench/bem/polonsky_keer.hpp"
 #include "contactbench/bem/solver_registry.hpp"
@@ -20,40 +21,67 @@ namespace contactbench::python {
 
 namespace {
 
-// The CLI's default tolerance (`contactbench bem`), so that the same call gives the CLI's numbers.
-constexpr Real kDefaultTolerance = 1e-8;
-
 struct BemResult {
   ContactSolution solution;
   ContactStatistics statistics;
   Real modulus = 0;  // E* [Pa]
 };
 
+// The keyword arguments of BemSolver are the scene keys of the BEM method that a solver object takes
+// (app/methods/bem_settings.cpp, the rows marked python), checked as a scene's: same defaults, same ranges.
+BemSettings settings_of(const py::kwargs& keywords) {
+  BemSettings settings = default_settings(bem_settings());
+  std::vector<std::string> given;
+  std::string accepted;
+  for (const Setting<BemSettings>& row : bem_settings())
+    if (row.python) accepted += (accepted.empty() ? "" : ", ") + row.key;
+  for (const auto& [name, value] : keywords) {
+    const std::string key = py::str(name);
+    const Setting<BemSettings>* row = find_setting(bem_settings(), key);
+    if (!row || !row->python)
+      throw Error("BemSolver: unknown keyword " + key + "; accepted: " + accepted + ", hardness, threads");
+    if (value.is_none()) continue;  // the default
+    SettingValue typed;
+    if (py::isinstance<py::bool_>(value))  // before int: a bool is an int in Python
+      typed = value.cast<bool>();
+    else if (py::isinstance<py::int_>(value))
+      typed = value.cast<std::int64_t>();
+    else if (py::isinstance<py::float_>(value))
+      typed = value.cast<double>();
+    else if (py::isinstance<py::str>(value))
+      typed = value.cast<std::string>();
+    else
+      throw Error(key + ": wrong type: expected " + kind_text(row->kind) + ", got " +
+                  std::string(py::str(py::type::of(value).attr("__name__"))));
+    row->set(settings, checked_setting(spec_of(*row), typed, key));
+    given.push_back(key);
+  }
+  finish_bem_settings(
+      settings, given,
+      [](const std::string& key, const std::string& reason, const std::string& accepted_values) {
+        throw Error(key + ": " + reason + "; accepted: " + accepted_values);
+      });
+  return settings;
+}
+
 class BemSolver {
  public:
-  BemSolver(const Surface& surface, Real modulus, std::optional<Real> tolerance, Index max_iterations,
-            std::optional<Real> hardness, bool single_precision, std::optional<bool> periodic,
-            int connectivity, const std::string& solver, int threads)
+  BemSolver(const Surface& surface, Real modulus, std::optional<Real> hardness, int threads,
+            const BemSettings& settings)
       : modulus_(modulus),
-        labeller_(Topology::for_surface(connectivity == 8 ? Connectivity::eight : Connectivity::four,
-                                        periodic.value_or(surface.grid().periodic)),
+        labeller_(Topology::for_surface(settings.connectivity == 8 ? Connectivity::eight : Connectivity::four,
+                                        settings.periodic.value_or(surface.grid().periodic)),
                   checked_threads(threads)) {
     if (!(std::isfinite(modulus) && modulus > 0))
       throw Error("modulus: E* must be finite and > 0 Pa, got " + std::to_string(modulus));
-    if (connectivity != 4 && connectivity != 8)
-      throw Error("connectivity: accepted values are 4 or 8, got " + std::to_string(connectivity));
-    options_ = {
-        .tolerance = tolerance.value_or(single_precision ? kSinglePrecisionTolerance : kDefaultTolerance),
-        .max_iterations = max_iterations,
-        .hardness = hardness,
-        .single_precision = single_precision,
-        .solver = solver_kind(solver, "solver")};
+    options_ = settings.solver;
+    options_.hardness = hardness;
     // Ctrl-C between iterations: a microsecond's check of Python's signal flag per iteration.
     options_.between_iterations = [] {
       py::gil_scoped_acquire locked;
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-    };  // bem/solver_registry.hpp: unknown names list the known
-    const Surface solved = periodic ? surface.with_periodic(*periodic) : surface;
+    };
+    const Surface solved = settings.periodic ? surface.with_periodic(*settings.periodic) : surface;
     solver_ = std::make_unique<PolonskyKeer>(solved, modulus, options_, threads);
   }
 
@@ -89,9 +117,34 @@ BemResult unlocked(Call&& call) {
   return call();
 }
 
+// The signature and its keywords, from the declaration: each with its default and meaning.
+std::string bem_keywords_doc() {
+  std::string text = "BemSolver(surface, modulus, *, hardness=None, threads=1";
+  std::string lines;
+  for (const Setting<BemSettings>& row : bem_settings()) {
+    if (!row.python) continue;
+    const SettingSpec spec = spec_of(row);
+    text += ", " + row.key + "=...";
+    lines += "  " + row.key + ": " + row.doc + (row.unit.empty() ? "" : " [" + row.unit + "]") +
+             "; default " + spec.default_text + "; accepted " +
+             (row.accepted.empty() ? kind_text(row.kind) : row.accepted) + "\n";
+  }
+  return text +
+         ")\n  modulus: E* [Pa]; hardness: the interface's perfectly plastic cap H [Pa] (None: elastic); "
+         "threads: for the FFTs.\n" +
+         lines;
+}
+
 }  // namespace
 
 void register_bem(py::module_& m) {
+  static const std::string solver_doc =
+      "The boundary-element ground truth (Polonsky & Keer 1999; docs/theory.md section 6): a rigid flat on "
+      "the "
+      "rough surface, elastic half-space of contact modulus E* [Pa]. Successive solves are warm-started: "
+      "solve "
+      "increasing loads in order.\n\n" +
+      bem_keywords_doc();
   py::class_<BemResult>(m, "BemResult",
                         "One boundary-element solution: the fields as read-only (ny, nx) float64 views (no "
                         "copy; rows = y like the surface's heights) and what they say about the contact.")
@@ -149,25 +202,13 @@ void register_bem(py::module_& m) {
       .def_property_readonly(
           "seconds", [](const BemResult& r) { return r.solution.seconds; }, "wall time [s]");
 
-  py::class_<BemSolver>(
-      m, "BemSolver",
-      "The boundary-element ground truth (Polonsky & Keer 1999; docs/theory.md section 6): a rigid flat on "
-      "the "
-      "rough surface, elastic half-space of contact modulus E* [Pa]. Successive solves are warm-started: "
-      "solve "
-      "increasing loads in order.\n\n"
-      "BemSolver(surface, modulus, *, tolerance=None, max_iterations=20000, hardness=None, "
-      "single_precision=False, periodic=None, connectivity=4, threads=1)\n"
-      "  modulus: E* [Pa]; tolerance: on the relative change of the pressure (default 1e-8 as the CLI, 1e-6 "
-      "with single_precision); hardness: perfectly plastic cap H [Pa]; single_precision: the CLI's --float; "
-      "periodic: the half-space (default: the surface's own periodicity); connectivity 4 or 8 for the spot "
-      "count; threads for the FFTs.")
-      .def(py::init<const Surface&, Real, std::optional<Real>, Index, std::optional<Real>, bool,
-                    std::optional<bool>, int, const std::string&, int>(),
-           py::arg("surface"), py::arg("modulus"), py::kw_only(), py::arg("tolerance") = py::none(),
-           py::arg("max_iterations") = 20000, py::arg("hardness") = py::none(),
-           py::arg("single_precision") = false, py::arg("periodic") = py::none(), py::arg("connectivity") = 4,
-           py::arg("solver") = std::string(solver_name(kDefaultSolver)), py::arg("threads") = 1)
+  py::class_<BemSolver>(m, "BemSolver", solver_doc.c_str())
+      .def(py::init([](const Surface& surface, Real modulus, std::optional<Real> hardness, int threads,
+                       const py::kwargs& keywords) {
+             return std::make_unique<BemSolver>(surface, modulus, hardness, threads, settings_of(keywords));
+           }),
+           py::arg("surface"), py::arg("modulus"), py::kw_only(), py::arg("hardness") = py::none(),
+           py::arg("threads") = 1)
       .def(
           "solve",
           [](BemSolver& s, Real mean_pressure) { return unlocked([&] { return s.solve(mean_pressure); }); },
@@ -206,8 +247,12 @@ void register_bem(py::module_& m) {
           "on the relative change of the pressure [-]")
       .def_property_readonly(
           "hardness", [](const BemSolver& s) { return s.options().hardness; }, "H [Pa] or None")
-      .def_property_readonly("single_precision",
-                             [](const BemSolver& s) { return s.options().single_precision; })
+      .def_property_readonly(
+          "precision", [](const BemSolver& s) { return s.options().single_precision ? "single" : "double"; },
+          "\"double\" or \"single\"")
+      .def_property_readonly(
+          "solver", [](const BemSolver& s) { return std::string(solver_name(s.options().solver)); },
+          "the BEM iteration")
       .def_property_readonly("surface", &BemSolver::surface, "the surface solved (centred: mean removed)");
 }
 

@@ -56,7 +56,17 @@ def test_bad_sizes_and_parameters():
     with pytest.raises(ValueError, match="ascending"):
         cb.BemSolver(surface(), 1e11).solve_loads([0.02, 0.01])
     with pytest.raises(ValueError, match="single precision"):
-        cb.BemSolver(surface(), 1e11, tolerance=1e-9, single_precision=True)
+        cb.BemSolver(surface(), 1e11, tolerance=1e-9, precision="single")
+    # The keywords are the scene's (app/methods/bem_settings.cpp), checked as a scene's are: a tolerance that
+    # would stop far from the solution is refused, not passed off as converged.
+    with pytest.raises(ValueError, match=r"tolerance: out of range: got 1; accepted: a number in \[1e-13, 0.01\]"):
+        cb.BemSolver(surface(), 1e11, tolerance=1.0)
+    with pytest.raises(ValueError, match="unknown keyword single_precision; accepted: tolerance"):
+        cb.BemSolver(surface(), 1e11, single_precision=True)
+    with pytest.raises(ValueError, match="solver: unknown choice \"multigrid\""):
+        cb.BemSolver(surface(), 1e11, solver="multigrid")
+    with pytest.raises(ValueError, match="max_iterations: wrong type"):
+        cb.BemSolver(surface(), 1e11, max_iterations=2.5)
     with pytest.raises(ValueError):
         cb.persson_curve(surface().moments(), [0.02, 0.01])
 

@@ -127,7 +127,7 @@ with tempfile.TemporaryDirectory() as work:
     for arguments, reason in ((["bem", surface, "--loads", "1e-3", "--solver", "active_set"], "no distributed version"),
                               (["bem", surface, "--loads", "1e-3"], 'solver = "active_set" (the default'),
                               (["run", default_scene, "--out", os.path.join(work, "refused")], 'solver = "active_set" (the default'),
-                              (["bem", surface, "--loads", "1e-3", "--float"], "single precision"),
+                              (["bem", surface, "--loads", "1e-3", "--float", "--solver", "preconditioned_cg"], 'precision = "single"'),
                               (["stats", surface], "has no distributed stages")):
         done = run(arguments, distributed=True, expect_status=1)
         if reason not in done.stderr:

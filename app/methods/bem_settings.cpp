@@ -1,0 +1,183 @@
+#include "contactbench/app/methods/bem_settings.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+#include "contactbench/app/scene_toml.hpp"
+#include "contactbench/bem/solver_registry.hpp"
+
+namespace contactbench {
+
+namespace {
+
+using Row = Setting<BemSettings>;
+
+SettingTable<BemSettings> make_table() {
+  const std::string max_points = std::to_string(kMaxPointsASide);
+  SettingTable<BemSettings> table;
+  table.push_back(bind(
+      Row{.key = "refine",
+          .kind = SettingKind::integer,
+          .accepted = "0, or [points a side of the surface, " + max_points + "]",
+          .default_value = std::int64_t{0},
+          .doc = "points a side the BEM solves on (Fourier refinement); 0 = the surface as given",
+          .flag = {},
+          .distributed = true,
+          .owner_reads = true},
+      [](BemSettings & s) -> auto& { return s.refine; }));
+  table.push_back(bind(
+      Row{.key = "tolerance",
+          .kind = SettingKind::number,
+          .accepted = "a number in [1e-13, 0.01]",
+          .default_value = kDefaultTolerance,
+          .default_text = "1e-8 (1e-6 in single precision)",
+          .doc =
+              "relative change of the pressure that ends the iteration (outside that range the criterion "
+              "means "
+              "nothing: looser stops far from the solution, tighter is round-off); converged also needs the "
+              "gap "
+              "left on the contact set within 100 x the tolerance of the height range (docs/solvers.md); in "
+              "single precision at least 1e-6",
+          .flag = {"--tolerance"},
+          .python = true,
+          .distributed = true,
+          .ok = in_range(kSmallestTolerance, kLargestTolerance)},
+      [](BemSettings & s) -> auto& { return s.solver.tolerance; }));
+  table.push_back(bind(
+      Row{.key = "max_iterations",
+          .kind = SettingKind::integer,
+          .accepted = "an integer in [1, 2147483647]",
+          .default_value = std::int64_t{20000},
+          .doc = "iteration limit per load",
+          .flag = {"--max-iterations"},
+          .python = true,
+          .distributed = true,
+          .ok = in_range(1, std::numeric_limits<std::int32_t>::max())},
+      [](BemSettings & s) -> auto& { return s.solver.max_iterations; }));
+  table.push_back(bind(
+      Row{.key = "periodic",
+          .kind = SettingKind::boolean,
+          .default_text = "the surface's",
+          .doc = "solve the periodic or the non-periodic problem",
+          .flag = {"--non-periodic", false},
+          .python = true,
+          .distributed = true},
+      [](BemSettings & s) -> auto& { return s.periodic; }));
+  table.push_back(bind_choice(
+      Row{.key = "precision",
+          .kind = SettingKind::choice,
+          .accepted = "`\"double\"`, `\"single\"`",
+          .default_value = std::string("double"),
+          .doc = "iterate in single precision (half the memory; `tolerance` then >= 1e-6, its default)",
+          .flag = {"--float", std::string("single")},
+          .python = true,
+          .choices = {"double", "single"}},
+      [](BemSettings & s) -> auto& { return s.solver.single_precision; }));
+  table.push_back(bind(
+      Row{.key = "fields",
+          .kind = SettingKind::text,
+          .accepted = "a path prefix (relative: to the scene file's folder)",
+          .default_text = "none",
+          .doc =
+              "write the pressure [Pa] and gap [m] of the k-th load to `<prefix>_load<k>_pressure.txt` and "
+              "`_gap.txt`",
+          .flag = {"--fields"},
+          .distributed = true,
+          .owner_reads = true},
+      [](BemSettings & s) -> auto& { return s.fields; }));
+  table.push_back(bind(
+      Row{.key = "connectivity",
+          .kind = SettingKind::integer,
+          .scope = SettingScope::method,
+          .accepted = "4, 8",
+          .default_value = std::int64_t{4},
+          .doc = "neighbours that join contact points into one spot",
+          .flag = {"--connectivity"},
+          .python = true,
+          .ok =
+              [](const SettingValue& v) {
+                return std::get<std::int64_t>(v) == 4 || std::get<std::int64_t>(v) == 8;
+              }},
+      [](BemSettings & s) -> auto& { return s.connectivity; }));
+  table.push_back(bind_choice(
+      Row{.key = "solver",
+          .kind = SettingKind::choice,
+          .accepted = "`\"polonsky_keer\"`, `\"preconditioned_cg\"`, `\"active_set\"`",
+          .default_value = std::string(solver_name(kDefaultSolver)),
+          .doc = "the BEM iteration (docs/solvers.md): Polonsky & Keer's, the same Fourier-preconditioned, "
+                 "or the "
+                 "active-set method; the distributed solver has the first two",
+          .flag = {"--solver"},
+          .python = true,
+          .distributed_choices = {"polonsky_keer", "preconditioned_cg"},
+          .choices = solver_names()},
+      [](BemSettings & s) -> auto& { return s.solver.solver; }));
+  table.push_back(bind(
+      Row{.key = "extrapolate",
+          .kind = SettingKind::boolean,
+          .default_value = false,
+          .doc =
+              "solve every load again on twice the points a side (Fourier-refined; periodic surfaces only, "
+              "refused before any stage otherwise) and compare by the Richardson-extrapolated area "
+              "`area_fraction_extrapolated` = 2 N(2n) - N(n) of the node counts N, with the error estimate "
+              "`area_fraction_error` = its distance to the finer grid's perimeter-corrected area "
+              "(docs/theory.md "
+              "section 9); the table shows it as the reference's own uncertainty. Costs about 5 times the "
+              "single solve",
+          .distributed = true},
+      [](BemSettings & s) -> auto& { return s.extrapolate; }));
+  table.push_back(bind_choice(
+      Row{.key = "area",
+          .kind = SettingKind::choice,
+          .scope = SettingScope::method,
+          .accepted = "`\"corrected\"`, `\"nodes\"`",
+          .default_value = std::string("corrected"),
+          .doc =
+              "the area the comparison uses: perimeter-corrected, or the plain node count (what a node-based "
+              "finite-element model at that resolution reports; the paper's comparison as made, "
+              "results/studies/paper_faithful). Not with `extrapolate = true`",
+          .choices = {"corrected", "nodes"}},
+      [](BemSettings & s) -> auto& { return s.node_area; }));
+  table.push_back(bind(
+      Row{.key = "allow_unconverged",
+          .kind = SettingKind::boolean,
+          .scope = SettingScope::method,
+          .default_value = false,
+          .doc = "a load that did not converge (its `converged` column 0, marked \"not converged\" in "
+                 "table.md and "
+                 "listed in summary.json's `unconverged_loads`) makes the run exit with status 3 after "
+                 "writing its "
+                 "results; true accepts it (exit 0, still marked), e.g. to time a fixed number of iterations",
+          .flag = {"--allow-unconverged", true}},
+      [](BemSettings & s) -> auto& { return s.allow_unconverged; }));
+  return table;
+}
+
+}  // namespace
+
+const SettingTable<BemSettings>& bem_settings() {
+  static const SettingTable<BemSettings> table = make_table();
+  return table;
+}
+
+void finish_bem_settings(
+    BemSettings& settings, const std::vector<std::string>& given,
+    const std::function<void(const std::string&, const std::string&, const std::string&)>& problem) {
+  const auto was_given = [&](const char* key) {
+    return std::find(given.begin(), given.end(), key) != given.end();
+  };
+  if (settings.solver.single_precision) {
+    // Single precision resolves a relative change of about 1e-7: its default is the least it accepts.
+    if (!was_given("tolerance"))
+      settings.solver.tolerance = kSinglePrecisionTolerance;
+    else if (settings.solver.tolerance < kSinglePrecisionTolerance)
+      problem("tolerance", "out of range: got " + exact_number(settings.solver.tolerance),
+              "a number in [1e-06, 0.01] (single precision cannot resolve less)");
+  }
+  if (settings.node_area && settings.extrapolate)
+    problem("area", "area = \"nodes\" and extrapolate = true ask for two different compared areas",
+            "area = \"corrected\" (the default) with extrapolate = true, or extrapolate = false");
+}
+
+}  // namespace contactbench

@@ -1,0 +1,44 @@
+// Every key of a [methods.<label>] table with method = "bem", declared once (app/settings.hpp): the scene
+// reader and writer, `contactbench bem`'s flags, the Python BemSolver's keywords, the MPI packing and the key
+// table of scenes/README.md all come from bem_settings(). The solver's own options are PolonskyKeer's
+// (bem/polonsky_keer.hpp), reached through the rows, not copied. Adding a BEM option: a field of the solver's
+// options (or of BemSettings for one of the method), one row below, and its line in scenes/README.md.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "contactbench/app/settings.hpp"
+#include "contactbench/bem/polonsky_keer.hpp"
+
+namespace contactbench {
+
+struct BemSettings {
+  Index refine = 0;              // points a side after Fourier refinement; 0: the scene's surface as it is
+  std::optional<bool> periodic;  // none: the surface's own periodicity
+  PolonskyKeerOptions solver =
+      {};                    // tolerance, iteration cap, precision, iteration (hardness: the interface's)
+  std::string fields;        // prefix of per-load pressure and gap files; empty: none written
+  bool extrapolate = false;  // solve again on twice the points a side (docs/theory.md section 9)
+  int connectivity = 4;      // for counting contact spots
+  bool node_area = false;    // area = "nodes": compared by the node count (a node-based FE model's area)
+  bool allow_unconverged = false;  // unconverged loads marked, the run exits 0
+};
+
+const SettingTable<BemSettings>& bem_settings();
+
+// The tolerances a scene, the command line or Python may ask for: in double precision [1e-13, 1e-2] (above,
+// a solve stops far from the solution; below, the relative change of a sum over millions of nodes is
+// round-off); in single precision from kSinglePrecisionTolerance, also its default.
+inline constexpr Real kSmallestTolerance = 1e-13;
+inline constexpr Real kLargestTolerance = 1e-2;
+inline constexpr Real kDefaultTolerance = 1e-8;
+
+// The rules between keys, after every key is read: the tolerance's default and least value in single
+// precision, area = "nodes" with extrapolate. `given` lists the keys set explicitly; each problem goes to
+// `problem(key, reason, accepted)`.
+void finish_bem_settings(
+    BemSettings& settings, const std::vector<std::string>& given,
+    const std::function<void(const std::string&, const std::string&, const std::string&)>& problem);
+
+}  // namespace contactbench
