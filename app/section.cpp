@@ -1,53 +1,10 @@
-#include "contactbench/app/scene_toml.hpp"
+#include "contactbench/app/section.hpp"
 
 #include <algorithm>
-#include <charconv>
-#include <cmath>
+
+#include "contactbench/app/scene_text.hpp"
 
 namespace contactbench {
-
-std::string exact_number(Real value) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
-
-std::string join(const std::vector<std::string>& items) {
-  std::string text;
-  for (const auto& item : items)
-    text.append(text.empty() ? "" : ", ").append(item);
-  return text;
-}
-
-bool portable_name(std::string_view name, bool allow_dot) {
-  if (name.empty() || name == "." || name == "..") return false;
-  return std::all_of(name.begin(), name.end(), [allow_dot](char c) {
-    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
-           c == '-' || (allow_dot && c == '.');
-  });
-}
-
-void Problems::add(long line, std::string_view path, std::string_view reason, std::string_view accepted) {
-  std::string text = origin_;
-  if (line > 0) text.append(":").append(std::to_string(line));
-  text.append(": ").append(path).append(": ").append(reason);
-  if (!accepted.empty()) text.append("; accepted: ").append(accepted);
-  lines_.push_back(std::move(text));
-}
-
-void Problems::add_syntax_error(long line, long column, std::string_view reason) {
-  lines_.push_back(origin_ + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                   ": TOML syntax error: " + std::string(reason));
-}
-
-void Problems::throw_if_any() const {
-  if (lines_.empty()) return;
-  std::string message = "invalid scene " + origin_ + " (" + std::to_string(lines_.size()) +
-                        (lines_.size() == 1 ? " problem):" : " problems):");
-  for (const auto& line : lines_)
-    message.append("\n").append(line);
-  throw SceneError(message, lines_);
-}
 
 Rule<Real> positive(std::string_view unit) {
   return {[](Real v) { return std::isfinite(v) && v > 0; }, "a finite number > 0 " + std::string(unit)};

@@ -1,0 +1,114 @@
+#!/usr/bin/python3
+"""Runs scenes with two contactbench binaries and compares what they write, row by row.
+
+For a change that should alter no number (a redesign): every scene's curves.csv and table.md from the old
+binary against the new one, with what legitimately differs masked: wall times (the `time [s]` column and the
+`*seconds` columns), the provenance lines (commit, date) and the stage timings. Text and whole numbers (areas
+as node counts, spots, iterations, convergence) must be equal; other numbers agree to 1e-6 relative, because
+one binary run twice already differs in the last bits of the BEM's separation, mean gap, largest pressure and
+residual (FFTW_MEASURE picks its algorithms per run and the two threads' partial sums land in either order;
+the residual, a maximum of gaps near round-off, moved by 3e-7 relative between two runs of the same binary on
+the measured scene). Anything else that differs is printed and the exit status is 1.
+
+Usage: scripts/compare_scene_outputs.py OLD_BINARY NEW_BINARY [SCENE ...] [--threads N]
+       (default scenes: every scenes/**/*.toml; build the old binary from the commit before the change)
+Standard library only; run with Debian's /usr/bin/python3.
+"""
+import argparse
+import csv
+import io
+import pathlib
+import subprocess
+import sys
+import tempfile
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+
+
+def masked_csv(text):
+    rows = [line for line in text.splitlines() if not line.startswith("#")]
+    table = list(csv.reader(io.StringIO("\n".join(rows))))
+    if not table:
+        return []
+    header = table[0]
+    keep = [k for k, name in enumerate(header) if not name.endswith("seconds")]
+    return [[row[k] for k in keep if k < len(row)] for row in table]
+
+
+RELATIVE = 1e-6
+
+
+def same_cell(a, b):
+    if a == b:
+        return True
+    try:
+        x, y = float(a), float(b)
+    except ValueError:
+        return False
+    if a.lstrip("-").isdigit() or b.lstrip("-").isdigit():
+        return False  # whole numbers must be equal
+    return abs(x - y) <= RELATIVE * max(abs(x), abs(y))
+
+
+def same_rows(a, b):
+    return len(a) == len(b) and all(len(r) == len(s) and all(map(same_cell, r, s)) for r, s in zip(a, b))
+
+
+def masked_table(text):
+    out = []
+    for line in text.splitlines():
+        if line.startswith("Made by") or line.startswith("Stages that ran"):
+            continue
+        cells = line.split("|")
+        # The method table's second column is its time [s].
+        if len(cells) > 3 and line.startswith("| ") and not line.startswith("| P/(E* A0)"):
+            if cells[2].strip().replace(".", "", 1).replace("e-", "", 1).isdigit():
+                cells[2] = " t "
+        out.append(cells)
+    return out
+
+
+def run(binary, scene, out, threads):
+    done = subprocess.run([binary, "run", str(scene), "--out", str(out), "--threads", str(threads), "--quiet",
+                           "--no-plots"], capture_output=True, text=True)
+    return done.returncode, done.stderr
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("old")
+    parser.add_argument("new")
+    parser.add_argument("scenes", nargs="*")
+    parser.add_argument("--threads", type=int, default=2)
+    args = parser.parse_args()
+    scenes = [pathlib.Path(s) for s in args.scenes] or sorted(ROOT.glob("scenes/**/*.toml"))
+    failures = 0
+    with tempfile.TemporaryDirectory() as work:
+        for k, scene in enumerate(scenes):
+            outputs = []
+            for name, binary in (("old", args.old), ("new", args.new)):
+                folder = pathlib.Path(work) / f"{k}_{name}"
+                status, err = run(binary, scene, folder, args.threads)
+                outputs.append((status, err, folder))
+            (s_old, e_old, f_old), (s_new, e_new, f_new) = outputs
+            differences = []
+            if s_old != s_new:
+                differences.append(f"exit status {s_old} -> {s_new}: {e_new.strip()[:300]}")
+            elif s_old == 0:
+                for file, mask in (("curves.csv", masked_csv), ("table.md", masked_table)):
+                    a = mask((f_old / file).read_text())
+                    b = mask((f_new / file).read_text())
+                    if not same_rows(a, b):
+                        rows = [f"    old: {x}\n    new: {y}" for x, y in zip(a, b) if x != y][:3]
+                        differences.append(f"{file} differs ({len(a)} / {len(b)} rows):\n" + "\n".join(rows))
+            print(f"{scene}: {'identical' if not differences else 'DIFFERS'}"
+                  + ("" if s_old == 0 else f" (both exit {s_old})"))
+            for d in differences:
+                print("  " + d)
+            failures += bool(differences)
+    print(f"{len(scenes)} scenes, {failures} differ")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
