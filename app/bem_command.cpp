@@ -44,7 +44,7 @@ const FlagNames kFlags = {{"surface.file", "FILE"},
                           {"loads.values", "--loads"},
                           {"methods.bem.tolerance", "--tolerance"},
                           {"methods.bem.max_iterations", "--max-iterations"},
-                          {"methods.bem.hardness", "--hardness"},
+                          {"interface.hardness", "--hardness"},
                           {"methods.bem.precision", "--float"},
                           {"methods.bem.fields", "--fields"},
                           {"methods.bem.connectivity", "--connectivity"},
@@ -66,17 +66,18 @@ toml::table scene_of(const BemOptions& o) {
   if (o.non_periodic) bem.insert("periodic", false);
   if (o.tolerance) bem.insert("tolerance", *o.tolerance);
   if (o.max_iterations) bem.insert("max_iterations", static_cast<std::int64_t>(*o.max_iterations));
-  if (o.hardness) bem.insert("hardness", *o.hardness);
   if (o.single_precision) bem.insert("precision", "single");
   if (!o.fields.empty()) bem.insert("fields", o.fields);
   if (o.connectivity) bem.insert("connectivity", *o.connectivity);
   if (o.solver) bem.insert("solver", *o.solver);
   if (o.allow_unconverged) bem.insert("allow_unconverged", true);
-  return toml::table{{"name", "bem"},
-                     {"surface", surface_keys(o.topography)},
-                     {"material", material},
-                     {"loads", toml::table{{"values", loads}}},
-                     {"methods", toml::table{{"bem", bem}}}};
+  toml::table document{{"name", "bem"},
+                       {"surface", surface_keys(o.topography)},
+                       {"material", material},
+                       {"loads", toml::table{{"values", loads}}},
+                       {"methods", toml::table{{"bem", bem}}}};
+  if (o.hardness) document.insert("interface", toml::table{{"hardness", *o.hardness}});
+  return document;
 }
 
 // The command as given, every option that changes the result included, so that the header reruns it.
@@ -107,7 +108,7 @@ std::string command_line(const BemOptions& o) {
   return text + " --threads " + std::to_string(o.threads);
 }
 
-void run_bem(const BemOptions& o) {
+void run_bem(const BemOptions& o, const CommandContext& context) {
   if (o.topography.periodic && o.non_periodic) throw Error("--periodic and --non-periodic: give one of them");
   const std::string command = "contactbench bem";
   if (!o.out.empty()) check_output_file(o.out, o.topography.file, "--out");
@@ -115,7 +116,7 @@ void run_bem(const BemOptions& o) {
   const RunObserver observer = terminal_observer(command);
   SceneReport report;
   try {
-    report = run_scene(scene, {.threads = o.threads, .observer = &observer});
+    report = run_scene(scene, {.threads = o.threads, .observer = &observer, .runner = context.runner});
   } catch (const SceneError& error) {
     rethrow_with_flags(error, command, kFlags);
   }
@@ -126,7 +127,7 @@ void run_bem(const BemOptions& o) {
 
 }  // namespace
 
-void add_bem_command(CLI::App& parent) {
+void add_bem_command(CLI::App& parent, const CommandContext& context) {
   auto options = std::make_shared<BemOptions>();
   CLI::App* command = parent.add_subcommand(
       "bem",
@@ -165,16 +166,16 @@ void add_bem_command(CLI::App& parent) {
     known += (known.empty() ? "" : ", ") + name;
   command->add_option("--solver", options->solver,
                       "the BEM iteration: " + known + " (default " +
-                          std::string(solver_name(kDefaultSolver)) + "; as several MPI ranks " +
-                          std::string(solver_name(kDefaultDistributedSolver)) +
-                          "; docs/solvers.md); recorded in the CSV's header");
+                          std::string(solver_name(kDefaultSolver)) +
+                          ", which has no distributed version: as several MPI ranks name another; "
+                          "docs/solvers.md); recorded in the CSV's header");
   command->add_flag("--allow-unconverged", options->allow_unconverged,
                     "exit 0 even when a load did not converge (its row still says converged = 0); without "
                     "it such a run exits with status 3 after writing its results");
   command->add_option("--out", options->out, "CSV file (default: standard output)")
       ->check(refuse_empty_output_name);
   add_threads_option(*command, options->threads);
-  command->callback([options] { run_bem(*options); });
+  command->callback([options, &context] { run_bem(*options, context); });
 }
 
 }  // namespace contactbench

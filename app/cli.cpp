@@ -42,11 +42,12 @@ int run_cli(int argc, char** argv) {
       "each answer costs in time."};
   app.set_version_flag("--version", version_line());
   app.require_subcommand(1);
+  CommandContext context;
   add_generate_command(app);
   add_stats_command(app);
-  add_sweep_command(app);
-  add_bem_command(app);
-  add_run_command(app);
+  add_sweep_command(app, context);
+  add_bem_command(app, context);
+  add_run_command(app, context);
   add_convert_command(app);
   auto parse_and_run = [&]() -> int {
     try {
@@ -71,7 +72,11 @@ int run_cli(int argc, char** argv) {
     const std::string command = argc > 1 ? argv[1] : "";
     const bool distributable = command == "run" || command == "bem" || command == "sweep";
 #if CONTACTBENCH_WITH_MPI
-    if (distributable) return run_as_mpi_ranks(argc, argv, parse_and_run);
+    if (distributable)
+      return run_as_mpi_ranks(argc, argv, [&](const StageRunner& runner) {
+        context.runner = &runner;
+        return parse_and_run();
+      });
 #endif
     if (launch.rank == 0)
       std::cerr << "contactbench: error: started as " << launch.ranks << " MPI ranks (mpirun / mpiexec), but "

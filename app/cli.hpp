@@ -13,12 +13,21 @@ namespace contactbench {
 // one-line reason on stderr and a non-zero status (2 for bad usage, 1 for bad input or a failed run).
 int run_cli(int argc, char** argv);
 
-// Each subcommand registers its options on `parent` and runs when chosen (one file each).
+class StageRunner;  // app/stage_runner.hpp
+
+// What the scene commands share, chosen once by run_cli before any command parses: where their stages run
+// (this process, or slabs across MPI ranks). Never changes how a scene is read.
+struct CommandContext {
+  const StageRunner* runner = nullptr;  // null: this process
+};
+
+// Each subcommand registers its options on `parent` and runs when chosen (one file each). The scene
+// commands read `context` when they run.
 void add_generate_command(CLI::App& parent);
 void add_stats_command(CLI::App& parent);
-void add_sweep_command(CLI::App& parent);
-void add_bem_command(CLI::App& parent);
-void add_run_command(CLI::App& parent);
+void add_sweep_command(CLI::App& parent, const CommandContext& context);
+void add_bem_command(CLI::App& parent, const CommandContext& context);
+void add_run_command(CLI::App& parent, const CommandContext& context);
 void add_convert_command(CLI::App& parent);
 
 // The observer of a command's run on the terminal: stages longer than kProgressAfterSeconds, progress of

@@ -7,6 +7,7 @@
 
 #include <mpi.h>
 
+#include "contactbench/app/stages.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/topography_io.hpp"
 #include "contactbench/mpi/distributed_contact_statistics.hpp"
@@ -25,7 +26,6 @@ using Clock = std::chrono::steady_clock;
 enum class Job : int { stop = 0, bem = 1, sweep = 2 };
 
 const MPI_Comm kWorld = MPI_COMM_WORLD;
-int g_ranks = 1;  // set on rank 0 by run_as_mpi_ranks
 
 bool is_root() {
   return mpi::rank_of(kWorld) == 0;
@@ -125,8 +125,8 @@ BemRequest broadcast_request(const BemRequest& request) {
 // pass nothing and get nothing back. The only work rank 0 does alone between two collective calls is
 // writing fields: a failure there is broadcast before the next load (every rank stops) and rethrown at the
 // end, so no rank is ever left waiting.
-DistributedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, const std::string& fields,
-                         const std::function<void(const std::string&)>& warning) {
+SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, const std::string& fields,
+                    const std::function<void(const std::string&)>& warning) {
   const BemRequest request = broadcast_request(root_request);
   const Grid& grid = request.grid;
   const mpi::Slab slab = mpi::slab_of(grid, kWorld);
@@ -136,7 +136,7 @@ DistributedLoads bem_job(const BemRequest& root_request, const HeightMap* height
                               .warning = warning,
                               .solver = request.solver};
   mpi::DistributedPolonskyKeer solver(grid, local, request.estar, kWorld, options, request.threads);
-  DistributedLoads result;
+  SolvedLoads result;
   unsigned long long bytes = solver.bytes();
   MPI_Reduce(is_root() ? MPI_IN_PLACE : &bytes, &bytes, 1, MPI_UNSIGNED_LONG_LONG, MPI_MAX, 0, kWorld);
   result.bytes_per_rank = bytes;
@@ -231,72 +231,78 @@ void serve() {
   }
 }
 
+// Rank 0's side of the stages: each job announced to the other ranks, which serve it (serve() above).
+class DistributedRunner final : public StageRunner {
+ public:
+  int ranks() const override { return mpi::size_of(kWorld); }
+
+  std::string bem_refusal(const BemStage& stage) const override {
+    std::vector<std::string> missing;
+    if (stage.hardness) missing.push_back("a hardness");
+    if (stage.single_precision) missing.push_back("single precision (float)");
+    const bool solver_distributed =
+        stage.solver == SolverKind::polonsky_keer || stage.solver == SolverKind::preconditioned_cg;
+    if (!solver_distributed)
+      missing.push_back("solver = \"" + std::string(solver_name(stage.solver)) + "\"" +
+                        (stage.solver == kDefaultSolver ? " (the default, when a method names none)" : ""));
+    if (missing.empty()) return "";
+    std::string text = "the BEM stage has no distributed version with ";
+    for (std::size_t k = 0; k < missing.size(); ++k)
+      text += (k == 0 ? "" : k + 1 == missing.size() ? " and " : ", ") + missing[k];
+    return text + ": run it as one process" +
+           (solver_distributed
+                ? ""
+                : std::string(", or name a distributed solver (solver = \"preconditioned_cg\" or "
+                              "\"polonsky_keer\"; --solver on the command line)")) +
+           (missing.size() > 1 || solver_distributed
+                ? ", or without " + std::string(missing.size() > 1 ? "these" : "it")
+                : std::string()) +
+           " (docs/mpi.md)";
+  }
+
+  SolvedLoads solve_loads(const BemStage& stage, const Surface& solved, Real estar,
+                          const std::vector<Real>& mean_pressures, const std::set<int>& connectivities,
+                          const std::string& fields, const StageContext& context) const override {
+    if (const std::string refusal = bem_refusal(stage); !refusal.empty()) throw Error(refusal);
+    const RunObserver quiet;
+    const RunObserver& observer = context.observer ? *context.observer : quiet;
+    BemRequest request{.grid = solved.grid(),
+                       .estar = estar,
+                       .tolerance = stage.tolerance,
+                       .max_iterations = stage.max_iterations,
+                       .solver = stage.solver,
+                       .threads = context.threads,
+                       .write_fields = !fields.empty(),
+                       .mean_pressures = mean_pressures,
+                       .connectivities = {connectivities.begin(), connectivities.end()}};
+    announce(Job::bem);
+    return bem_job(request, &solved.heights(), fields, [&](const std::string& text) { observer.warn(text); });
+  }
+
+  SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topology& topology,
+                   int) const override {
+    announce(Job::sweep);
+    return sweep_job(surface.grid(), &surface.heights(), levels, topology);
+  }
+};
+
 }  // namespace
 
-int run_as_mpi_ranks(int& argc, char**& argv, const std::function<int()>& command) {
+int run_as_mpi_ranks(int& argc, char**& argv, const std::function<int(const StageRunner&)>& command) {
   mpi::Environment environment(argc, argv);
   if (!is_root()) {
     serve();
     return 0;
   }
-  g_ranks = mpi::size_of(kWorld);
+  const DistributedRunner runner;
   int status = 1;
   try {
-    status = command();
+    status = command(runner);
   } catch (const std::exception& e) {
     std::cerr << "contactbench: error: " << e.what() << '\n';
   }
   announce(Job::stop);
-  g_ranks = 1;
   return status;
-}
-
-bool stages_are_distributed() {
-  return g_ranks > 1;
-}
-
-int distributed_rank_count() {
-  return g_ranks;
-}
-
-std::string distributed_bem_refusal(const BemStage& stage) {
-  std::vector<std::string> missing;
-  if (stage.hardness) missing.push_back("a hardness");
-  if (stage.single_precision) missing.push_back("single precision (float)");
-  if (stage.solver != SolverKind::polonsky_keer && stage.solver != SolverKind::preconditioned_cg)
-    missing.push_back("solver = \"" + std::string(solver_name(stage.solver)) +
-                      "\" (distributed: polonsky_keer, and preconditioned_cg, what a method that names no "
-                      "solver gets there)");
-  if (missing.empty()) return "";
-  std::string text = "the BEM stage has no distributed version with ";
-  for (std::size_t k = 0; k < missing.size(); ++k)
-    text += (k == 0 ? "" : k + 1 == missing.size() ? " and " : ", ") + missing[k];
-  return text + ": run it as one process, or without " + (missing.size() > 1 ? "these" : "it") +
-         " (docs/mpi.md)";
-}
-
-DistributedLoads solve_loads_distributed(const BemStage& stage, const Surface& solved, Real estar,
-                                         const std::vector<Real>& mean_pressures,
-                                         const std::set<int>& connectivities, int threads,
-                                         const std::string& fields,
-                                         const std::function<void(const std::string&)>& warning) {
-  if (const std::string refusal = distributed_bem_refusal(stage); !refusal.empty()) throw Error(refusal);
-  BemRequest request{.grid = solved.grid(),
-                     .estar = estar,
-                     .tolerance = stage.tolerance,
-                     .max_iterations = stage.max_iterations,
-                     .solver = stage.solver,
-                     .threads = threads,
-                     .write_fields = !fields.empty(),
-                     .mean_pressures = mean_pressures,
-                     .connectivities = {connectivities.begin(), connectivities.end()}};
-  announce(Job::bem);
-  return bem_job(request, &solved.heights(), fields, warning);
-}
-
-SweepCurve sweep_distributed(const Surface& surface, const SweepLevels& levels, const Topology& topology) {
-  announce(Job::sweep);
-  return sweep_job(surface.grid(), &surface.heights(), levels, topology);
 }
 
 }  // namespace contactbench

@@ -88,6 +88,14 @@ JsonObject& JsonObject::add(std::string_view key, std::span<const double> values
   return *this;
 }
 
+JsonObject& JsonObject::add(std::string_view key, std::span<const std::string> values) {
+  std::string text = "[";
+  for (std::size_t i = 0; i < values.size(); ++i)
+    text += (i == 0 ? "" : ", ") + json_quote(values[i]);
+  add_scalar(key, text + "]");
+  return *this;
+}
+
 JsonObject& JsonObject::add(std::string_view key, std::vector<JsonObject> objects) {
   Member member;
   member.key = key;

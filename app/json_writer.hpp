@@ -21,8 +21,9 @@ class JsonObject {
   JsonObject& add(std::string_view key, std::string_view value);
   JsonObject& add(std::string_view key, const char* value) { return add(key, std::string_view(value)); }
   JsonObject& add(std::string_view key, JsonObject nested);
-  JsonObject& add(std::string_view key, std::span<const double> values);   // an array of numbers, one line
-  JsonObject& add(std::string_view key, std::vector<JsonObject> objects);  // an array of objects
+  JsonObject& add(std::string_view key, std::span<const double> values);  // an array of numbers, one line
+  JsonObject& add(std::string_view key, std::span<const std::string> values);  // an array of strings
+  JsonObject& add(std::string_view key, std::vector<JsonObject> objects);      // an array of objects
   JsonObject& add_strings(std::string_view key, const std::vector<std::string>& values);
   // A value that is already JSON (e.g. a document another writer made), inserted as it is.
   JsonObject& add_raw(std::string_view key, std::string json);

@@ -136,6 +136,8 @@ void write_summary_json(std::ostream& out, const SceneReport& report, const Comp
     JsonObject o;
     o.add("label", r.label).add("method", r.method).add("parameters", r.curve.parameters);
     o.add("compared_area", r.compared_area);
+    if (!r.note.empty()) o.add("note", r.note);
+    if (!r.ignored_effects.empty()) o.add("ignored_effects", std::span<const std::string>(r.ignored_effects));
     o.add("seconds", r.seconds).add("kappa", c.kappa);
     if (c.kappa_nodes) o.add("kappa_nodes", *c.kappa_nodes);
     o.add("area_fraction", std::span<const double>(r.curve.area_fraction));

@@ -27,7 +27,7 @@ struct RunCommandOptions {
   bool quiet = false;
 };
 
-void run_command(const RunCommandOptions& o) {
+void run_command(const RunCommandOptions& o, const CommandContext& context) {
   const Scene scene = read_scene(o.scene);  // everything validated before any work
   const std::filesystem::path folder =
       o.out.empty() ? std::filesystem::path("runs") / scene.name : std::filesystem::path(o.out);
@@ -37,8 +37,8 @@ void run_command(const RunCommandOptions& o) {
 
   check_replaceable_folder(folder);  // before any work, and again when the output is moved into place
   const RunObserver observer = terminal_observer("contactbench run");
-  const SceneReport report =
-      run_scene(scene, {.threads = o.threads, .observer = o.quiet ? nullptr : &observer});
+  const SceneReport report = run_scene(
+      scene, {.threads = o.threads, .observer = o.quiet ? nullptr : &observer, .runner = context.runner});
   const Comparison comparison = compare(report);
   const Provenance provenance = current_provenance(o.threads, command);
   write_folder_atomically(folder, [&](const std::filesystem::path& staging) {
@@ -55,7 +55,7 @@ void run_command(const RunCommandOptions& o) {
 
 }  // namespace
 
-void add_run_command(CLI::App& parent) {
+void add_run_command(CLI::App& parent, const CommandContext& context) {
   auto options = std::make_shared<RunCommandOptions>();
   CLI::App* command = parent.add_subcommand(
       "run",
@@ -69,7 +69,7 @@ void add_run_command(CLI::App& parent) {
   command->add_flag("!--no-plots", options->plots, "do not draw the plots (no gnuplot run)");
   command->add_flag("--quiet", options->quiet, "no progress and no table on the terminal");
   add_threads_option(*command, options->threads);
-  command->callback([options] { run_command(*options); });
+  command->callback([options, &context] { run_command(*options, context); });
 }
 
 }  // namespace contactbench

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "contactbench/app/interface.hpp"
 #include "contactbench/app/scene_error.hpp"
 #include "contactbench/app/surface_source.hpp"
 #include "contactbench/core/error.hpp"
@@ -39,6 +40,9 @@ struct MaterialSpec {
 struct MethodSpec {
   std::string label;
   std::shared_ptr<const Method> method;
+  // `ignore = [...]`: effects of the scene's interface this method runs without, said explicitly (it is
+  // refused otherwise when it does not model them); every output marks its row (app/interface.hpp).
+  std::vector<Effect> ignored;
   std::string_view name() const;  // the registry name, e.g. "bem"
 };
 
@@ -48,6 +52,7 @@ struct Scene {
   std::filesystem::path file;  // the scene file itself ("" when parsed from a string)
   SurfaceSpec surface;
   MaterialSpec material;
+  InterfaceSpec interface;          // [interface]: the effects the scene calls for (none: elastic)
   std::vector<Real> loads;          // P/(E* A0), ascending, > 0: the one list every method answers at
   std::vector<MethodSpec> methods;  // in the order the file lists them
   std::string reference;            // label of the method the others are judged against

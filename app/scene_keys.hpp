@@ -14,13 +14,15 @@
 namespace contactbench {
 
 struct SceneKeys {
-  using Value = std::variant<Real, std::int64_t, bool, std::string, std::vector<Real>>;
+  using Value =
+      std::variant<Real, std::int64_t, bool, std::string, std::vector<Real>, std::vector<std::string>>;
 
   std::string name;  // of this table in its parent ("" at the top)
   std::vector<std::pair<std::string, Value>> values;
   std::vector<SceneKeys> tables;  // sub-tables, in order
 
-  void put(std::string key, Value value) { values.emplace_back(std::move(key), std::move(value)); }
+  // Out of line: GCC 12 inlining a variant of vectors into callers warns of a maybe-uninitialized member.
+  void put(std::string key, Value value);
   void put(std::string key, const char* value) { put(std::move(key), Value{std::string(value)}); }
   SceneKeys& table(std::string table_name) {
     tables.push_back(SceneKeys{.name = std::move(table_name), .values = {}, .tables = {}});

@@ -17,11 +17,17 @@ int index_of(std::vector<Stage>& stages, const Stage& stage, Same same) {
 
 }  // namespace
 
+SceneContext method_context(const SceneContext& scene_context, const Scene& scene, const MethodSpec& method) {
+  SceneContext context = scene_context;
+  context.interface = scene.interface.without(method.ignored);
+  return context;
+}
+
 ScenePlan plan_scene(const Scene& scene, const Grid& surface) {
   ScenePlan plan;
   plan.context = {.surface_points = surface.nx, .surface_periodic = surface.periodic};
   for (const MethodSpec& method : scene.methods) {
-    const MethodNeeds needs = method.method->needs(plan.context);
+    const MethodNeeds needs = method.method->needs(method_context(plan.context, scene, method));
     ScenePlan::Stages stages;
     if (needs.sweep)
       stages.sweep = index_of(plan.sweeps, *needs.sweep,

@@ -34,6 +34,9 @@ struct ScenePlan {
   std::vector<Stages> of_method;  // for each method of the scene, in its order
 };
 
+// The context one method runs in: the scene's, with the interface's effects less those it ignores.
+SceneContext method_context(const SceneContext& scene_context, const Scene& scene, const MethodSpec& method);
+
 // Pure: reads the methods' needs for the scene's surface (made already: its grid says whether it is
 // periodic), runs nothing, refuses nothing (the preflight does, app/scene_run.hpp).
 ScenePlan plan_scene(const Scene& scene, const Grid& surface);

@@ -5,11 +5,9 @@
 #include <optional>
 #include <sstream>
 
-#if CONTACTBENCH_WITH_MPI
-#include "contactbench/app/distributed_stages.hpp"
-#endif
 #include "contactbench/app/scene_plan.hpp"
 #include "contactbench/app/scene_toml.hpp"
+#include "contactbench/app/stage_runner.hpp"
 
 namespace contactbench {
 
@@ -31,6 +29,33 @@ double run_stage(SceneReport& report, const RunObserver& observer, const std::st
   report.stages.push_back({name, seconds});
   observer.finished(name, seconds);
   return seconds;
+}
+
+// Every method against the scene's interface (app/interface.hpp): an effect it does not model is refused
+// unless its table ignores it; an ignore that changes nothing is a mistake worth saying.
+void check_effects(const Scene& scene, Problems& problems) {
+  for (const MethodSpec& m : scene.methods) {
+    const std::vector<Effect> modelled = m.method->models();
+    const std::string key = "methods." + m.label;
+    for (const Effect e : scene.interface.effects()) {
+      const bool models = std::find(modelled.begin(), modelled.end(), e) != modelled.end();
+      const bool ignores = std::find(m.ignored.begin(), m.ignored.end(), e) != m.ignored.end();
+      if (!models && !ignores)
+        problems.add(0, key,
+                     "the method " + std::string(m.name()) + " does not model the interface's " +
+                         std::string(effect_name(e)) + " (interface." + std::string(effect_name(e)) + ")",
+                     "a method that models it, or ignore = [\"" + std::string(effect_name(e)) + "\"] in [" +
+                         key + "] to run it without, its rows marked");
+    }
+    for (const Effect e : m.ignored)
+      if (!scene.interface.has(e))
+        problems.add(
+            0, key + ".ignore",
+            "ignores " + std::string(effect_name(e)) + ", which the scene's [interface] does not call for",
+            "only effects of [interface]: " + (scene.interface.effects().empty()
+                                                   ? std::string("none here (remove ignore)")
+                                                   : effects_text(scene.interface.effects())));
+  }
 }
 
 std::string origin_of(const Scene& scene) {
@@ -60,26 +85,28 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
 
   // Every preflight, before any stage: one SceneError lists every problem of every method.
   Problems problems(origin_of(scene));
-  for (const MethodSpec& m : scene.methods)
+  check_effects(scene, problems);
+  for (const MethodSpec& m : scene.methods) {
+    const InterfaceSpec interface = method_context(plan.context, scene, m).interface;
     m.method->preflight(MethodCheck{.scene = scene,
+                                    .interface = interface,
                                     .surface = surface,
                                     .moments = report.moments,
                                     .key = "methods." + m.label,
                                     .problems = problems});
-#if CONTACTBENCH_WITH_MPI
-  // Run as several MPI ranks: a BEM stage the distributed solver cannot do is refused here, before any work.
-  if (stages_are_distributed()) {
-    report.ranks = distributed_rank_count();
-    for (std::size_t m = 0; m < scene.methods.size(); ++m)
-      if (const int b = plan.of_method[m].bem; b >= 0)
-        if (const std::string refusal = distributed_bem_refusal(plan.bems[static_cast<std::size_t>(b)].stage);
-            !refusal.empty())
-          problems.add(0, "methods." + scene.methods[m].label, refusal);
   }
-#endif
+  // A BEM stage the runner cannot do (e.g. an option the distributed solver lacks) is refused here, before
+  // any work, with the reason: never run with another solver than the scene says.
+  const StageRunner& runner = options.runner ? *options.runner : serial_runner();
+  report.ranks = runner.ranks();
+  for (std::size_t m = 0; m < scene.methods.size(); ++m)
+    if (const int b = plan.of_method[m].bem; b >= 0)
+      if (const std::string refusal = runner.bem_refusal(plan.bems[static_cast<std::size_t>(b)].stage);
+          !refusal.empty())
+        problems.add(0, "methods." + scene.methods[m].label, refusal);
   problems.throw_if_any();
 
-  const StageContext context{.threads = options.threads, .observer = &observer};
+  const StageContext context{.threads = options.threads, .observer = &observer, .stage_runner = &runner};
   std::vector<SweepProducts> sweeps(plan.sweeps.size());
   for (std::size_t s = 0; s < plan.sweeps.size(); ++s)
     run_stage(report, observer, plan.sweeps[s].name(),
@@ -98,7 +125,7 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
   for (std::size_t m = 0; m < scene.methods.size(); ++m) {
     const MethodSpec& spec = scene.methods[m];
     const ScenePlan::Stages& stages = plan.of_method[m];
-    const MethodNeeds needs = spec.method->needs(plan.context);
+    const MethodNeeds needs = spec.method->needs(method_context(plan.context, scene, spec));
     const MethodInputs inputs{
         .scene = scene,
         .surface = surface,
@@ -109,8 +136,14 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
                         .method = std::string(spec.name()),
                         .compared_area = spec.method->compared_area(),
                         .note = spec.method->note(),
+                        .ignored_effects = {},
                         .curve = {},
                         .seconds = 0};
+    // A method that runs without some of the scene's effects says so wherever its row shows.
+    for (const Effect e : spec.ignored)
+      result.ignored_effects.emplace_back(effect_name(e));
+    if (const std::string mark = ignored_effects_note(spec.ignored); !mark.empty())
+      result.note = result.note.empty() ? mark : result.note + "; " + mark;
     result.seconds = run_stage(report, observer, "evaluate " + spec.label,
                                [&] { result.curve = spec.method->evaluate(inputs); });
     if (needs.moments) result.seconds += moments_seconds;

@@ -27,6 +27,9 @@ struct MethodResult {
   std::string compared_area;  // which area curve.area_fraction is (Method::compared_area)
   // Shown after the label, in parentheses, in table.md and the plot legend (Method::note); empty: nothing.
   std::string note;
+  // The scene's effects this method ran without (`ignore = [...]`, app/interface.hpp), by name; the note
+  // says so too.
+  std::vector<std::string> ignored_effects;
   MethodCurve curve;  // at the report's loads, report.scene.loads
   // Wall time of the stages the method needed (shared stages are charged in full to each method that needs
   // them) plus its own evaluation; making the scene's surface is charged to no method.
@@ -51,9 +54,12 @@ struct SceneReport {
   const std::vector<Real>& loads() const { return scene.loads; }
 };
 
+class StageRunner;  // app/stage_runner.hpp
+
 struct RunOptions {
   int threads = 1;
   const RunObserver* observer = nullptr;  // stages, progress and warnings; null: quiet
+  const StageRunner* runner = nullptr;    // where the heavy stages run; null: this process
 };
 
 // Throws SceneError listing every problem the preflights found (then no sweep, solve or theory has run).

@@ -115,9 +115,36 @@ std::optional<std::vector<Real>> parse_loads(const Section& root, Problems& prob
 }
 
 // The methods in the order the file lists them (toml++ keeps a table's keys sorted, not in file order).
+// `ignore = ["hardness", ...]`: the effects of the interface a method runs without (app/interface.hpp).
+std::vector<Effect> read_ignored_effects(const Section& s) {
+  const std::string accepted = "an array of effect names: " + effects_text(known_effects());
+  std::vector<Effect> ignored;
+  const toml::node* node = s.find("ignore");
+  if (!node) return ignored;
+  const auto* array = node->as_array();
+  if (!array) {
+    s.wrong_type("ignore", "an array of strings", accepted);
+    return ignored;
+  }
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const toml::node& element = *array->get(i);
+    const std::string path = s.key_path("ignore") + "[" + std::to_string(i) + "]";
+    const auto* name = element.as_string();
+    const auto effect = name ? effect_of(name->get()) : std::nullopt;
+    if (!name)
+      s.problems().add(line_of(element), path,
+                       "wrong type: expected a string, got " + std::string(type_name(element)), accepted);
+    else if (!effect)
+      s.problems().add(line_of(element), path, "unknown effect \"" + name->get() + "\"", accepted);
+    else if (std::find(ignored.begin(), ignored.end(), *effect) == ignored.end())
+      ignored.push_back(*effect);
+  }
+  return ignored;
+}
+
 std::vector<MethodSpec> parse_methods(const Section& root, const std::optional<SurfaceSpec>& surface,
-                                      const fs::path& folder, std::vector<std::string>& labels,
-                                      Problems& problems) {
+                                      const InterfaceSpec& interface, const fs::path& folder,
+                                      std::vector<std::string>& labels, Problems& problems) {
   const MethodRegistry& registry = MethodRegistry::global();
   const std::string known = registry.names_text();
   const std::string accepted = "tables [methods.<label>] with method = one of " + known;
@@ -133,9 +160,10 @@ std::vector<MethodSpec> parse_methods(const Section& root, const std::optional<S
     const auto &pa = a.first->source().begin, &pb = b.first->source().begin;
     return std::pair(pa.line, pa.column) < std::pair(pb.line, pb.column);
   });
-  const SceneContext context{.surface_points = surface ? points_a_side(*surface) : std::nullopt,
-                             .surface_periodic = true,  // not known before the file is read; unused here
-                             .folder = folder};
+  SceneContext context{.surface_points = surface ? points_a_side(*surface) : std::nullopt,
+                       .surface_periodic = true,  // not known before the file is read; unused here
+                       .folder = folder,
+                       .interface = interface};
   std::vector<MethodSpec> result;
   for (const auto& [key, node] : entries) {
     const std::string label(key->str());
@@ -147,7 +175,8 @@ std::vector<MethodSpec> parse_methods(const Section& root, const std::optional<S
       methods.wrong_type(label, "a table", accepted);
       continue;
     }
-    const Section s(*method_table, "methods." + label, problems);
+    Section s(*method_table, "methods." + label, problems);
+    s.accept_common_keys({"ignore"});
     const bool label_is_a_name = registry.make(label) != nullptr;
     std::string name = label_is_a_name ? label : "";
     if (const auto given = s.string("method", false, known)) {
@@ -166,8 +195,10 @@ std::vector<MethodSpec> parse_methods(const Section& root, const std::optional<S
     }
     if (name.empty()) continue;
     std::unique_ptr<Method> method = registry.make(name);
+    std::vector<Effect> ignored = read_ignored_effects(s);
+    context.interface = interface.without(ignored);
     method->read(s, context);
-    result.push_back({label, std::shared_ptr<const Method>(std::move(method))});
+    result.push_back({label, std::shared_ptr<const Method>(std::move(method)), std::move(ignored)});
   }
   return result;
 }
@@ -208,7 +239,8 @@ Scene parse_scene(std::string_view toml_text, const std::filesystem::path& origi
 Scene parse_scene_table(const toml::table& document, const std::filesystem::path& origin) {
   Problems problems(origin_name(origin));
   const Section root(document, "", problems, true);
-  root.reject_unknown({"name", "description", "reference", "surface", "material", "loads", "methods"});
+  root.reject_unknown(
+      {"name", "description", "reference", "surface", "material", "interface", "loads", "methods"});
 
   Scene scene;
   const auto name =
@@ -221,9 +253,10 @@ Scene parse_scene_table(const toml::table& document, const std::filesystem::path
   const fs::path folder = origin.parent_path();
   const auto surface = read_surface_keys(root, folder);
   const auto material = parse_material(root, problems);
+  scene.interface = read_interface(root);
   const auto loads = parse_loads(root, problems);
   std::vector<std::string> labels;  // every label in the file, also those with problems
-  scene.methods = parse_methods(root, surface, folder, labels, problems);
+  scene.methods = parse_methods(root, surface, scene.interface, folder, labels, problems);
   if (const auto reference = root.string("reference", false, "a method label")) {
     if (!reference->empty() && std::find(labels.begin(), labels.end(), *reference) == labels.end())
       root.problem(

@@ -111,8 +111,9 @@ void Section::wrong_type(std::string_view key, std::string_view expected, std::s
 
 void Section::reject_unknown(const std::vector<std::string_view>& accepted) const {
   std::vector<std::string> names(accepted.begin(), accepted.end());
+  names.insert(names.end(), common_keys_.begin(), common_keys_.end());
   for (auto&& [key, node] : table_)
-    if (std::find(accepted.begin(), accepted.end(), key.str()) == accepted.end())
+    if (std::find(names.begin(), names.end(), key.str()) == names.end())
       problems_.add(line_of(node), key_path(key.str()), "unknown key", join(names));
 }
 

@@ -81,8 +81,11 @@ class Section {
   void problem(std::string_view key, std::string_view reason, std::string_view accepted = {}) const;
   void missing(std::string_view key, std::string_view accepted) const;
   void wrong_type(std::string_view key, std::string_view expected, std::string_view accepted) const;
-  // Reports every key not in `accepted`, listing those accepted here.
+  // Reports every key not in `accepted` nor in the common keys, listing those accepted here.
   void reject_unknown(const std::vector<std::string_view>& accepted) const;
+  // Keys every table of its kind has, read by the schema rather than by the table's owner (a method's
+  // `ignore`): reject_unknown accepts them too.
+  void accept_common_keys(std::vector<std::string> keys) { common_keys_ = std::move(keys); }
 
   // A number (integers are accepted where a float is expected).
   std::optional<Real> number(std::string_view key, bool required, const Rule<Real>& rule) const;
@@ -102,6 +105,7 @@ class Section {
   std::string path_;
   Problems& problems_;
   bool root_;
+  std::vector<std::string> common_keys_;
 };
 
 // Validates a group of keys and, when all of them are valid, runs the stricter check of a library function

@@ -10,6 +10,10 @@
 
 namespace contactbench {
 
+void SceneKeys::put(std::string key, Value value) {
+  values.emplace_back(std::move(key), std::move(value));
+}
+
 namespace {
 
 void write_material_keys(const MaterialSpec& material, bool with_estar, SceneKeys& root) {
@@ -32,11 +36,18 @@ SceneKeys scene_keys(const Scene& scene, bool with_estar) {
   root.put("reference", scene.reference);
   write_surface_keys(scene.surface, root);
   write_material_keys(scene.material, with_estar, root);
+  write_interface(scene.interface, root);
   root.table("loads").put("values", scene.loads);
   SceneKeys& methods = root.table("methods");
   for (const MethodSpec& m : scene.methods) {
     SceneKeys& keys = methods.table(m.label);
     keys.put("method", std::string(m.name()));
+    if (!m.ignored.empty()) {
+      std::vector<std::string> names;
+      for (const Effect e : m.ignored)
+        names.emplace_back(effect_name(e));
+      keys.put("ignore", names);
+    }
     m.method->write(keys);
   }
   return root;
@@ -69,6 +80,11 @@ std::string toml_value(const SceneKeys::Value& value) {
           return v ? "true" : "false";
         } else if constexpr (std::is_same_v<T, std::string>) {
           return json_quote(v);
+        } else if constexpr (std::is_same_v<T, std::vector<std::string>>) {
+          std::string out = "[";
+          for (std::size_t i = 0; i < v.size(); ++i)
+            out.append(i ? ", " : "").append(json_quote(v[i]));
+          return out + "]";
         } else {
           std::string out = "[";
           for (std::size_t i = 0; i < v.size(); ++i)
@@ -100,6 +116,8 @@ JsonObject to_json_object(const SceneKeys& table) {
             object.add(key, static_cast<long long>(v));
           else if constexpr (std::is_same_v<T, std::vector<Real>>)
             object.add(key, std::span<const double>(v));
+          else if constexpr (std::is_same_v<T, std::vector<std::string>>)
+            object.add(key, std::span<const std::string>(v));
           else if constexpr (std::is_same_v<T, std::string>)
             object.add(key, std::string_view(v));
           else

@@ -21,10 +21,6 @@
 
 namespace contactbench {
 
-// The BEM solver of a method that names none: kDefaultSolver, or kDefaultDistributedSolver when the stages
-// run on several MPI ranks (app/distributed_stages.hpp), where the default has no distributed version.
-SolverKind default_bem_solver();
-
 struct SweepStage {
   Topology topology;
   SweepLevels levels;
@@ -65,6 +61,7 @@ struct BemProducts {
   double seconds = 0;                                        // refinement + solves + statistics
   Index points = 0;                                          // nodes of the grid solved on
   bool periodic = true;                                      // the boundary solved
+  std::optional<Real> hardness;                              // the cap solved with [Pa]; none: elastic
   // With BemStage::extrapolate: the same loads solved on twice the points a side (fields dropped too).
   std::vector<ContactSolution> fine_solutions;
   std::map<int, std::vector<ContactStatistics>> fine_statistics;  // by connectivity
@@ -74,9 +71,13 @@ struct BemProducts {
   std::size_t bytes_per_rank = 0;
 };
 
+class StageRunner;  // app/stage_runner.hpp
+
 struct StageContext {
   int threads = 1;
-  const RunObserver* observer = nullptr;  // may be null: quiet
+  const RunObserver* observer = nullptr;      // may be null: quiet
+  const StageRunner* stage_runner = nullptr;  // where the stages run; null: this process
+  const StageRunner& runner() const;
 };
 
 // The field file of load k (1-based, in the order solved): <prefix>_load<k>_<what>.txt, what = pressure |

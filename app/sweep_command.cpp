@@ -48,14 +48,14 @@ toml::table scene_of(const SweepOptions& o) {
                      {"methods", toml::table{{"sweep", plateau}}}};
 }
 
-void run_sweep(const SweepOptions& o) {
+void run_sweep(const SweepOptions& o, const CommandContext& context) {
   const std::string command = "contactbench sweep";
   if (!o.out.empty()) check_output_file(o.out, o.topography.file, "--out");
   const Scene scene = scene_from_flags(scene_of(o), command, kFlags);
   const RunObserver observer = terminal_observer(command);
   SceneReport report;
   try {
-    report = run_scene(scene, {.threads = o.threads, .observer = &observer});
+    report = run_scene(scene, {.threads = o.threads, .observer = &observer, .runner = context.runner});
   } catch (const SceneError& error) {
     rethrow_with_flags(error, command, kFlags);
   }
@@ -66,7 +66,7 @@ void run_sweep(const SweepOptions& o) {
 
 }  // namespace
 
-void add_sweep_command(CLI::App& parent) {
+void add_sweep_command(CLI::App& parent, const CommandContext& context) {
   auto options = std::make_shared<SweepOptions>();
   CLI::App* command = parent.add_subcommand(
       "sweep",
@@ -83,7 +83,7 @@ void add_sweep_command(CLI::App& parent) {
   command->add_option("--out", options->out, "CSV file (default: standard output)")
       ->check(refuse_empty_output_name);
   add_threads_option(*command, options->threads);
-  command->callback([options] { run_sweep(*options); });
+  command->callback([options, &context] { run_sweep(*options, context); });
 }
 
 }  // namespace contactbench

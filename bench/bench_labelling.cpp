@@ -62,23 +62,15 @@ void register_all() {
   for (const Index n : kSizes)
     for (const int coverage : kCoverages)
       for (const Connectivity c : kConnectivities) {
-        benchmark::RegisterBenchmark(name("contactbench", n, coverage, c).c_str(), label_with_contactbench, n,
-                                     coverage, c)
-            ->Unit(benchmark::kMillisecond)
-            ->UseRealTime();
+        register_timed(name("contactbench", n, coverage, c), label_with_contactbench, n, coverage, c);
 #ifdef CB_HAVE_OPENCV
         const std::pair<const char*, int> opencv[] = {{"opencv_spaghetti", cv::CCL_SPAGHETTI},
                                                       {"opencv_bbdt", cv::CCL_BBDT},
                                                       {"opencv_sauf", cv::CCL_SAUF}};
         for (const auto& [impl, algorithm] : opencv)
-          benchmark::RegisterBenchmark(name(impl, n, coverage, c).c_str(), label_with_opencv, n, coverage, c,
-                                       algorithm)
-              ->Unit(benchmark::kMillisecond)
-              ->UseRealTime();
+          register_timed(name(impl, n, coverage, c), label_with_opencv, n, coverage, c, algorithm);
 #endif
-        benchmark::RegisterBenchmark(name("memory_pass", n, coverage, c).c_str(), memory_pass, n)
-            ->Unit(benchmark::kMillisecond)
-            ->UseRealTime();
+        register_timed(name("memory_pass", n, coverage, c), memory_pass, n);
       }
 }
 

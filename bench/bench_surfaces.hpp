@@ -26,6 +26,15 @@ const BinaryMap& contact_map(Index n, double coverage);
 // int32 per point, on kThreads threads.
 void memory_pass(benchmark::State& state, Index n);
 
+// Registers `name` running fn(state, args...), reported as every harness reports: wall time (the work runs on
+// kThreads threads, so CPU time would count each second twice), in milliseconds.
+template <typename Fn, typename... Args>
+benchmark::internal::Benchmark* register_timed(const std::string& name, Fn&& fn, Args&&... args) {
+  return benchmark::RegisterBenchmark(name.c_str(), std::forward<Fn>(fn), std::forward<Args>(args)...)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
+}
+
 // Initialises Google Benchmark, records the thread count and `context` in its output, runs what is
 // registered. Returns the process status.
 int run_benchmarks(int argc, char** argv,

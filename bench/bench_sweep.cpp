@@ -56,20 +56,12 @@ std::string name(const std::string& mode, Index n, Connectivity c) {
 void register_all() {
   for (const Index n : kSizes) {
     for (const Connectivity c : kConnectivities) {
-      benchmark::RegisterBenchmark(name("levels500", n, c).c_str(), run_sweep, n, c, SweepLevels::paper(500))
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
-      benchmark::RegisterBenchmark(name("exact", n, c).c_str(), run_sweep, n, c, SweepLevels::exact())
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime();
-      auto* slow = benchmark::RegisterBenchmark(name("per_level", n, c).c_str(), per_level, n, c)
-                       ->Unit(benchmark::kMillisecond)
-                       ->UseRealTime();
+      register_timed(name("levels500", n, c), run_sweep, n, c, SweepLevels::paper(500));
+      register_timed(name("exact", n, c), run_sweep, n, c, SweepLevels::exact());
+      auto* slow = register_timed(name("per_level", n, c), per_level, n, c);
       if (n >= 4096) slow->Iterations(1);  // tens of seconds a run
     }
-    benchmark::RegisterBenchmark(("sweep/memory_pass/n:" + std::to_string(n)).c_str(), memory_pass, n)
-        ->Unit(benchmark::kMillisecond)
-        ->UseRealTime();
+    register_timed("sweep/memory_pass/n:" + std::to_string(n), memory_pass, n);
   }
 }
 

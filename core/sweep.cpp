@@ -18,10 +18,12 @@
 
 namespace contactbench {
 
+using sweep_detail::append_level;
+using sweep_detail::empty_sweep_curve;
 using sweep_detail::ExcessReader;
 using sweep_detail::ExcessStep;
 using sweep_detail::fixed_levels;
-using sweep_detail::joining_level;
+using sweep_detail::join_time;
 using sweep_detail::JoinTime;
 using sweep_detail::kNever;
 using sweep_detail::LocalJoin;
@@ -64,9 +66,7 @@ SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topolo
 
   // When a point joins {h > z}: its height's descending key (exact) or its level index (kNever: never).
   const Real* h = heights.data();
-  auto time_of = [&](Index i) {
-    return exact ? sweep_detail::descending_key(h[i]) : joining_level(h[i], fixed_z);
-  };
+  auto time_of = [&](Index i) { return join_time(h[i], exact, fixed_z); };
 
   // Horizontal stripes, one per thread (as many as asked, whatever the size, so that the joining logic is
   // the same for all sizes); each is swept on its own with its own part of one union-find array.
@@ -98,11 +98,7 @@ SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topolo
   const std::vector<ExcessStep> excess_steps = seam_excess(local_joins, rows, topology, nx, ny, time_of);
 
   // The global curve: at each level, the stripes' counts less the components they counted twice.
-  SweepCurve curve;
-  curve.topology = topology;
-  curve.levels = levels;
-  curve.nominal_area = surface.grid().nominal_area();
-  const Real points_total = static_cast<Real>(n);
+  SweepCurve curve = empty_sweep_curve(surface.grid(), levels, topology);
   if (exact) {
     std::vector<StripeHistory> histories;
     for (auto& stripe : stripes)
@@ -120,10 +116,7 @@ SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topolo
         components += reader.components();
         points += reader.points();
       }
-      curve.z.push_back(fixed_z[k]);
-      curve.points.push_back(points);
-      curve.spots.push_back(components - excess.at(k));
-      curve.area_fraction.push_back(static_cast<Real>(points) / points_total);
+      append_level(curve, fixed_z[k], points, components - excess.at(k), n);
     }
   }
   return curve;

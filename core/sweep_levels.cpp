@@ -22,6 +22,21 @@ std::vector<Real> fixed_levels(Real top, Real bottom, Index count) {
   return z;
 }
 
+SweepCurve empty_sweep_curve(const Grid& grid, const SweepLevels& levels, const Topology& topology) {
+  SweepCurve curve;
+  curve.topology = topology;
+  curve.levels = levels;
+  curve.nominal_area = grid.nominal_area();
+  return curve;
+}
+
+void append_level(SweepCurve& curve, Real z, Index points, Index spots, Index total_points) {
+  curve.z.push_back(z);
+  curve.points.push_back(points);
+  curve.spots.push_back(spots);
+  curve.area_fraction.push_back(static_cast<Real>(points) / static_cast<Real>(total_points));
+}
+
 // A guess from the spacing, corrected against the stored levels so that h > z[k] holds exactly as reported.
 JoinTime joining_level(Real height, const std::vector<Real>& z) {
   const Index levels = static_cast<Index>(z.size());

@@ -5,7 +5,10 @@
 
 #include <vector>
 
+#include "contactbench/core/grid.hpp"
 #include "contactbench/core/stripe_components.hpp"
+#include "contactbench/core/sweep.hpp"
+#include "contactbench/core/sweep_exact.hpp"
 #include "contactbench/core/types.hpp"
 
 namespace contactbench::sweep_detail {
@@ -16,6 +19,18 @@ std::vector<Real> fixed_levels(Real top, Real bottom, Index count);
 
 // The level at which a point of this height joins: the first with z[k] < height (kNever: none).
 JoinTime joining_level(Real height, const std::vector<Real>& z);
+
+// When a point of this height joins {h > z}: its height's descending key at every distinct height (exact),
+// else its level among the fixed levels z.
+inline JoinTime join_time(Real height, bool exact, const std::vector<Real>& z) {
+  return exact ? descending_key(height) : joining_level(height, z);
+}
+
+// The sweep's curve before its rows: what it was swept with, and A0.
+SweepCurve empty_sweep_curve(const Grid& grid, const SweepLevels& levels, const Topology& topology);
+
+// Appends the row of the fixed level z: `points` of the grid's `total_points` above it, in `spots` spots.
+void append_level(SweepCurve& curve, Real z, Index points, Index spots, Index total_points);
 
 // Sweeps the points [first, last) of `heights` (row-major, the stripe's grid) at the levels z into `stripe`:
 // a stable counting sort by joining level, then the union-find pass with a record at each level.

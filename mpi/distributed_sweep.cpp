@@ -109,9 +109,7 @@ SweepCurve distributed_sweep(const Grid& grid, const HeightMap& local_heights, c
   }
   const Index level_count = static_cast<Index>(z.size());
   // When a point of this height joins {h > z}: its descending key (exact) or its level.
-  auto time_of_height = [&](Real height) {
-    return exact ? sweep_detail::descending_key(height) : sweep_detail::joining_level(height, z);
-  };
+  auto time_of_height = [&](Real height) { return sweep_detail::join_time(height, exact, z); };
 
   // The slabs that hold rows, in order: each is a stripe of the serial sweep.
   std::vector<int> stripes_of_ranks;
@@ -177,10 +175,7 @@ SweepCurve distributed_sweep(const Grid& grid, const HeightMap& local_heights, c
   const std::vector<StripeHistory> histories =
       exact ? gather_histories(history, stripes_of_ranks, comm) : std::vector<StripeHistory>{};
 
-  SweepCurve curve;
-  curve.topology = topology;
-  curve.levels = levels;
-  curve.nominal_area = grid.nominal_area();
+  SweepCurve curve = sweep_detail::empty_sweep_curve(grid, levels, topology);
   // Rank 0: the seams, on a grid of the stripes' first and last rows only (one row for a stripe of one row),
   // with core's seam join; the spots are the stripes' counts less the components counted twice.
   std::vector<std::int64_t> spots(static_cast<std::size_t>(level_count), 0);
@@ -227,13 +222,9 @@ SweepCurve distributed_sweep(const Grid& grid, const HeightMap& local_heights, c
   MPI_Bcast(spots.data(), static_cast<int>(level_count), MPI_INT64_T, 0, comm);
   MPI_Bcast(counts.data(), static_cast<int>(level_count), MPI_INT64_T, 0, comm);
 
-  const Real points_total = static_cast<Real>(grid.points());
-  for (Index k = 0; k < level_count; ++k) {
-    curve.z.push_back(z[static_cast<std::size_t>(k)]);
-    curve.points.push_back(counts[static_cast<std::size_t>(k)]);
-    curve.spots.push_back(spots[static_cast<std::size_t>(k)]);
-    curve.area_fraction.push_back(static_cast<Real>(counts[static_cast<std::size_t>(k)]) / points_total);
-  }
+  for (Index k = 0; k < level_count; ++k)
+    sweep_detail::append_level(curve, z[static_cast<std::size_t>(k)], counts[static_cast<std::size_t>(k)],
+                               spots[static_cast<std::size_t>(k)], grid.points());
   return curve;
 }
 

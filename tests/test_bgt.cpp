@@ -17,6 +17,7 @@
 #include "contactbench/theories/bush_gibson_thomas.hpp"
 #include "contactbench/theories/elliptic_integrals.hpp"
 #include "contactbench/theories/isotropic_moments.hpp"
+#include "tolerances.hpp"
 
 namespace contactbench {
 namespace {
@@ -42,8 +43,6 @@ constexpr Real kNayak = 1e-8;
 constexpr Real kDirectGrid = 1e-3;
 // Doubling the quadrature nodes (issue: 1e-6 relative; observed <= 3e-13).
 constexpr Real kConvergence = 1e-6;
-// The solver's loads against the requested ones (the solver stops at 1e-13 in ln P).
-constexpr Real kSolvedLoad = 1e-10;
 
 // ---------------------------------------------------------------------------------------------------------------
 // Independent references for K and E: the arithmetic-geometric mean in long double (Abramowitz & Stegun
@@ -319,10 +318,10 @@ TEST(BushGibsonThomas, CurveSolvesEachLoad) {
   ASSERT_EQ(curve.load.size(), loads.size());
   for (std::size_t i = 0; i < loads.size(); ++i) {
     SCOPED_TRACE("load = " + std::to_string(loads[i]));
-    EXPECT_NEAR(curve.load[i], loads[i], kSolvedLoad * loads[i]);
+    EXPECT_NEAR(curve.load[i], loads[i], tolerance::solved_load * loads[i]);
     EXPECT_NEAR(curve.separation[i], model.solve_separation(loads[i]), 1e-12 * std::sqrt(m.m0));
     EXPECT_NEAR(curve.spots[i], model.spot_density(curve.separation[i]) * a0,
-                kSolvedLoad * model.spot_density(curve.separation[i]) * a0);
+                tolerance::solved_load * model.spot_density(curve.separation[i]) * a0);
     // Below the linear law everywhere, and capped at 1.
     EXPECT_LE(curve.area_fraction[i], std::min<Real>(1, std::sqrt(pi) * loads[i] / std::sqrt(m.m2)));
     if (i > 0) {

@@ -2,7 +2,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -11,46 +10,18 @@
 #include <string>
 #include <vector>
 
-#include <sys/wait.h>
-
+#include "cli_runner.hpp"
 #include "csv_rows.hpp"
 
 namespace contactbench {
 namespace {
 
-struct CommandResult {
-  int status = -1;
-  std::string out, err;
-};
+using testing::CommandResult;
+using testing::slurp;
 
-std::string slurp(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
-class Cli : public ::testing::Test {
+class Cli : public testing::CliTest {
  protected:
-  void SetUp() override {
-    folder_ =
-        std::filesystem::temp_directory_path() /
-        ("contactbench_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    std::filesystem::remove_all(folder_);
-    std::filesystem::create_directories(folder_);
-  }
-  void TearDown() override { std::filesystem::remove_all(folder_); }
-
-  // `environment`: VAR=value assignments for the command (the shell's), or empty.
-  CommandResult run(const std::string& arguments, const std::string& environment = "") {
-    const auto out = folder_ / "stdout.txt", err = folder_ / "stderr.txt";
-    const std::string command = environment + (environment.empty() ? "" : " ") + std::string(CB_CLI_PATH) +
-                                " " + arguments + " >" + out.string() + " 2>" + err.string() + " </dev/null";
-    const int raw = std::system(command.c_str());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-  }
-
-  std::filesystem::path folder_;
+  Cli() : CliTest("contactbench_cli_") {}
 };
 
 // The number after "key": in a JSON text.

@@ -2,14 +2,11 @@
 // channel, fill and levelling were applied; convert writes .x3p, .npy and the project's format losslessly.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
 
-#include <sys/wait.h>
+#include "cli_runner.hpp"
 
 namespace contactbench {
 namespace {
@@ -18,38 +15,12 @@ namespace fs = std::filesystem;
 
 const fs::path samples{CB_DATA_DIR "/formats"};
 
-struct CommandResult {
-  int status = -1;
-  std::string out, err;
-};
+using testing::CommandResult;
+using testing::slurp;
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
-class ConvertCli : public ::testing::Test {
+class ConvertCli : public testing::CliTest {
  protected:
-  void SetUp() override {
-    folder_ = fs::temp_directory_path() /
-              ("contactbench_convert_cli_" +
-               std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
-  }
-  void TearDown() override { fs::remove_all(folder_); }
-
-  CommandResult run(const std::string& arguments) {
-    const auto out = folder_ / "stdout.txt", err = folder_ / "stderr.txt";
-    const std::string command = std::string(CB_CLI_PATH) + " " + arguments + " >" + out.string() + " 2>" +
-                                err.string() + " </dev/null";
-    const int raw = std::system(command.c_str());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-  }
-
-  fs::path folder_;
+  ConvertCli() : CliTest("contactbench_convert_cli_") {}
 };
 
 std::string json_text(const std::string& json, const std::string& key) {

@@ -2,7 +2,6 @@
 // write-then-read round trips; every kind of bad file refused with a message naming it; invalid points
 // refused by default and filled on request; channels; levelling.
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -16,7 +15,6 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 #include <zip.h>
 
 #include "contactbench/core/error.hpp"
@@ -26,6 +24,8 @@
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/topography_io.hpp"
+#include "height_bits.hpp"
+#include "test_folder.hpp"
 #include "tolerances.hpp"
 
 namespace contactbench {
@@ -109,25 +109,10 @@ TopographyReadOptions with_level(Levelling level) {
   return options;
 }
 
-class FormatFiles : public ::testing::Test {
+class FormatFiles : public testing::FolderTest {
  protected:
-  FormatFiles() {
-    const std::string test_name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    folder_ = fs::temp_directory_path() /
-              ("contactbench_test_formats_" + std::to_string(::getpid()) + "_" + test_name);
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
-  }
-  ~FormatFiles() override {
-    std::error_code ignored;
-    fs::remove_all(folder_, ignored);
-  }
-  fs::path write(const std::string& name, std::string_view content) const {
-    const fs::path path = folder_ / name;
-    std::ofstream out(path, std::ios::binary);
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    return path;
-  }
+  FormatFiles() : FolderTest("contactbench_test_formats_") {}
+
   // A zip archive with the given members, stored uncompressed.
   fs::path write_zip(const std::string& name,
                      const std::vector<std::pair<std::string, std::string>>& members) const {
@@ -142,7 +127,6 @@ class FormatFiles : public ::testing::Test {
     EXPECT_EQ(zip_close(archive), 0);
     return path;
   }
-  fs::path folder_;
 };
 
 // The members of an archive, for building corrupt variants of a good one.
@@ -284,13 +268,7 @@ TEST(FormatSamples, NetcdfNonSquare) {
 // ---------------------------------------------------------------------------------------------------------
 // Round trips.
 
-std::vector<std::uint64_t> bits_of(const HeightMap& heights) {
-  std::vector<std::uint64_t> bits;
-  for (Index row = 0; row < heights.rows(); ++row)
-    for (Index column = 0; column < heights.cols(); ++column)
-      bits.push_back(std::bit_cast<std::uint64_t>(heights(row, column)));
-  return bits;
-}
+using testing::bits_of;
 
 Surface generated_surface() {
   // Non-square and rectangular pixels, so a transposition cannot go unnoticed.

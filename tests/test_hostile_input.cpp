@@ -22,7 +22,6 @@ namespace contactbench {
 namespace {
 
 namespace fs = std::filesystem;
-using testing::run_contactbench;
 
 std::vector<CsvRow> csv_rows(const std::string& text) {
   std::vector<std::string> header;
@@ -35,24 +34,15 @@ Surface small_surface(Real height_scale = 1) {
   return Surface(s.grid(), s.heights() * height_scale);
 }
 
-class HostileInput : public ::testing::Test {
+class HostileInput : public testing::CliTest {
  protected:
-  void SetUp() override {
-    folder_ = fs::temp_directory_path() /
-              ("contactbench_hostile_" +
-               std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
-  }
-  void TearDown() override { fs::remove_all(folder_); }
-  testing::CommandResult run(const std::string& arguments) { return run_contactbench(arguments, folder_); }
+  HostileInput() : CliTest("contactbench_hostile_") {}
   // A surface file of the small surface with its heights scaled.
   std::string surface_file(const std::string& name, Real height_scale = 1) {
     const fs::path path = folder_ / name;
     write_surface(path, small_surface(height_scale));
     return "'" + path.string() + "'";
   }
-  fs::path folder_;
 };
 
 // Stopped far from the solution (one iteration; the pressure change may be small there, as it was with E* =

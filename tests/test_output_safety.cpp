@@ -7,13 +7,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "cli_runner.hpp"
 #include "contactbench/app/output_folder.hpp"
 #include "contactbench/core/atomic_file.hpp"
 #include "contactbench/core/error.hpp"
@@ -23,41 +22,28 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
+using testing::slurp;
 
-class OutputSafety : public ::testing::Test {
+class OutputSafety : public testing::CliTest {
  protected:
+  OutputSafety() : CliTest("contactbench_output_") {}
+
   void SetUp() override {
-    folder_ = fs::temp_directory_path() /
-              ("contactbench_output_" +
-               std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
     surface_ = folder_ / "s.txt";
     ASSERT_EQ(cli("generate --sigma 1e-6 --hurst 0.8 --qr 2e5 --size 32e-6 --grid 16 --seed 1 --out " +
                   surface_.string()),
               0)
         << err_;
   }
-  void TearDown() override { fs::remove_all(folder_); }
 
   // Runs the program with `arguments`; stdout goes to `out` (a file of the test's folder by default).
   int cli(const std::string& arguments, const std::string& out = "") {
-    const fs::path err = folder_ / "stderr.txt";
-    const std::string target = out.empty() ? (folder_ / "stdout.txt").string() : out;
-    const int raw = std::system(
-        (std::string(CB_CLI_PATH) + " " + arguments + " >" + target + " 2>" + err.string() + " </dev/null")
-            .c_str());
-    err_ = slurp(err);
-    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    const testing::CommandResult result = testing::run_contactbench(arguments, folder_, "", out);
+    err_ = result.err;
+    return result.status;
   }
 
-  fs::path folder_, surface_;
+  fs::path surface_;
   std::string err_;
 };
 

@@ -12,12 +12,12 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "contactbench/app/methods/method.hpp"
 #include "contactbench/app/methods/registry.hpp"
 #include "contactbench/app/scene_keys.hpp"
 #include "contactbench/core/material.hpp"
+#include "test_folder.hpp"
 
 namespace contactbench {
 namespace {
@@ -52,6 +52,9 @@ nu = 0.3
 E2 = 200e9
 nu2 = 0.25
 
+[interface]
+hardness = 5e9
+
 [loads]
 range = { from = 1e-4, to = 1e-2, count = 5, spacing = "log" }
 
@@ -61,7 +64,6 @@ refine = 1024
 tolerance = 1e-9
 max_iterations = 5000
 periodic = true
-hardness = 5e9
 connectivity = 8
 solver = "polonsky_keer"
 
@@ -252,25 +254,9 @@ class JsonChecker {
 };
 
 // Each test that writes files gets a fresh folder of its own.
-class SceneFiles : public ::testing::Test {
+class SceneFiles : public testing::FolderTest {
  protected:
-  SceneFiles() {
-    const std::string test_name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    folder_ = fs::temp_directory_path() /
-              ("contactbench_test_scene_" + std::to_string(::getpid()) + "_" + test_name);
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
-  }
-  ~SceneFiles() override {
-    std::error_code ignored;
-    fs::remove_all(folder_, ignored);
-  }
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path path = folder_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
-  fs::path folder_;
+  SceneFiles() : FolderTest("contactbench_test_scene_") {}
 };
 
 TEST(Scene, FullSceneRoundTrips) {
@@ -306,7 +292,8 @@ TEST(Scene, FullSceneRoundTrips) {
   EXPECT_EQ(key(bem, "tolerance"), Value{1e-9});
   EXPECT_EQ(key(bem, "max_iterations"), Value{std::int64_t{5000}});
   EXPECT_EQ(key(bem, "periodic"), Value{true});
-  EXPECT_EQ(key(bem, "hardness"), Value{5e9});
+  EXPECT_EQ(first.interface.hardness, 5e9);
+  EXPECT_FALSE(has_key(bem, "hardness")) << "an effect of the interface, not a key of the method";
   EXPECT_EQ(key(bem, "connectivity"), Value{std::int64_t{8}});
   EXPECT_EQ(key(bem, "solver"), Value{std::string("polonsky_keer")});
   const MethodSpec& paper = first.method("plateau_4");
@@ -653,7 +640,17 @@ std::vector<InvalidCase> invalid_cases() {
       {"ToleranceHalf", bem("tolerance = 0.5"), "methods.bem.tolerance", "out of range", "[1e-13, 0.01]"},
       {"ToleranceOne", bem("tolerance = 1"), "methods.bem.tolerance", "out of range", "[1e-13, 0.01]"},
       {"MaxIterationsZero", bem("max_iterations = 0"), "methods.bem.max_iterations", "out of range", "[1, "},
-      {"HardnessZero", bem("hardness = 0"), "methods.bem.hardness", "out of range", "> 0"},
+      {"HardnessZero", methods("[interface]\nhardness = 0\n[methods.bem]\n"), "interface.hardness",
+       "out of range", "> 0"},
+      // The BEM's key of earlier versions names the new place.
+      {"HardnessOfTheBem", bem("hardness = 1e9"), "methods.bem.hardness", "a property of the interface",
+       "interface.hardness"},
+      {"UnknownInterfaceKey", methods("[interface]\nfriction = 0.3\n[methods.bem]\n"), "interface.friction",
+       "unknown key", "hardness"},
+      {"UnknownEffectIgnored", bem("ignore = [\"friction\"]"), "methods.bem.ignore[0]",
+       "unknown effect \"friction\"", "hardness"},
+      {"IgnoreNotAnArray", bem("ignore = \"hardness\""), "methods.bem.ignore", "wrong type",
+       "an array of effect names"},
       {"BemUnknownSolver", bem("solver = \"multigrid\""), "methods.bem.solver",
        "unknown choice \"multigrid\"", "\"polonsky_keer\", \"preconditioned_cg\""},
       {"BemSolverNotAString", bem("solver = 1"), "methods.bem.solver", "wrong type", "\"polonsky_keer\""},

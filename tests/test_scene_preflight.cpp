@@ -76,11 +76,32 @@ TEST(Preflight, ATheoryThatRefusesTheSurfaceStopsTheSceneBeforeTheBem) {
 TEST(Preflight, AHardnessAtOrBelowALoadStopsTheSceneBeforeTheBem) {
   // E* = 109.9 GPa: the loads 1e-3 and 1e-2 are mean pressures of 0.11 and 1.1 GPa; the cap is 0.5 GPa.
   const Refusal refusal = refusal_of("name = \"capped\"\n" + kSurface + "[loads]\nvalues = [1e-3, 1e-2]\n" +
-                                     "[methods.plateau]\n[methods.bem]\nhardness = 5e8\n");
+                                     "[interface]\nhardness = 5e8\n" +
+                                     "[methods.plateau]\nignore = [\"hardness\"]\n[methods.bem]\n");
   expect_nothing_but_the_inputs(refusal);
   ASSERT_EQ(refusal.problems.size(), 1u) << all(refusal);
-  EXPECT_TRUE(has_problem(refusal, "methods.bem.hardness", "0.01 (load 2)")) << all(refusal);
+  EXPECT_TRUE(has_problem(refusal, "interface.hardness", "0.01 (load 2)")) << all(refusal);
   EXPECT_EQ(refusal.problems[0].find("0.001 (load 1)"), std::string::npos) << "the load below H is fine";
+}
+
+// Effects belong to the scene (app/interface.hpp): a method that does not model one is refused, naming the
+// method and the effect, unless its table ignores it; an ignore of an effect the scene lacks is a mistake.
+TEST(Preflight, AnEffectAMethodDoesNotModelIsRefusedNamingBoth) {
+  const Refusal refusal = refusal_of("name = \"plastic\"\n" + kSurface + "[interface]\nhardness = 2e9\n" +
+                                     "[loads]\nvalues = [1e-3]\n[methods.bem]\n[methods.persson]\n");
+  expect_nothing_but_the_inputs(refusal);
+  ASSERT_EQ(refusal.problems.size(), 1u) << all(refusal);
+  EXPECT_TRUE(has_problem(refusal, "methods.persson", "persson does not model the interface's hardness"))
+      << all(refusal);
+  EXPECT_NE(refusal.problems[0].find("ignore = [\"hardness\"]"), std::string::npos) << all(refusal);
+}
+
+TEST(Preflight, IgnoringAnEffectTheSceneLacksIsRefused) {
+  const Refusal refusal = refusal_of("name = \"elastic\"\n" + kSurface + "[loads]\nvalues = [1e-3]\n" +
+                                     "[methods.persson]\nignore = [\"hardness\"]\n");
+  expect_nothing_but_the_inputs(refusal);
+  ASSERT_EQ(refusal.problems.size(), 1u) << all(refusal);
+  EXPECT_TRUE(has_problem(refusal, "methods.persson.ignore", "does not call for")) << all(refusal);
 }
 
 TEST(Preflight, LoadsATheoryRefusesStopTheSceneBeforeTheBem) {
@@ -93,14 +114,15 @@ TEST(Preflight, LoadsATheoryRefusesStopTheSceneBeforeTheBem) {
 }
 
 TEST(Preflight, EveryProblemOfEveryMethodIsListedAtOnce) {
-  std::string text = "name = \"everything\"\n" + kSurface + "[loads]\nvalues = [1e-3, 5]\n" +
-                     "[methods.bem]\nhardness = 5e8\n[methods.gw_mccool]\n[methods.bgt]\n"
-                     "anisotropy = \"average\"\n";
+  std::string text = "name = \"everything\"\n" + kSurface + "[interface]\nhardness = 5e8\n" +
+                     "[loads]\nvalues = [1e-3, 5]\n" +
+                     "[methods.bem]\n[methods.gw_mccool]\nignore = [\"hardness\"]\n[methods.bgt]\n"
+                     "anisotropy = \"average\"\nignore = [\"hardness\"]\n";
   text.replace(text.find("seed = 2 }"), 10, "seed = 2, anisotropy = 2 }");
   const Refusal refusal = refusal_of(text);
   expect_nothing_but_the_inputs(refusal);
   EXPECT_EQ(refusal.problems.size(), 3u) << all(refusal);
-  EXPECT_TRUE(has_problem(refusal, "methods.bem.hardness", "full plastic contact")) << all(refusal);
+  EXPECT_TRUE(has_problem(refusal, "interface.hardness", "full plastic contact")) << all(refusal);
   EXPECT_TRUE(has_problem(refusal, "methods.gw_mccool.anisotropy", "anisotropic")) << all(refusal);
   EXPECT_TRUE(has_problem(refusal, "methods.bgt", "= 5 is beyond")) << all(refusal);
 }

@@ -123,13 +123,15 @@ tolerance = 1e-4
 
 // An effect runs only where a method names it: the pressure cap shows in its stage and its own column, and
 // the elastic method beside it has neither (and caps nothing: more area under the cap at the same load).
-TEST(ScenePlan, AHardnessRunsOnlyForTheMethodThatAsksForIt) {
+TEST(ScenePlan, AHardnessRunsOnlyForTheMethodThatRunsWithIt) {
   const SceneReport report = run_text("name = \"cap\"\nreference = \"\"\n" + kSmallSurface + R"(
+[interface]
+hardness = 2e9
 [methods.elastic]
 method = "bem"
+ignore = ["hardness"]
 [methods.capped]
 method = "bem"
-hardness = 2e9
 )");
   std::vector<std::string> solves;
   for (const StageRecord& stage : report.stages)
@@ -267,6 +269,35 @@ method = "gw_mccool"
   EXPECT_NE(plot.str().find("title 'gw (elastic: ignores hardness)'"), std::string::npos) << plot.str();
   EXPECT_NE(table.str().find("(not converged)"), std::string::npos) << table.str();
   EXPECT_EQ(unconverged_loads(report.methods[2].curve), (std::vector<std::size_t>{1}));
+}
+
+// A scene with a hardness and a method that ignores it (app/interface.hpp): the method runs elastic, and
+// table.md, summary.json and the plot legend mark its row; the BEM, which models the cap, is unmarked and
+// solves capped.
+TEST(SceneRun, AMethodThatIgnoresAnEffectIsMarkedInEveryOutput) {
+  const SceneReport report = run_text("name = \"plastic\"\n" + kSmallSurface + R"(
+[interface]
+hardness = 2e9
+[methods.bem]
+[methods.persson]
+ignore = ["hardness"]
+)");
+  ASSERT_EQ(report.methods.size(), 2u);
+  EXPECT_EQ(report.methods[0].note, "");
+  EXPECT_NE(report.methods[0].curve.parameters.find("hardness 2e+09 Pa"), std::string::npos);
+  EXPECT_EQ(report.methods[1].note, "elastic: ignores hardness");
+  const Comparison comparison = compare(report);
+  std::ostringstream table, summary, plot;
+  write_table_md(table, report, comparison, current_provenance(1, "test"));
+  write_summary_json(summary, report, comparison, current_provenance(1, "test"));
+  write_gnuplot_script(plot, report, "a.png", "a.svg");
+  EXPECT_NE(table.str().find("| persson (elastic: ignores hardness) |"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("| bem |"), std::string::npos) << table.str();
+  EXPECT_NE(summary.str().find("\"note\": \"elastic: ignores hardness\""), std::string::npos)
+      << summary.str();
+  EXPECT_NE(summary.str().find("\"ignored_effects\": [\"hardness\"]"), std::string::npos) << summary.str();
+  EXPECT_NE(summary.str().find("\"interface\": {"), std::string::npos) << "the scene as understood";
+  EXPECT_NE(plot.str().find("title 'persson (elastic: ignores hardness)'"), std::string::npos) << plot.str();
 }
 
 // The shipped paper scenes at 32 x 32 (BEM at 64 x 64): every method answers at every load (the

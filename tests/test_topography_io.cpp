@@ -2,9 +2,7 @@
 // plain matrices, and one test per kind of bad input.
 #include "contactbench/core/topography_io.hpp"
 
-#include <bit>
 #include <cmath>
-#include <cstdint>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -13,9 +11,10 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include "contactbench/core/error.hpp"
+#include "height_bits.hpp"
+#include "test_folder.hpp"
 #include "tolerances.hpp"
 
 namespace contactbench {
@@ -63,39 +62,12 @@ void expect_input_error(const fs::path& file, long line, std::string_view reason
 }
 
 // Each test writes its files into a fresh folder of its own and removes it afterwards.
-class TopographyIoFiles : public ::testing::Test {
+class TopographyIoFiles : public testing::FolderTest {
  protected:
-  TopographyIoFiles() {
-    const std::string test_name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    folder_ = fs::temp_directory_path() /
-              ("contactbench_test_topography_io_" + std::to_string(::getpid()) + "_" + test_name);
-    fs::remove_all(folder_);
-    fs::create_directories(folder_);
-  }
-  ~TopographyIoFiles() override {
-    std::error_code ignored;
-    fs::remove_all(folder_, ignored);
-  }
-
-  // Writes the bytes exactly as given (binary: CRLF stays CRLF).
-  fs::path write(const std::string& name, std::string_view content) const {
-    const fs::path path = folder_ / name;
-    std::ofstream out(path, std::ios::binary);
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    return path;
-  }
-
-  fs::path folder_;
+  TopographyIoFiles() : FolderTest("contactbench_test_topography_io_") {}
 };
 
-// Bit patterns, so that -0.0 and 0.0 differ and the comparison is truly bit for bit.
-std::vector<std::uint64_t> bits_of(const HeightMap& heights) {
-  std::vector<std::uint64_t> bits;
-  for (Index row = 0; row < heights.rows(); ++row)
-    for (Index column = 0; column < heights.cols(); ++column)
-      bits.push_back(std::bit_cast<std::uint64_t>(heights(row, column)));
-  return bits;
-}
+using testing::bits_of;
 
 TEST(TopographyIoMeasured, InterferometerSquareMatrix2) {
   const Surface surface = read_topography(measured_folder / "matrix-2.txt");

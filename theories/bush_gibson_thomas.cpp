@@ -1,18 +1,18 @@
 #include "contactbench/theories/bush_gibson_thomas.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "contactbench/core/error.hpp"
 #include "contactbench/theories/brent_root.hpp"
 #include "contactbench/theories/elliptic_integrals.hpp"
 #include "contactbench/theories/gaussian_tail_integrals.hpp"
 #include "contactbench/theories/number_text.hpp"
-#include "contactbench/theories/requested_loads.hpp"
+#include "contactbench/theories/theory_curve.hpp"
 
 namespace contactbench {
 namespace {
@@ -20,8 +20,6 @@ namespace {
 constexpr Real pi = std::numbers::pi;
 constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
 
-// Root finding in ln P: 1e-13 absolute is 1e-13 relative in the load (the requirement is 1e-12).
-constexpr Real kLogLoadTolerance = 1e-13;
 // Absolute floor of the bracket width in zeta = d/sqrt(m0).
 constexpr Real kSeparationTolerance = 1e-15;
 // The axis ratio: ln of the curvature ratio to 1e-15 gives (b/a)^2 to about 1e-15.
@@ -245,33 +243,24 @@ Real BushGibsonThomas::solve_separation(Real load) const {
 
 LoadAreaCurve bgt_curve(const SpectralMoments& moments, std::span<const Real> loads,
                         std::optional<Real> nominal_area) {
-  const auto start = std::chrono::steady_clock::now();
-  const std::string method = "bgt";
-  const IsotropicMoments m = isotropic_moments(moments, method);
+  TheoryCurve curve("bgt");
+  const IsotropicMoments m = isotropic_moments(moments, curve.method());
   const BushGibsonThomas model(m);
-  validate_loads(loads, method);
-  if (nominal_area && !(std::isfinite(*nominal_area) && *nominal_area > 0))
-    throw Error(method + ": the nominal area must be finite and > 0 m^2, got " +
-                format_number(*nominal_area));
-  LoadAreaCurve curve;
-  curve.method = method;
+  curve.check_request(loads, nominal_area);
   Real cap_from = nan;  // first load whose A/A0 was capped
   for (const Real load : loads) {
     const Real d = model.solve_separation(load);
     const Real area = model.area_fraction(d);
     if (area > 1 && std::isnan(cap_from)) cap_from = load;
-    curve.load.push_back(model.load(d));
-    curve.area_fraction.push_back(std::min<Real>(area, 1));
-    curve.separation.push_back(d);
-    curve.spots.push_back(nominal_area ? model.spot_density(d) * *nominal_area : nan);
+    curve.add(model.load(d), std::min<Real>(area, 1), d,
+              nominal_area ? model.spot_density(d) * *nominal_area : nan);
   }
-  curve.parameters = describe(m) +
-                     "; full Bush-Gibson-Thomas (1975): elliptic Hertz summits with Nayak's height-curvature "
-                     "density, separation d solved for each load; quadrature " +
-                     std::to_string(model.curvature_nodes()) + " x " + std::to_string(model.shape_nodes()) +
-                     " nodes";
-  curve.parameters += nominal_area ? "; spots = N/A0 x A0 with A0 = " + format_number(*nominal_area) + " m^2"
-                                   : "; spots not given (NaN): no nominal area";
+  std::string parameters = describe(m) +
+                           "; full Bush-Gibson-Thomas (1975): elliptic Hertz summits with Nayak's "
+                           "height-curvature density, separation d solved for each load; quadrature " +
+                           std::to_string(model.curvature_nodes()) + " x " +
+                           std::to_string(model.shape_nodes()) + " nodes";
+  parameters += spots_text(nominal_area);
   if (!std::isnan(cap_from)) {
     // The separation at which BGT's A/A0 reaches 1: A/A0 decreases with d and exceeds 1 at the capped load.
     const Real d_capped = model.solve_separation(cap_from), d_max = kBgtMaxSeparation * std::sqrt(m.m0);
@@ -280,11 +269,10 @@ LoadAreaCurve bgt_curve(const SpectralMoments& moments, std::span<const Real> lo
     const Real d_full = f_max >= 0 ? d_max
                                    : find_root(excess, d_capped, d_max, excess(d_capped), f_max,
                                                kLogLoadTolerance, kSeparationTolerance * std::sqrt(m.m0));
-    curve.parameters += "; capped at A/A0 = 1 for loads >= " + format_number(model.load(d_full)) +
-                        " (BGT's A/A0 exceeds 1 beyond)";
+    parameters += "; capped at A/A0 = 1 for loads >= " + format_number(model.load(d_full)) +
+                  " (BGT's A/A0 exceeds 1 beyond)";
   }
-  curve.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return curve;
+  return curve.finish(std::move(parameters));
 }
 
 }  // namespace contactbench

@@ -23,6 +23,29 @@ bool nonnegative(Real v) {
   return std::isfinite(v) && v >= 0;
 }
 
+// A_n and 4^-n after Carlson's duplication (1995, eq. 2.2, shared by R_F and R_D).
+struct Duplicated {
+  Real a, scale;
+};
+
+// Duplicates until 4^-n Q < |A_n|: x, y, z and their mean a each become (v + lambda)/4, lambda = sqrt(x y) +
+// sqrt(y z) + sqrt(z x). Before each step, term(4^-n, sqrt(z), z, lambda) sees it (R_D sums one term a step).
+template <typename Term>
+Duplicated duplicate(Real x, Real y, Real z, Real a, Real q, Term term) {
+  Real scale = 1;  // 4^-n
+  for (int n = 0; n < kMaxDuplications && scale * q >= std::abs(a); ++n) {
+    const Real sx = std::sqrt(x), sy = std::sqrt(y), sz = std::sqrt(z);
+    const Real lambda = sx * sy + sy * sz + sz * sx;
+    term(scale, sz, z, lambda);
+    a = (a + lambda) / 4;
+    x = (x + lambda) / 4;
+    y = (y + lambda) / 4;
+    z = (z + lambda) / 4;
+    scale /= 4;
+  }
+  return {a, scale};
+}
+
 }  // namespace
 
 // Carlson (1995) eqs. (2.2)-(2.4); the series is DLMF 19.36.1.
@@ -30,22 +53,12 @@ Real carlson_rf(Real x, Real y, Real z) {
   if (!(nonnegative(x) && nonnegative(y) && nonnegative(z)) || (x == 0) + (y == 0) + (z == 0) > 1)
     throw Error("carlson_rf: arguments must be finite and >= 0 with at most one 0, got " + format_number(x) +
                 ", " + format_number(y) + ", " + format_number(z));
-  const Real x0 = x, y0 = y, a0 = (x + y + z) / 3;
-  Real a = a0;
+  const Real a0 = (x + y + z) / 3;
   const Real q = std::pow(3 * kRelativeError, -1.0 / 6.0) *
                  std::max({std::abs(a0 - x), std::abs(a0 - y), std::abs(a0 - z)});
-  Real scale = 1;  // 4^-n
-  for (int n = 0; n < kMaxDuplications && scale * q >= std::abs(a); ++n) {
-    const Real sx = std::sqrt(x), sy = std::sqrt(y), sz = std::sqrt(z);
-    const Real lambda = sx * sy + sy * sz + sz * sx;
-    a = (a + lambda) / 4;
-    x = (x + lambda) / 4;
-    y = (y + lambda) / 4;
-    z = (z + lambda) / 4;
-    scale /= 4;
-  }
+  const auto [a, scale] = duplicate(x, y, z, a0, q, [](Real, Real, Real, Real) {});
   // X = (A_0 - x_0)/(4^n A_n), Y likewise, Z = -X - Y.
-  const Real xx = (a0 - x0) * scale / a, yy = (a0 - y0) * scale / a;
+  const Real xx = (a0 - x) * scale / a, yy = (a0 - y) * scale / a;
   const Real zz = -(xx + yy);
   const Real e2 = xx * yy - zz * zz, e3 = xx * yy * zz;
   return (1 - e2 / 10 + e3 / 14 + e2 * e2 / 24 - 3 * e2 * e3 / 44 - 5 * e2 * e2 * e2 / 208 +
@@ -58,24 +71,15 @@ Real carlson_rd(Real x, Real y, Real z) {
   if (!(nonnegative(x) && nonnegative(y) && std::isfinite(z) && z > 0) || (x == 0 && y == 0))
     throw Error("carlson_rd: x, y must be finite and >= 0, not both 0, z finite and > 0, got " +
                 format_number(x) + ", " + format_number(y) + ", " + format_number(z));
-  const Real x0 = x, y0 = y, a0 = (x + y + 3 * z) / 5;
-  Real a = a0;
+  const Real a0 = (x + y + 3 * z) / 5;
   const Real q = std::pow(kRelativeError / 4, -1.0 / 6.0) *
                  std::max({std::abs(a0 - x), std::abs(a0 - y), std::abs(a0 - z)});
-  Real scale = 1;  // 4^-n
   Real sum = 0;
-  for (int n = 0; n < kMaxDuplications && scale * q >= std::abs(a); ++n) {
-    const Real sx = std::sqrt(x), sy = std::sqrt(y), sz = std::sqrt(z);
-    const Real lambda = sx * sy + sy * sz + sz * sx;
-    sum += scale / (sz * (z + lambda));
-    a = (a + lambda) / 4;
-    x = (x + lambda) / 4;
-    y = (y + lambda) / 4;
-    z = (z + lambda) / 4;
-    scale /= 4;
-  }
+  const auto [a, scale] = duplicate(x, y, z, a0, q, [&sum](Real step_scale, Real sz, Real zn, Real lambda) {
+    sum += step_scale / (sz * (zn + lambda));
+  });
   // X = (A_0 - x_0)/(4^n A_n), Y likewise, Z = -(X + Y)/3.
-  const Real xx = (a0 - x0) * scale / a, yy = (a0 - y0) * scale / a;
+  const Real xx = (a0 - x) * scale / a, yy = (a0 - y) * scale / a;
   const Real zz = -(xx + yy) / 3;
   const Real xy = xx * yy, z2 = zz * zz;
   const Real e2 = xy - 6 * z2, e3 = (3 * xy - 8 * z2) * zz, e4 = 3 * (xy - z2) * z2, e5 = xy * z2 * zz;

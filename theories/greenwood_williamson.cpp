@@ -1,17 +1,17 @@
 #include "contactbench/theories/greenwood_williamson.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "contactbench/core/error.hpp"
 #include "contactbench/theories/brent_root.hpp"
 #include "contactbench/theories/gaussian_tail_integrals.hpp"
 #include "contactbench/theories/number_text.hpp"
-#include "contactbench/theories/requested_loads.hpp"
+#include "contactbench/theories/theory_curve.hpp"
 
 namespace contactbench {
 namespace {
@@ -19,8 +19,6 @@ namespace {
 constexpr Real pi = std::numbers::pi;
 // McCool (1986) after Nayak (1971): the summit height variance is (1 - 0.8968/alpha) m0.
 constexpr Real kNayakSummitVariance = 0.8968;
-// Root finding in ln P: 1e-13 absolute is 1e-13 relative in the load (the requirement is 1e-12).
-constexpr Real kLogLoadTolerance = 1e-13;
 // Absolute floor of the bracket width in t (the relative floor 4 eps |t| comes first except near t = 0).
 constexpr Real kSeparationTolerance = 1e-15;
 
@@ -57,29 +55,23 @@ Real solve_separation(const GwParameters& gw, Real load, const std::string& meth
                    kSeparationTolerance);
 }
 
+// The curve of GW summits `gw`; its parameters text begins with `prefix`.
 LoadAreaCurve solve_curve(const GwParameters& gw, std::span<const Real> loads,
-                          std::optional<Real> nominal_area, const std::string& method) {
+                          std::optional<Real> nominal_area, TheoryCurve curve, const std::string& prefix) {
   validate(gw);
-  validate_loads(loads, method);
-  if (nominal_area && !(std::isfinite(*nominal_area) && *nominal_area > 0))
-    throw Error(method + ": the nominal area must be finite and > 0 m^2, got " +
-                format_number(*nominal_area));
-  LoadAreaCurve curve;
-  curve.method = method;
+  curve.check_request(loads, nominal_area);
+  const std::string& method = curve.method();
   Real cap_from = std::numeric_limits<Real>::quiet_NaN();  // first load whose A/A0 was capped
   for (const Real load : loads) {
     const Real t = solve_separation(gw, load, method);
     const Real area = gw_area_fraction(gw, t);
     if (area > 1 && std::isnan(cap_from)) cap_from = load;
-    curve.load.push_back(gw_load(gw, t));
-    curve.area_fraction.push_back(std::min<Real>(area, 1));
-    curve.separation.push_back(gw_separation(gw, t));
-    curve.spots.push_back(nominal_area ? gw_spot_density(gw, t) * *nominal_area
-                                       : std::numeric_limits<Real>::quiet_NaN());
+    curve.add(gw_load(gw, t), std::min<Real>(area, 1), gw_separation(gw, t),
+              nominal_area ? gw_spot_density(gw, t) * *nominal_area : std::numeric_limits<Real>::quiet_NaN());
   }
-  curve.parameters = "GW summits: " + describe(gw) + "; separation d = ys + t sigma_s solved for each load";
-  curve.parameters += nominal_area ? "; spots = N/A0 x A0 with A0 = " + format_number(*nominal_area) + " m^2"
-                                   : "; spots not given (NaN): no nominal area";
+  std::string parameters =
+      prefix + "GW summits: " + describe(gw) + "; separation d = ys + t sigma_s solved for each load";
+  parameters += spots_text(nominal_area);
   if (!std::isnan(cap_from)) {
     // The load at which GW's A/A0 reaches 1: A/A0 decreases with t, and exceeds 1 at the capped load's t.
     const Real log_area_1 = log_area_prefactor(gw);
@@ -89,10 +81,10 @@ LoadAreaCurve solve_curve(const GwParameters& gw, std::span<const Real> loads,
     const Real t_full = f_max >= 0 ? kGwMaxSeparation
                                    : find_root(excess, t_capped, kGwMaxSeparation, excess(t_capped), f_max,
                                                kLogLoadTolerance, kSeparationTolerance);
-    curve.parameters += "; capped at A/A0 = 1 for loads >= " + format_number(gw_load(gw, t_full)) +
-                        " (GW's A/A0 exceeds 1 beyond)";
+    parameters += "; capped at A/A0 = 1 for loads >= " + format_number(gw_load(gw, t_full)) +
+                  " (GW's A/A0 exceeds 1 beyond)";
   }
-  return curve;
+  return curve.finish(std::move(parameters));
 }
 
 }  // namespace
@@ -157,20 +149,15 @@ Real gw_solve_separation(const GwParameters& gw, Real load) {
 
 LoadAreaCurve greenwood_williamson_curve(const GwParameters& gw, std::span<const Real> loads,
                                          std::optional<Real> nominal_area) {
-  const auto start = std::chrono::steady_clock::now();
-  LoadAreaCurve curve = solve_curve(gw, loads, nominal_area, "greenwood_williamson");
-  curve.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return curve;
+  return solve_curve(gw, loads, nominal_area, TheoryCurve("greenwood_williamson"), "");
 }
 
 LoadAreaCurve gw_mccool_curve(const SpectralMoments& moments, std::span<const Real> loads,
                               std::optional<Real> nominal_area) {
-  const auto start = std::chrono::steady_clock::now();
-  const IsotropicMoments m = isotropic_moments(moments, "gw_mccool");
-  LoadAreaCurve curve = solve_curve(mccool_parameters(m), loads, nominal_area, "gw_mccool");
-  curve.parameters = describe(m) + "; McCool (1986) " + curve.parameters;
-  curve.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return curve;
+  TheoryCurve curve("gw_mccool");
+  const IsotropicMoments m = isotropic_moments(moments, curve.method());
+  const GwParameters gw = mccool_parameters(m);
+  return solve_curve(gw, loads, nominal_area, std::move(curve), describe(m) + "; McCool (1986) ");
 }
 
 }  // namespace contactbench

@@ -1,14 +1,11 @@
 #include "contactbench/theories/persson.hpp"
 
-#include <chrono>
 #include <cmath>
-#include <limits>
 #include <numbers>
 
 #include "contactbench/core/error.hpp"
 #include "contactbench/theories/isotropic_moments.hpp"
-#include "contactbench/theories/number_text.hpp"
-#include "contactbench/theories/requested_loads.hpp"
+#include "contactbench/theories/theory_curve.hpp"
 
 namespace contactbench {
 
@@ -43,21 +40,13 @@ Real persson_q3_integral(const FourierCoefficients& c) {
 }
 
 LoadAreaCurve persson_curve(const SpectralMoments& moments, std::span<const Real> loads) {
-  const auto start = std::chrono::steady_clock::now();
-  const Real m2 = isotropic_m2(moments, "persson");
-  validate_loads(loads, "persson");
-  LoadAreaCurve curve;
-  curve.method = "persson";
-  curve.parameters = "profile m2 = mean of m2x and m2y = " + format_number(m2) +
-                     "; A/A0 = erf(P/(E* A0 sqrt(m2))) (Persson 2001, full magnification)";
-  for (const Real load : loads) {
-    curve.load.push_back(load);
-    curve.area_fraction.push_back(persson_area_fraction(load, m2));
-    curve.separation.push_back(std::numeric_limits<Real>::quiet_NaN());
-    curve.spots.push_back(std::numeric_limits<Real>::quiet_NaN());
-  }
-  curve.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return curve;
+  TheoryCurve curve("persson");
+  const Real m2 = isotropic_m2(moments, curve.method());
+  curve.check_request(loads);
+  for (const Real load : loads)
+    curve.add(load, persson_area_fraction(load, m2));
+  return curve.finish(profile_m2_text(m2) +
+                      "; A/A0 = erf(P/(E* A0 sqrt(m2))) (Persson 2001, full magnification)");
 }
 
 }  // namespace contactbench

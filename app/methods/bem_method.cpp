@@ -34,6 +34,7 @@ constexpr Real kLargestTolerance = 1e-2;
 class BemMethod final : public Method {
  public:
   std::string_view name() const override { return "bem"; }
+  std::vector<Effect> models() const override { return {Effect::hardness}; }
   std::string compared_area() const override {
     if (nodes_)
       return "area_fraction_nodes (contact nodes / all nodes, as a node-based finite-element model reports "
@@ -53,7 +54,7 @@ class BemMethod final : public Method {
                       "fields", "connectivity", "solver", "extrapolate", "area", "allow_unconverged"});
     std::vector<std::string_view> solvers(solver_names().begin(), solver_names().end());
     solve_.solver =
-        solver_kind(s.choice("solver", solvers).value_or(std::string(solver_name(default_bem_solver()))));
+        solver_kind(s.choice("solver", solvers).value_or(std::string(solver_name(kDefaultSolver))));
     solve_.refine = read_refine_key(s, context, solve_.refine);
     const auto precision = s.choice("precision", {"double", "single"});
     solve_.single_precision = precision == "single";
@@ -74,7 +75,10 @@ class BemMethod final : public Method {
         s.integer("max_iterations", false, int_range(1, std::numeric_limits<std::int32_t>::max()))
             .value_or(solve_.max_iterations));
     periodic_ = s.boolean("periodic");
-    solve_.hardness = s.number("hardness", false, positive("[Pa]"));
+    if (s.has("hardness"))  // the key of earlier versions: an effect of the interface, not of one method
+      s.problem("hardness",
+                "the hardness is a property of the interface, for every method, not a key of the BEM",
+                "interface.hardness = <H [Pa]> in the scene's [interface] table");
     // Relative to the scene file's folder, as the surface file is; stored resolved.
     if (const auto fields =
             s.string("fields", false,
@@ -99,7 +103,6 @@ class BemMethod final : public Method {
     keys.put("tolerance", solve_.tolerance);
     keys.put("max_iterations", std::int64_t{solve_.max_iterations});
     if (periodic_) keys.put("periodic", *periodic_);
-    if (solve_.hardness) keys.put("hardness", *solve_.hardness);
     keys.put("precision", solve_.single_precision ? "single" : "double");
     if (!solve_.fields.empty()) keys.put("fields", solve_.fields);
     keys.put("connectivity", std::int64_t{connectivity_});
@@ -112,6 +115,7 @@ class BemMethod final : public Method {
   MethodNeeds needs(const SceneContext& context) const override {
     BemStage stage = solve_;
     stage.periodic = periodic_.value_or(context.surface_periodic);
+    stage.hardness = context.interface.hardness;  // absent, or ignored: purely elastic
     return {.moments = false, .sweep = std::nullopt, .bem = stage, .bem_connectivity = connectivity_};
   }
 
@@ -145,20 +149,20 @@ class BemMethod final : public Method {
                       "extrapolate = false, or refine to at most " + std::to_string(kMaxPointsASide / 2));
     }
     check_memory(check);
-    if (solve_.hardness) {
+    if (const std::optional<Real> hardness = check.interface.hardness) {
       // A mean pressure at or above H is full plastic contact: nothing to solve (bem/polonsky_keer.hpp).
       std::vector<std::string> refused;
       for (std::size_t k = 0; k < check.scene.loads.size(); ++k)
-        if (check.scene.loads[k] * check.scene.material.estar >= *solve_.hardness)
+        if (check.scene.loads[k] * check.scene.material.estar >= *hardness)
           refused.push_back(exact_number(check.scene.loads[k]) + " (load " + std::to_string(k + 1) + ")");
       if (!refused.empty())
-        check.problem("hardness",
-                      "the hardness " + exact_number(*solve_.hardness) +
-                          " Pa is at or below the mean pressure " + "P/A0 = load E* of the loads " +
-                          join(refused) + ": full plastic contact, which has no solution to compute",
-                      "a hardness above " +
-                          exact_number(check.scene.loads.back() * check.scene.material.estar) +
-                          " Pa (the largest load times E*), or loads below hardness/E*");
+        check.problems.add(0, "interface.hardness",
+                           "the hardness " + exact_number(*hardness) +
+                               " Pa is at or below the mean pressure " + "P/A0 = load E* of the loads " +
+                               join(refused) + ": full plastic contact, which has no solution to compute",
+                           "a hardness above " +
+                               exact_number(check.scene.loads.back() * check.scene.material.estar) +
+                               " Pa (the largest load times E*), or loads below hardness/E*");
     }
   }
 
@@ -188,13 +192,14 @@ class BemMethod final : public Method {
                      {"mean_gap", mean_gap},         {"max_pressure", max_pressure},
                      {"iterations", iterations},     {"residual", residual},
                      {"converged", converged},       {"solve_seconds", seconds}};
-    if (solve_.hardness) curve.columns.emplace_back("plastic_fraction", plastic);  // nodes at p = H / all
+    if (products.hardness) curve.columns.emplace_back("plastic_fraction", plastic);  // nodes at p = H / all
     if (solve_.extrapolate) extrapolate(products, curve);
     if (nodes_) curve.area_fraction = nodes;
     curve.area_fraction_nodes = nodes;
     curve.accepts_unconverged = allow_unconverged_;
     BemStage stage = solve_;
     stage.periodic = products.periodic;
+    stage.hardness = products.hardness;
     curve.parameters =
         "BEM " + stage.name().substr(4) +
         (solve_.extrapolate ? std::string(", perimeter-corrected area in area_fraction_corrected")

@@ -31,11 +31,13 @@ struct SceneKeys;
 
 // What a scene knows about its surface: while its methods read their keys (before any file is read) the
 // points a side when a generated surface says so; once the surface is made (planning), its periodicity.
+// And the interface's effects as this method runs them: the scene's, less those the method ignores.
 struct SceneContext {
   std::optional<Index> surface_points;  // points a side, when known
   bool surface_periodic = true;
   std::filesystem::path folder =
       {};  // the scene file's folder: relative paths of its keys resolve against it
+  InterfaceSpec interface = {};
 };
 
 // The stages one method needs; the planner unites them over the scene (app/scene_plan.hpp).
@@ -50,7 +52,8 @@ struct MethodNeeds {
 // scene's inputs), and where to report (each problem with its key path).
 struct MethodCheck {
   const Scene& scene;
-  const Surface& surface;  // heights from the mean plane
+  const InterfaceSpec& interface;  // as this method runs it: the scene's less what it ignores
+  const Surface& surface;          // heights from the mean plane
   const SpectralMoments& moments;
   std::string key;  // "methods.<label>"
   Problems& problems;
@@ -101,6 +104,9 @@ class Method {
   virtual ~Method() = default;
 
   virtual std::string_view name() const = 0;  // the registry name, `method = "..."`
+  // The interface effects it models (app/interface.hpp); a scene calling for any other is refused unless
+  // the method's table ignores it. Default: none (frictionless, elastic, non-adhesive).
+  virtual std::vector<Effect> models() const { return {}; }
   // Which area its A/A0 is, as the tables say (e.g. "area_fraction_corrected: perimeter-corrected nodes").
   virtual std::string compared_area() const = 0;
   // What the report's tables and plot legend add after its label, in parentheses (e.g. "Hertz-consistent

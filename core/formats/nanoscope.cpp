@@ -14,6 +14,7 @@
 
 #include "contactbench/core/formats/binary_view.hpp"
 #include "contactbench/core/formats/readers.hpp"
+#include "contactbench/core/formats/text_tokens.hpp"
 
 namespace contactbench::formats {
 
@@ -31,25 +32,12 @@ std::string lower(std::string_view text) {
 }
 
 std::string_view strip(std::string_view text) {
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front())))
-    text.remove_prefix(1);
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
-    text.remove_suffix(1);
-  return text;
+  return trim(text, is_space);
 }
 
+// The values of a header entry ("500 500 nm") are separated by spaces alone.
 std::vector<std::string_view> tokens(std::string_view text) {
-  std::vector<std::string_view> result;
-  std::size_t position = 0;
-  while (position < text.size()) {
-    while (position < text.size() && text[position] == ' ')
-      ++position;
-    const std::size_t start = position;
-    while (position < text.size() && text[position] != ' ')
-      ++position;
-    if (position > start) result.push_back(text.substr(start, position - start));
-  }
-  return result;
+  return split_tokens(text, [](char c) { return c == ' '; });
 }
 
 std::optional<Real> number(std::string_view text) {

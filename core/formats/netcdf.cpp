@@ -91,21 +91,12 @@ class Header {
  public:
   Header(const BinaryView& view, int version) : view_(view), wide_(version == 5), offset64_(version != 1) {}
 
-  std::uint64_t count(std::string_view what) {
-    const std::uint64_t value = wide_ ? view_.read<std::uint64_t>(at_, ByteOrder::big, what)
-                                      : view_.read<std::uint32_t>(at_, ByteOrder::big, what);
-    at_ += wide_ ? 8 : 4;
-    return value;
-  }
+  // Counts are 8 bytes in CDF-5, else 4; offsets 8 bytes from CDF-2 on.
+  std::uint64_t count(std::string_view what) { return unsigned_field(wide_, what); }
+  std::uint64_t offset(std::string_view what) { return unsigned_field(offset64_, what); }
   std::uint32_t tag(std::string_view what) {
     const auto value = view_.read<std::uint32_t>(at_, ByteOrder::big, what);
     at_ += 4;
-    return value;
-  }
-  std::uint64_t offset(std::string_view what) {
-    const std::uint64_t value = offset64_ ? view_.read<std::uint64_t>(at_, ByteOrder::big, what)
-                                          : view_.read<std::uint32_t>(at_, ByteOrder::big, what);
-    at_ += offset64_ ? 8 : 4;
     return value;
   }
   // A list's element count, refused when even the smallest elements (4 bytes each) could not fit.
@@ -158,6 +149,14 @@ class Header {
   }
 
  private:
+  // A big-endian unsigned of 8 bytes (`eight`) or 4 at the cursor; the cursor moves past it.
+  std::uint64_t unsigned_field(bool eight, std::string_view what) {
+    const std::uint64_t value = eight ? view_.read<std::uint64_t>(at_, ByteOrder::big, what)
+                                      : view_.read<std::uint32_t>(at_, ByteOrder::big, what);
+    at_ += eight ? 8 : 4;
+    return value;
+  }
+
   const BinaryView& view_;
   bool wide_;
   bool offset64_;

@@ -14,6 +14,7 @@
 
 #include "contactbench/core/formats/binary_view.hpp"
 #include "contactbench/core/formats/readers.hpp"
+#include "contactbench/core/formats/text_tokens.hpp"
 
 namespace contactbench::formats {
 
@@ -39,11 +40,7 @@ std::optional<std::size_t> sdf_item_size(int type) {
 }
 
 std::string_view strip(std::string_view text) {
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front())))
-    text.remove_prefix(1);
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
-    text.remove_suffix(1);
-  return text;
+  return trim(text, is_space);
 }
 
 Real positive_scale(const fs::path& path, Real value, const char* name) {
@@ -124,15 +121,7 @@ RawTopography read_ascii(const fs::path& path, std::string_view bytes) {
   const auto expected = static_cast<std::uint64_t>(nx) * static_cast<std::uint64_t>(ny);
   std::vector<Real> values;
   values.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(expected, data.size() / 2 + 1)));
-  std::size_t position = 0;
-  while (position < data.size()) {
-    while (position < data.size() && std::isspace(static_cast<unsigned char>(data[position])))
-      ++position;
-    if (position >= data.size()) break;
-    std::size_t end = position;
-    while (end < data.size() && !std::isspace(static_cast<unsigned char>(data[end])))
-      ++end;
-    const std::string_view token = data.substr(position, end - position);
+  for_each_token(data, is_space, [&](std::string_view token) {
     if (values.size() == expected)
       throw InputError(path, 0,
                        "the SDF data hold more than the header's " + std::to_string(nx) + " x " +
@@ -146,8 +135,7 @@ RawTopography read_ascii(const fs::path& path, std::string_view bytes) {
         throw InputError(path, 0, "SDF value '" + std::string(token.substr(0, 40)) + "' is not a number");
       values.push_back(std::isfinite(value) ? value * dz : std::numeric_limits<Real>::quiet_NaN());
     }
-    position = end;
-  }
+  });
   if (values.size() != expected)
     throw InputError(path, 0,
                      "the SDF header promises " + std::to_string(nx) + " x " + std::to_string(ny) + " = " +

@@ -99,18 +99,18 @@ with tempfile.TemporaryDirectory() as work:
     scene = os.path.join(work, "scene.toml")
     with open(scene, "w") as f:
         f.write(f'name = "mpi"\nreference = "bem"\n[surface]\nfile = "{surface}"\n[material]\nE = 100e9\nnu = 0.3\n'
-                '[loads]\nvalues = [1e-3, 1e-2]\n[methods.bem]\n[methods.plateau]\nmethod = "plateau"\n')
+                '[loads]\nvalues = [1e-3, 1e-2]\n[methods.bem]\nsolver = "preconditioned_cg"\n'
+                '[methods.plateau]\nmethod = "plateau"\n')
     run(["run", scene, "--out", os.path.join(work, "run"), "--threads", "1", "--quiet"], distributed=True)
     try:
         with open(os.path.join(work, "run", "summary.json")) as f:
             summary = json.load(f)
         if summary.get("distributed", {}).get("ranks") != ranks or not summary["distributed"]["bem_bytes_per_rank"] > 0:
             failures.append(f"summary.json: distributed = {summary.get('distributed')}")
-        # The scene names no solver: as several ranks the default is the distributed one, and it says so.
         methods = summary["scene_as_understood"]["methods"]
         solvers = {m.get("solver") for m in methods.values() if m.get("method") == "bem"}
         if solvers != {"preconditioned_cg"}:
-            failures.append(f"summary.json: the default solver on {ranks} ranks recorded as {solvers}")
+            failures.append(f"summary.json: the solver on {ranks} ranks recorded as {solvers}")
         if not summary["provenance"]["command"].startswith(f"mpiexec -np {ranks} "):
             failures.append(f"summary.json: the command {summary['provenance']['command']} does not say mpiexec")
     except (OSError, KeyError, ValueError) as e:
@@ -118,7 +118,15 @@ with tempfile.TemporaryDirectory() as work:
 
     # Refused, before any work, with the reason: what the distributed solver lacks, and commands with nothing
     # to distribute.
+    # A scene or command that names no solver gets the same default as one process, active_set, which has no
+    # distributed version yet: refused with the reason, never silently replaced by another solver.
+    default_scene = os.path.join(work, "default_solver.toml")
+    with open(default_scene, "w") as f:
+        f.write(f'name = "mpi_default"\n[surface]\nfile = "{surface}"\n[material]\nE = 100e9\nnu = 0.3\n'
+                '[loads]\nvalues = [1e-3]\n[methods.bem]\n')
     for arguments, reason in ((["bem", surface, "--loads", "1e-3", "--solver", "active_set"], "no distributed version"),
+                              (["bem", surface, "--loads", "1e-3"], 'solver = "active_set" (the default'),
+                              (["run", default_scene, "--out", os.path.join(work, "refused")], 'solver = "active_set" (the default'),
                               (["bem", surface, "--loads", "1e-3", "--float"], "single precision"),
                               (["stats", surface], "has no distributed stages")):
         done = run(arguments, distributed=True, expect_status=1)

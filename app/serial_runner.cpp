@@ -1,0 +1,77 @@
+// The stages in this process (app/stage_runner.hpp): every BEM option and the sweep as the libraries have
+// them, nothing refused.
+#include <chrono>
+#include <sstream>
+
+#include "contactbench/app/stage_runner.hpp"
+#include "contactbench/app/stages.hpp"
+#include "contactbench/core/labelling.hpp"
+#include "contactbench/core/topography_io.hpp"
+
+namespace contactbench {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+class SerialRunner final : public StageRunner {
+ public:
+  int ranks() const override { return 1; }
+  std::string bem_refusal(const BemStage&) const override { return ""; }
+
+  SolvedLoads solve_loads(const BemStage& stage, const Surface& solved, Real estar,
+                          const std::vector<Real>& mean_pressures, const std::set<int>& connectivities,
+                          const std::string& fields, const StageContext& context) const override {
+    const auto start = Clock::now();
+    const RunObserver quiet;
+    const RunObserver& observer = context.observer ? *context.observer : quiet;
+    const std::string name = stage.name();
+    PolonskyKeerOptions solver_options{.tolerance = stage.tolerance,
+                                       .max_iterations = stage.max_iterations,
+                                       .hardness = stage.hardness,  // absent: purely elastic
+                                       .single_precision = stage.single_precision,
+                                       .warning = [&](const std::string& text) { observer.warn(text); },
+                                       .solver = stage.solver};
+    PolonskyKeer solver(solved, estar, solver_options, context.threads);
+    std::map<int, Labeller> labellers;
+    for (const int c : connectivities)
+      labellers.emplace(c, Labeller(Topology::for_surface(c == 8 ? Connectivity::eight : Connectivity::four,
+                                                          stage.periodic),
+                                    context.threads));
+    SolvedLoads done;
+    for (std::size_t k = 0; k < mean_pressures.size(); ++k) {
+      ContactSolution solution = solver.solve(mean_pressures[k]);
+      for (auto& [c, labeller] : labellers)
+        done.statistics[c].push_back(contact_statistics(solution, labeller));
+      if (!fields.empty()) {  // as each load is solved, so that a long run leaves what it has done
+        write_surface(field_path(fields, k + 1, "pressure"), Surface(solved.grid(), solution.pressure));
+        write_surface(field_path(fields, k + 1, "gap"), Surface(solved.grid(), solution.gap));
+      }
+      solution.pressure.resize(0, 0);
+      solution.gap.resize(0, 0);
+      if (std::chrono::duration<double>(Clock::now() - start).count() > kProgressAfterSeconds) {
+        std::ostringstream line;
+        line << name << ": " << solved.grid().nx << " x " << solved.grid().ny << ": load " << k + 1 << " of "
+             << mean_pressures.size() << " (P/(E* A0) = " << mean_pressures[k] / estar
+             << "): " << solution.iterations << " iterations, " << solution.seconds << " s";
+        observer.say(line.str());
+      }
+      done.solutions.push_back(std::move(solution));
+    }
+    return done;
+  }
+
+  SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topology& topology,
+                   int threads) const override {
+    return contactbench::sweep(surface, levels, topology, threads);
+  }
+};
+
+}  // namespace
+
+const StageRunner& serial_runner() {
+  static const SerialRunner runner;
+  return runner;
+}
+
+}  // namespace contactbench

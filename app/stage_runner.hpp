@@ -1,0 +1,53 @@
+// Where a scene's heavy stages run, chosen once per command (app/cli.cpp): in this process (serial_runner)
+// or on slabs of the grid across MPI ranks (app/distributed_stages.hpp, built with CB_WITH_MPI). The scene,
+// its defaults and its plan are the same either way: a runner only says what it cannot run (refused in
+// preflight, before any stage, naming the reason) and runs the rest.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "contactbench/bem/contact_statistics.hpp"
+#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/core/surface.hpp"
+#include "contactbench/core/sweep.hpp"
+#include "contactbench/core/topology.hpp"
+
+namespace contactbench {
+
+struct BemStage;
+struct StageContext;
+
+// Every load of a BEM stage on one grid: per load the solver's scalars (fields dropped) and the contact
+// statistics for each connectivity asked for.
+struct SolvedLoads {
+  std::vector<ContactSolution> solutions;
+  std::map<int, std::vector<ContactStatistics>> statistics;  // by connectivity
+  std::size_t bytes_per_rank = 0;  // the largest memory one rank held; 0 when solved by one process
+};
+
+class StageRunner {
+ public:
+  virtual ~StageRunner() = default;
+
+  // Processes the stages run on (1: this one).
+  virtual int ranks() const = 0;
+  // Why this BEM stage cannot run here (an option with no version on this runner), or empty.
+  virtual std::string bem_refusal(const BemStage& stage) const = 0;
+  // Every load of `mean_pressures` [Pa] (ascending) on the grid of `solved`, warm-started in order; with a
+  // non-empty `fields` prefix the pressure and gap of each load written as it is solved (app/stages.hpp).
+  virtual SolvedLoads solve_loads(const BemStage& stage, const Surface& solved, Real estar,
+                                  const std::vector<Real>& mean_pressures,
+                                  const std::set<int>& connectivities, const std::string& fields,
+                                  const StageContext& context) const = 0;
+  virtual SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topology& topology,
+                           int threads) const = 0;
+};
+
+// This process: what a command runs on unless started as several MPI ranks.
+const StageRunner& serial_runner();
+
+}  // namespace contactbench

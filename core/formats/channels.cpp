@@ -1,0 +1,117 @@
+#include "contactbench/core/formats/channels.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/formats/lateral_sizes.hpp"
+
+namespace contactbench::formats {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string channel_list(const RawTopography& raw) {
+  std::string list;
+  for (std::size_t k = 0; k < raw.channels.size(); ++k) {
+    const Channel& channel = raw.channels[k];
+    if (k > 0) list += ", ";
+    list += std::to_string(k) + " '" + channel.name + "'" + (channel.is_height ? "" : " (not a height)");
+  }
+  return list;
+}
+
+std::size_t select_channel(const fs::path& path, const RawTopography& raw,
+                           const std::optional<std::string>& wanted) {
+  if (!wanted) {
+    for (std::size_t k = 0; k < raw.channels.size(); ++k)
+      if (raw.channels[k].is_height) return k;
+    throw InputError(path, 0, "no height channel; the file's channels: " + channel_list(raw));
+  }
+  std::optional<std::size_t> chosen;
+  const bool digits = !wanted->empty() && std::all_of(wanted->begin(), wanted->end(),
+                                                      [](char c) { return c >= '0' && c <= '9'; });
+  if (digits && wanted->size() < 9) {
+    const std::size_t index = std::stoul(*wanted);
+    if (index < raw.channels.size()) chosen = index;
+  } else {
+    for (std::size_t k = 0; k < raw.channels.size() && !chosen; ++k)
+      if (raw.channels[k].name == *wanted) chosen = k;
+  }
+  if (!chosen)
+    throw InputError(path, 0, "unknown channel '" + *wanted + "'; the file's channels: " + channel_list(raw));
+  if (!raw.channels[*chosen].is_height)
+    throw InputError(
+        path, 0,
+        "channel '" + *wanted + "' does not hold heights; the file's channels: " + channel_list(raw));
+  return *chosen;
+}
+
+}  // namespace
+
+TopographyReading reading_from_channels(const fs::path& path, RawTopography raw, TopographyFormat format,
+                                        const TopographyReadOptions& options) {
+  const std::size_t index = select_channel(path, raw, options.channel);
+  Channel& channel = raw.channels[index];
+
+  Real lx = 0;
+  Real ly = 0;
+  if (channel.lx && channel.ly) {
+    check_lateral_size(path, 0, "lx", *channel.lx);
+    check_lateral_size(path, 0, "ly", *channel.ly);
+    check_agrees(path, 0, "lx", *channel.lx, options.lx);
+    check_agrees(path, 0, "ly", *channel.ly, options.ly);
+    lx = *channel.lx;
+    ly = *channel.ly;
+  } else {
+    if (!options.lx)
+      throw InputError(path, 0,
+                       "no lateral size: a " + std::string(to_string(format)) +
+                           " file carries none, so the caller must give it (--size)");
+    check_lateral_size(path, 0, "the given lx", *options.lx);
+    lx = *options.lx;
+    ly = options.ly.value_or(lx * static_cast<Real>(channel.ny) / static_cast<Real>(channel.nx));
+    check_lateral_size(path, 0, "ly", ly);
+  }
+
+  const auto invalid = static_cast<Index>(
+      std::count_if(channel.values.begin(), channel.values.end(), [](Real v) { return std::isnan(v); }));
+  if (invalid > 0 && options.fill == FillMethod::none)
+    throw InputError(path, 0,
+                     std::to_string(invalid) + " of " + std::to_string(channel.values.size()) +
+                         " points of channel '" + channel.name +
+                         "' are invalid (not measured); they are never used as heights: choose fill = "
+                         "\"harmonic\" or \"mean\" (--fill) to fill them");
+  try {
+    fill_invalid_points(channel.values, channel.nx, channel.ny, options.fill);
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& error) {
+    throw InputError(path, 0, "channel '" + channel.name + "': " + error.what());
+  }
+  for (const Real value : channel.values)
+    if (!std::isfinite(value))
+      throw InputError(path, 0,
+                       "channel '" + channel.name + "' holds a height that is not finite after scaling");
+
+  const Grid grid{channel.nx, channel.ny, lx, ly, options.periodic.value_or(raw.periodic)};
+  HeightMap heights = Eigen::Map<const HeightMap>(channel.values.data(), channel.ny, channel.nx);
+  level_heights(heights, grid, options.level);
+  std::vector<std::string> names;
+  for (const Channel& c : raw.channels)
+    names.push_back(c.name);
+  return TopographyReading{Surface(grid, std::move(heights)),
+                           format,
+                           channel.name,
+                           std::move(names),
+                           invalid,
+                           options.fill,
+                           options.level};
+}
+
+}  // namespace contactbench::formats

@@ -1,0 +1,80 @@
+// The project's own text format (docs/formats.md "The text formats"): "# contactbench surface v1", a header
+// line "# nx=... ny=... lx=... ly=... periodic=... unit=m", then ny rows of nx heights in metres as
+// write_surface prints them (shortest round-trip decimals), so reading returns them bit for bit.
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/formats/height_rows.hpp"
+#include "contactbench/core/formats/lateral_sizes.hpp"
+#include "contactbench/core/formats/text_readers.hpp"
+#include "contactbench/core/formats/text_tokens.hpp"
+#include "contactbench/core/formats/text_values.hpp"
+
+namespace contactbench::formats {
+
+namespace fs = std::filesystem;
+
+Surface read_project(const fs::path& path, std::span<const Line> lines,
+                     const TopographyReadOptions& options) {
+  const Line& magic = lines.front();
+  if (magic.text != project_magic)
+    throw InputError(path, magic.number,
+                     "unsupported project format header " + quoted(magic.text) + "; this reader knows " +
+                         quoted(project_magic));
+  if (lines.size() < 2 || !lines[1].text.starts_with('#'))
+    throw InputError(
+        path, magic.number,
+        "the project format needs a second line '# nx=... ny=... lx=... ly=... periodic=... unit=m'");
+  const Line& header = lines[1];
+  HeaderEntry nx, ny, lx, ly, periodic, unit;
+  for (const std::string_view token : split_tokens(header.text.substr(1), is_blank)) {
+    const std::size_t equals = token.find('=');
+    if (equals == token.npos)
+      throw InputError(path, header.number, "expected key=value in the header, got " + quoted(token));
+    const std::string_view key = token.substr(0, equals);
+    const std::string_view value = token.substr(equals + 1);
+    HeaderEntry* entry = key == "nx"         ? &nx
+                         : key == "ny"       ? &ny
+                         : key == "lx"       ? &lx
+                         : key == "ly"       ? &ly
+                         : key == "periodic" ? &periodic
+                         : key == "unit"     ? &unit
+                                             : nullptr;
+    if (entry == nullptr)
+      throw InputError(path, header.number,
+                       "unknown header key " + quoted(key) + "; expected nx, ny, lx, ly, periodic, unit");
+    store_entry(path, header, key, value, *entry);
+  }
+  for (const auto& [key, entry] :
+       {std::pair{"nx", nx}, std::pair{"ny", ny}, std::pair{"lx", lx}, std::pair{"ly", ly},
+        std::pair{"periodic", periodic}, std::pair{"unit", unit}})
+    if (entry.line == 0) throw InputError(path, header.number, "header has no " + std::string(key) + "=");
+  if (unit.value != "m")
+    throw InputError(path, header.number,
+                     "the project format stores metres (unit=m), got unit=" + quoted(unit.value));
+  if (periodic.value != "true" && periodic.value != "false")
+    throw InputError(path, header.number, "periodic must be true or false, got " + quoted(periodic.value));
+
+  const Index columns = parse_count(path, header.number, "nx", nx.value);
+  const Index rows = parse_count(path, header.number, "ny", ny.value);
+  const std::optional<Real> size_x = parse_real(lx.value);
+  const std::optional<Real> size_y = parse_real(ly.value);
+  if (!size_x) throw InputError(path, header.number, "lx=" + quoted(lx.value) + " is not a number");
+  if (!size_y) throw InputError(path, header.number, "ly=" + quoted(ly.value) + " is not a number");
+  check_lateral_size(path, header.number, "lx", *size_x);
+  check_lateral_size(path, header.number, "ly", *size_y);
+  check_agrees(path, header.number, "lx", *size_x, options.lx);
+  check_agrees(path, header.number, "ly", *size_y, options.ly);
+
+  const std::string where = " (line " + std::to_string(header.number) + ")";
+  const PromisedShape promised{rows, columns, "ny=" + std::to_string(rows) + where,
+                               "nx=" + std::to_string(columns) + where, header.number};
+  // Scale 1: multiplying by 1.0 is exact, so the heights stay bit for bit what was written.
+  DataBlock block = parse_data(path, lines.subspan(2), 1.0, promised, " after the header");
+  return make_surface(std::move(block), *size_x, *size_y,
+                      options.periodic.value_or(periodic.value == "true"));
+}
+
+}  // namespace contactbench::formats

@@ -1,0 +1,30 @@
+// The text topography formats (docs/formats.md): the project's own, an interferometer's export, Gwyddion's
+// text export and a plain matrix. Each reader takes the file's non-blank lines and returns the surface,
+// heights in metres; any defect throws InputError naming the file and the line.
+#pragma once
+
+#include <filesystem>
+#include <span>
+#include <string_view>
+
+#include "contactbench/core/formats/text_lines.hpp"
+#include "contactbench/core/surface.hpp"
+#include "contactbench/core/topography_io.hpp"
+
+namespace contactbench::formats {
+
+// The project format's first line, written by write_surface; a file starting with the prefix and another
+// version is refused by read_project.
+inline constexpr std::string_view project_magic = "# contactbench surface v1";
+inline constexpr std::string_view project_prefix = "# contactbench surface";
+
+Surface read_project(const std::filesystem::path& path, std::span<const Line> lines,
+                     const TopographyReadOptions& options);
+Surface read_interferometer(const std::filesystem::path& path, std::span<const Line> lines,
+                            const TopographyReadOptions& options);
+Surface read_gwyddion(const std::filesystem::path& path, std::span<const Line> lines,
+                      const TopographyReadOptions& options);
+Surface read_plain_matrix(const std::filesystem::path& path, std::span<const Line> lines,
+                          const TopographyReadOptions& options);
+
+}  // namespace contactbench::formats
