@@ -300,6 +300,29 @@ ignore = ["hardness"]
   EXPECT_NE(plot.str().find("title 'persson (elastic: ignores hardness)'"), std::string::npos) << plot.str();
 }
 
+// A plateau method keeps its sweep level by level only when asked (write_levels = true: with exact levels
+// it is a row per distinct height), and the scene as understood says so only then, so that every scene
+// without the key reads and writes as before.
+TEST(SceneRun, APlateauKeepsItsLevelsOnlyWhenAsked) {
+  const std::string methods = R"(
+[methods.quiet]
+method = "plateau"
+[methods.kept]
+method = "plateau_hertz"
+levels = 10
+write_levels = true
+)";
+  const Scene scene = parse_scene("name = \"levels\"\n" + kSmallSurface + methods, "test.toml");
+  const std::string written = to_toml(scene);
+  EXPECT_EQ(written.find("write_levels"), written.rfind("write_levels")) << written;  // once: kept's
+  EXPECT_NE(written.find("write_levels = true"), std::string::npos) << written;
+  const SceneReport report =
+      run_scene(parse_scene(written, "test.toml"), {.threads = 1, .observer = nullptr});
+  EXPECT_FALSE(report.methods[0].curve.levels.has_value());
+  ASSERT_TRUE(report.methods[1].curve.levels.has_value());
+  EXPECT_EQ(report.methods[1].curve.levels->z.size(), 11u);  // 10 equal steps, both ends
+}
+
 // The shipped paper scenes at 32 x 32 (BEM at 64 x 64): every method answers at every load (the
 // Hertz-consistent variant up to the load it names), the reference's
 // error is zero, and the three files hold what they promise. Tolerances: none needed, these are structural.
