@@ -10,6 +10,7 @@
 #include "contactbench/app/unconverged.hpp"
 #include "contactbench/core/atomic_file.hpp"
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/topology.hpp"
 
 namespace contactbench {
 
@@ -228,6 +229,16 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
   out << "\n\nMade by `" << provenance.command << "` (" << stamp(provenance) << ").\n";
 }
 
+void write_levels_csv(std::ostream& out, const SweepCurve& levels, const std::string& origin) {
+  out << "# " << origin << ": " << describe(levels.topology)
+      << "; row j: the set {h > z}, z from the mean plane [m]; area_fraction_nodes = nodes in the set / "
+         "all\n";
+  out << "z,area_fraction_nodes,spots\n";
+  for (std::size_t j = 0; j < levels.z.size(); ++j)
+    out << json_number(levels.z[j]) << ',' << json_number(levels.area_fraction[j]) << ',' << levels.spots[j]
+        << '\n';
+}
+
 void write_report(const std::filesystem::path& folder, const SceneReport& report,
                   const Comparison& comparison, const Provenance& provenance) {
   std::error_code error;
@@ -239,6 +250,12 @@ void write_report(const std::filesystem::path& folder, const SceneReport& report
                         [&](std::ostream& out) { write_summary_json(out, report, comparison, provenance); });
   write_file_atomically(folder / "table.md",
                         [&](std::ostream& out) { write_table_md(out, report, comparison, provenance); });
+  for (const MethodResult& m : report.methods)
+    if (m.curve.levels)
+      write_file_atomically(folder / (m.label + "_levels.csv"), [&](std::ostream& out) {
+        write_levels_csv(out, *m.curve.levels,
+                         "contactbench run of scene " + report.scene.name + ", " + m.label);
+      });
 }
 
 }  // namespace contactbench

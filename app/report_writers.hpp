@@ -8,6 +8,7 @@
 #include "contactbench/app/comparison.hpp"
 #include "contactbench/app/provenance.hpp"
 #include "contactbench/app/scene_run.hpp"
+#include "contactbench/core/sweep.hpp"
 
 namespace contactbench {
 
@@ -25,7 +26,12 @@ void write_summary_json(std::ostream& out, const SceneReport& report, const Comp
 void write_table_md(std::ostream& out, const SceneReport& report, const Comparison& comparison,
                     const Provenance& provenance);
 
-// All of the above into `folder` (created if needed): curves.csv, summary.json, table.md.
+// A sweep level by level (a plateau method's MethodCurve::levels): z, area_fraction_nodes, spots, after one
+// comment line that starts with `origin` (e.g. "contactbench sweep of s.txt") and says what the rows are.
+void write_levels_csv(std::ostream& out, const SweepCurve& levels, const std::string& origin);
+
+// All of the above into `folder` (created if needed): curves.csv, summary.json, table.md, and
+// <label>_levels.csv of every method with a level curve.
 void write_report(const std::filesystem::path& folder, const SceneReport& report,
                   const Comparison& comparison, const Provenance& provenance);
 

@@ -269,6 +269,39 @@ TEST_F(Cli, SweepWritesTheCurveAsCsv) {
   EXPECT_EQ(std::count(exact.out.begin(), exact.out.end(), '\n'), 32 * 32 + 2);
 }
 
+// `sweep` is a front end over the scene pipeline: the same one-method scene through `run` writes the same
+// level curve (<label>_levels.csv), row for row, and the same comment but for the command it names.
+TEST_F(Cli, SweepAndRunOfTheSameSceneWriteTheSameLevels) {
+  const auto surface = folder_ / "s.txt", scene = folder_ / "scene.toml", out = folder_ / "run";
+  ASSERT_EQ(run("generate --sigma 1e-6 --hurst 0.8 --qr 1e5 --size 100e-6 --grid 32 --seed 5 --out " +
+                surface.string())
+                .status,
+            0);
+  std::ofstream(scene) << "name = \"levels\"\n[surface]\nfile = \"" << surface.string()
+                       << "\"\n[material]\nestar = 1e11\n[loads]\nvalues = [1e-3, 1e-2]\n"
+                          "[methods.plateau]\nwrite_levels = true\n[methods.coarse_8]\nmethod = \"plateau\"\n"
+                          "levels = 10\nconnectivity = 8\nwrite_levels = true\n[methods.plateau_hertz]\n";
+  const CommandResult scene_run =
+      run("run " + scene.string() + " --out " + out.string() + " --no-plots --quiet");
+  ASSERT_EQ(scene_run.status, 0) << scene_run.err;
+  EXPECT_FALSE(std::filesystem::exists(out / "plateau_hertz_levels.csv"));  // not asked for
+  for (const auto& [label, flags] :
+       {std::pair<std::string, std::string>{"plateau", ""},
+        std::pair<std::string, std::string>{"coarse_8", " --levels 10 --connectivity 8"}}) {
+    const CommandResult sweep = run("sweep " + surface.string() + flags);
+    ASSERT_EQ(sweep.status, 0) << sweep.err;
+    const std::string levels = slurp(out / (label + "_levels.csv"));
+    ASSERT_FALSE(levels.empty()) << label;
+    // The rows (header line included) after one comment line each, which names the command.
+    const std::size_t sweep_comment = sweep.out.find('\n'), run_comment = levels.find('\n');
+    EXPECT_EQ(sweep.out.substr(sweep_comment), levels.substr(run_comment)) << label;
+    EXPECT_GT(std::count(levels.begin(), levels.end(), '\n'), 12) << label;
+    const std::string what = levels.substr(levels.find(": "), run_comment - levels.find(": "));
+    EXPECT_EQ(sweep.out.substr(0, sweep_comment), "# contactbench sweep of " + surface.string() + what);
+    EXPECT_EQ(levels.substr(0, run_comment), "# contactbench run of scene levels, " + label + what);
+  }
+}
+
 TEST_F(Cli, SweepRefusesBadOptionsNamingThem) {
   const auto surface = folder_ / "s.txt";
   ASSERT_EQ(run("generate " + kSurfaceA + " --out " + surface.string()).status, 0);

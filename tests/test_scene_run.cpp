@@ -18,6 +18,7 @@
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/scene_plan.hpp"
 #include "contactbench/app/scene_run.hpp"
+#include "contactbench/app/surface_source.hpp"
 #include "contactbench/app/unconverged.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/topography_io.hpp"
@@ -298,6 +299,61 @@ ignore = ["hardness"]
   EXPECT_NE(summary.str().find("\"ignored_effects\": [\"hardness\"]"), std::string::npos) << summary.str();
   EXPECT_NE(summary.str().find("\"interface\": {"), std::string::npos) << "the scene as understood";
   EXPECT_NE(plot.str().find("title 'persson (elastic: ignores hardness)'"), std::string::npos) << plot.str();
+}
+
+// A plateau method keeps its sweep level by level only when asked (write_levels = true: with exact levels
+// it is a row per distinct height), and the scene as understood says so only then, so that every scene
+// without the key reads and writes as before.
+TEST(SceneRun, APlateauKeepsItsLevelsOnlyWhenAsked) {
+  const std::string methods = R"(
+[methods.quiet]
+method = "plateau"
+[methods.kept]
+method = "plateau_hertz"
+levels = 10
+write_levels = true
+)";
+  const Scene scene = parse_scene("name = \"levels\"\n" + kSmallSurface + methods, "test.toml");
+  const std::string written = to_toml(scene);
+  EXPECT_EQ(written.find("write_levels"), written.rfind("write_levels")) << written;  // once: kept's
+  EXPECT_NE(written.find("write_levels = true"), std::string::npos) << written;
+  const SceneReport report =
+      run_scene(parse_scene(written, "test.toml"), {.threads = 1, .observer = nullptr});
+  EXPECT_FALSE(report.methods[0].curve.levels.has_value());
+  ASSERT_TRUE(report.methods[1].curve.levels.has_value());
+  EXPECT_EQ(report.methods[1].curve.levels->z.size(), 11u);  // 10 equal steps, both ends
+}
+
+// With extrapolate = true a load is converged only when both of its solves are: a finer solve that did not
+// converge marks the load in the typed field and in the BEM's own column alike. The stage's products are
+// made by hand, as no small grid makes one solve converge and the other not.
+TEST(SceneRun, ABemLoadConvergedOnlyWhenBothOfItsSolvesDid) {
+  const Scene scene =
+      parse_scene("name = \"fine\"\n" + kSmallSurface + "[methods.bem]\nextrapolate = true\n", "test.toml");
+  const Surface surface = make_surface(scene.surface, 1);
+  BemProducts products;
+  products.points = 32 * 32;
+  products.fine_points = 64 * 64;
+  for (const bool fine_converged : {true, false}) {
+    ContactSolution coarse, fine;
+    coarse.converged = true;
+    fine.converged = fine_converged;
+    products.solutions.push_back(coarse);
+    products.fine_solutions.push_back(fine);
+    products.statistics[4].push_back({.area_fraction = 0.02, .area_fraction_corrected = 0.015});
+    products.fine_statistics[4].push_back({.area_fraction = 0.018, .area_fraction_corrected = 0.015});
+  }
+  const SpectralMoments moments{};  // the BEM reads none
+  const MethodCurve curve = scene.methods[0].method->evaluate(
+      {.scene = scene, .surface = surface, .moments = moments, .sweep = nullptr, .bem = &products});
+  EXPECT_EQ(curve.converged, (std::vector<bool>{true, false}));
+  EXPECT_EQ(unconverged_loads(curve), (std::vector<std::size_t>{1}));
+  for (const auto& [name, values] : curve.columns)
+    if (name == "converged") {
+      EXPECT_EQ(values, (std::vector<Real>{1, 0}));
+    }
+  // Its own error estimate: |extrapolated 2 x 0.018 - 0.02 - fine corrected 0.015|, to rounding.
+  EXPECT_NEAR(curve.area_fraction_error[0], 0.001, 1e-15);
 }
 
 // The shipped paper scenes at 32 x 32 (BEM at 64 x 64): every method answers at every load (the

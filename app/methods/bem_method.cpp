@@ -142,8 +142,10 @@ class BemMethod final : public Method {
       max_pressure.push_back(stats[k].max_pressure);
       iterations.push_back(static_cast<Real>(s.iterations));
       residual.push_back(s.residual);
-      converged.push_back(s.converged ? 1 : 0);
-      curve.converged.push_back(s.converged);
+      // With extrapolate = true a load converged when both of its solves did.
+      const bool both = s.converged && (!solve_.extrapolate || products.fine_solutions[k].converged);
+      converged.push_back(both ? 1 : 0);
+      curve.converged.push_back(both);
       seconds.push_back(s.seconds);
       plastic.push_back(static_cast<Real>(s.plastic_points) / static_cast<Real>(products.points));
     }
@@ -255,11 +257,6 @@ class BemMethod final : public Method {
       fine_iterations.push_back(static_cast<Real>(products.fine_solutions[k].iterations));
       curve.separation[k] = products.fine_solutions[k].separation;
       curve.spots[k] = static_cast<Real>(fine[k].spots);
-      if (!products.fine_solutions[k].converged) {
-        curve.converged[k] = false;
-        for (auto& [name, values] : curve.columns)
-          if (name == "converged") values[k] = 0;
-      }
     }
     curve.area_fraction = extrapolated;
     curve.area_fraction_error = error;

@@ -21,6 +21,7 @@
 #include "contactbench/app/stages.hpp"
 #include "contactbench/core/load_area_curve.hpp"
 #include "contactbench/core/spectrum.hpp"
+#include "contactbench/core/sweep.hpp"
 
 namespace contactbench {
 
@@ -86,6 +87,9 @@ struct MethodCurve {
   // allow_unconverged = true; app/unconverged.hpp).
   std::vector<bool> converged;
   bool accepts_unconverged = false;
+  // The sweep the curve was read from, level by level (a plateau method's, when asked: write_levels = true):
+  // a run writes it beside the curves as <label>_levels.csv, `contactbench sweep` as its output.
+  std::optional<SweepCurve> levels;
   // The method's own columns beside those above (e.g. the BEM's iterations), one value per load, and the
   // names of those summary.json repeats beside its area (the BEM's extrapolated area).
   std::vector<std::pair<std::string, std::vector<Real>>> columns;

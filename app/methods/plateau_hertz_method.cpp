@@ -26,7 +26,7 @@ class PlateauHertzMethod final : public PlateauMethod {
   MethodCurve evaluate(const MethodInputs& in) const override {
     MethodCurve curve = MethodCurve::from(
         plateau_hertz_curve_at_loads(in.sweep->sweep, in.sweep->model, in.scene.loads), in.scene.loads);
-    curve.parameters += refinement_text();
+    complete(curve, in);
     return curve;
   }
 };

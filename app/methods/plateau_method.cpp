@@ -22,11 +22,12 @@ std::string PlateauMethod::compared_area() const {
 }
 
 void PlateauMethod::read(const Section& s, const SceneContext& context) {
-  s.reject_unknown({"method", "connectivity", "levels", "periodic", "refine"});
+  s.reject_unknown({"method", "connectivity", "levels", "periodic", "refine", "write_levels"});
   connectivity_ = static_cast<int>(
       s.integer("connectivity", false, {[](std::int64_t v) { return v == 4 || v == 8; }, "4, 8"})
           .value_or(connectivity_));
   periodic_ = s.boolean("periodic");
+  write_levels_ = s.boolean("write_levels").value_or(write_levels_);
   refine_ = read_refine_key(s, context, refine_);
   if (const toml::node* node = s.find("levels")) {
     if (const auto* text = node->as_string()) {
@@ -62,6 +63,7 @@ void PlateauMethod::write(SceneKeys& keys) const {
   }
   if (periodic_) keys.put("periodic", *periodic_);
   keys.put("refine", std::int64_t{refine_});
+  if (write_levels_) keys.put("write_levels", true);  // absent means false: scenes without it read as before
 }
 
 MethodNeeds PlateauMethod::needs(const SceneContext& context) const {
@@ -79,16 +81,17 @@ void PlateauMethod::preflight(const MethodCheck& check) const {
   check_refine_key(check, refine_);
 }
 
-std::string PlateauMethod::refinement_text() const {
-  return refine_ > 0 ? ", on the surface Fourier-refined to " + std::to_string(refine_) + " x " +
-                           std::to_string(refine_)
-                     : std::string();
+void PlateauMethod::complete(MethodCurve& curve, const MethodInputs& in) const {
+  if (refine_ > 0)
+    curve.parameters +=
+        ", on the surface Fourier-refined to " + std::to_string(refine_) + " x " + std::to_string(refine_);
+  if (write_levels_) curve.levels = in.sweep->sweep;
 }
 
 MethodCurve PlateauMethod::evaluate(const MethodInputs& in) const {
   MethodCurve curve = MethodCurve::from(
       plateau_curve_at_loads(in.sweep->sweep, in.sweep->model, in.scene.loads), in.scene.loads);
-  curve.parameters += refinement_text();
+  complete(curve, in);
   curve.area_fraction_nodes = curve.area_fraction;  // the model's area is the bearing area, a node count
   curve.columns.emplace_back("area_fraction_nodes", curve.area_fraction);
   return curve;

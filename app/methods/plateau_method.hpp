@@ -23,14 +23,18 @@ class PlateauMethod : public Method {
   MethodCurve evaluate(const MethodInputs& inputs) const override;
 
  protected:
-  // " on the surface Fourier-refined to n x n" when refined, else "": for the parameters of the report.
-  std::string refinement_text() const;
+  // What both readings add to their curve: " on the surface Fourier-refined to n x n" to the parameters when
+  // refined, and the sweep level by level when write_levels = true.
+  void complete(MethodCurve& curve, const MethodInputs& inputs) const;
 
  private:
   int connectivity_ = 4;
   SweepLevels levels_ = SweepLevels::exact();  // levels = "exact" | "paper" | an integer count (uniform)
   std::optional<bool> periodic_;               // default: the surface's own periodicity
   Index refine_ = 0;                           // points a side swept; 0 = the surface as it is
+  // write_levels = true: the report keeps the sweep (MethodCurve::levels), written as <label>_levels.csv. Off
+  // by default: with exact levels it is a row per distinct height (4 million on a 2048^2 refinement).
+  bool write_levels_ = false;
 };
 
 }  // namespace contactbench
