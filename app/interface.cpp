@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "contactbench/app/scene_keys.hpp"
-#include "contactbench/app/scene_toml.hpp"
+#include "contactbench/app/section.hpp"
 
 namespace contactbench {
 

@@ -5,8 +5,8 @@
 #include <optional>
 #include <sstream>
 
+#include "contactbench/app/problems.hpp"
 #include "contactbench/app/scene_plan.hpp"
-#include "contactbench/app/scene_toml.hpp"
 #include "contactbench/app/stage_runner.hpp"
 
 namespace contactbench {

@@ -6,8 +6,11 @@
 #include <sstream>
 
 #include "contactbench/app/methods/registry.hpp"
+#include "contactbench/app/problems.hpp"
 #include "contactbench/app/scene.hpp"
+#include "contactbench/app/scene_text.hpp"
 #include "contactbench/app/scene_toml.hpp"
+#include "contactbench/app/section.hpp"
 #include "contactbench/core/bounded_read.hpp"
 #include "contactbench/core/material.hpp"
 

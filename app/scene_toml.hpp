@@ -1,15 +1,13 @@
-// A scene read from TOML (app/scene.hpp): the pieces it is read with (app/section.hpp, app/problems.hpp,
-// app/scene_text.hpp) and the entry point for a document already parsed or built by a command from its flags.
+// A scene read from TOML (app/scene.hpp; its pieces: app/section.hpp, app/problems.hpp, app/scene_text.hpp):
+// the entry point for a document already parsed or built by a command from its flags, and the largest grid.
 #pragma once
 
 #include <filesystem>
 
 #include <toml++/toml.h>
 
-#include "contactbench/app/problems.hpp"
 #include "contactbench/app/scene.hpp"
-#include "contactbench/app/scene_text.hpp"
-#include "contactbench/app/section.hpp"
+#include "contactbench/core/types.hpp"
 
 namespace contactbench {
 

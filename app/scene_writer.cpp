@@ -6,7 +6,7 @@
 #include "contactbench/app/methods/method.hpp"
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/scene_keys.hpp"
-#include "contactbench/app/scene_toml.hpp"
+#include "contactbench/app/scene_text.hpp"
 
 namespace contactbench {
 

@@ -4,6 +4,7 @@
 
 #include "contactbench/app/json_writer.hpp"
 #include "contactbench/app/scene_keys.hpp"
+#include "contactbench/app/scene_text.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench {

@@ -13,7 +13,7 @@
 #include <variant>
 #include <vector>
 
-#include "contactbench/app/scene_toml.hpp"
+#include "contactbench/app/section.hpp"
 #include "contactbench/core/types.hpp"
 
 namespace contactbench {

@@ -4,8 +4,11 @@
 #include <limits>
 #include <system_error>
 
+#include "contactbench/app/problems.hpp"
 #include "contactbench/app/scene_keys.hpp"
+#include "contactbench/app/scene_text.hpp"
 #include "contactbench/app/scene_toml.hpp"
+#include "contactbench/app/section.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/grid.hpp"
 #include "contactbench/core/topography_io.hpp"

@@ -10,7 +10,9 @@
 #include "contactbench/app/methods/refine_key.hpp"
 #include "contactbench/app/output.hpp"
 #include "contactbench/app/scene_keys.hpp"
+#include "contactbench/app/scene_text.hpp"
 #include "contactbench/app/scene_toml.hpp"
+#include "contactbench/app/section.hpp"
 #include "contactbench/app/stages.hpp"
 #include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/atomic_file.hpp"
@@ -143,7 +145,7 @@ class BemMethod final : public Method {
       iterations.push_back(static_cast<Real>(s.iterations));
       residual.push_back(s.residual);
       // With extrapolate = true a load converged when both of its solves did.
-      const bool both = s.converged && (!solve_.extrapolate || products.fine_solutions[k].converged);
+      const bool both = s.converged && (!settings_.extrapolate || products.fine_solutions[k].converged);
       converged.push_back(both ? 1 : 0);
       curve.converged.push_back(both);
       seconds.push_back(s.seconds);

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "contactbench/app/scene_text.hpp"
 #include "contactbench/app/scene_toml.hpp"
 #include "contactbench/bem/solver_registry.hpp"
 

@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "contactbench/app/scene_toml.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench {

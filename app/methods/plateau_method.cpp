@@ -6,7 +6,7 @@
 
 #include "contactbench/app/methods/refine_key.hpp"
 #include "contactbench/app/scene_keys.hpp"
-#include "contactbench/app/scene_toml.hpp"
+#include "contactbench/app/section.hpp"
 #include "contactbench/theories/plateau_model.hpp"
 
 namespace contactbench {

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "contactbench/app/scene_toml.hpp"
+#include "contactbench/app/section.hpp"
 #include "contactbench/core/surface.hpp"
 
 namespace contactbench {

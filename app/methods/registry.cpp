@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "contactbench/app/scene_toml.hpp"
+#include "contactbench/app/scene_text.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench {
