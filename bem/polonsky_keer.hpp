@@ -174,19 +174,13 @@ class PolonskyKeer {
   const Surface& surface() const { return surface_; }
 
  private:
-  Index start_coarse(Real mean_pressure);  // returns the coarse levels' iterations
-
   Surface surface_;
   PolonskyKeerOptions options_;
   Real engine_modulus_;
   int threads_;
   ContactSolution solution_;
-
- public:
-  class Engine;  // the iteration, in the chosen scalar (polonsky_keer.cpp)
-
- private:
-  std::unique_ptr<Engine> engine_;
+  // The iteration, in the chosen scalar: the registry's solver (bem/solver_registry.hpp).
+  std::unique_ptr<ContactSolver> engine_;
 };
 
 }  // namespace contactbench

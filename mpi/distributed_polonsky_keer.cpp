@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "contactbench/bem/solvers/polonsky_keer_step.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench::mpi {
@@ -39,7 +40,8 @@ void sum_over_ranks(double (&values)[N], MPI_Comm comm) {
 
 }  // namespace
 
-// The gap's moments on the contact set, and the pressure's sum and change (bem/polonsky_keer.cpp's Moments).
+// The gap's moments on the contact set, and the pressure's sum and change
+// (bem/solvers/constrained_cg_kernels.hpp's Moments).
 struct DistributedPolonskyKeer::Moments {
   double change = 0, sum = 0, elastic = 0, g_mean = 0, g_norm = 0;
 };
@@ -152,7 +154,8 @@ DistributedPolonskyKeer::Moments DistributedPolonskyKeer::gap_pass(const std::ve
   return m;
 }
 
-// bem/polonsky_keer.cpp's iterate<kLoad = true, kHard = false>, plain or preconditioned, pass by pass.
+// bem/solvers/polonsky_keer_solver.cpp's iterate<kLoad = true, kHard = false>, plain or preconditioned, pass
+// by pass; the decisions between passes are the same code (bem/solvers/polonsky_keer_step.hpp).
 void DistributedPolonskyKeer::iterate(double total) {
   const double tolerance = options_.tolerance;
   const Index max_iterations = options_.max_iterations;
@@ -166,29 +169,17 @@ void DistributedPolonskyKeer::iterate(double total) {
   double g_norm_old = 1, delta = 0, change = 0;  // delta = 0: the first step is steepest descent
   double rz_old = 1;                             // preconditioned: <r, z> of the last direction
   double entered = 0;                            // nodes that entered the set in the last update
-  // Step damping after kStall iterations without a new lowest change (bem/polonsky_keer.cpp says why).
-  constexpr Index kStall = 25;
-  double damping = 1, lowest_change = std::numeric_limits<double>::infinity();
-  Index since_lowest = 0;
+  PolonskyKeerStep step;                         // the serial solver's criterion, damping and step lengths
   Index iteration = 0;
   bool converged = false;
   for (;;) {
     if (iteration > 0) {
-      change = moments.sum > 0 ? moments.change / moments.sum
-                               : (moments.change == 0 ? 0.0 : std::numeric_limits<double>::infinity());
-      // Preconditioned, the contact set must also have settled (docs/solvers.md).
-      if (change < tolerance && (!preconditioned || entered == 0)) {
+      change = PolonskyKeerStep::relative_change(moments.change, moments.sum);
+      if (PolonskyKeerStep::converged(change, tolerance, preconditioned, entered)) {
         converged = true;
         break;
       }
-      if (change < lowest_change) {
-        lowest_change = change;
-        since_lowest = 0;
-      } else if (++since_lowest >= kStall && damping > 0x1p-30) {
-        damping *= 0.5;
-        since_lowest = 0;
-        lowest_change = change;
-      }
+      step.observe(change);
     }
     if (iteration == max_iterations) break;
     if (options_.between_iterations) options_.between_iterations();
@@ -198,7 +189,7 @@ void DistributedPolonskyKeer::iterate(double total) {
 
     // The direction on the contact set, and r = G t. Plain: t = g - gbar + beta t (PK eq. 11).
     // Preconditioned: z = the filtered residual g - gbar on the set, t = z - zbar + beta t
-    // (bem/polonsky_keer.cpp).
+    // (bem/solvers/preconditioned_cg_solver.cpp).
     double beta = 0;
     double step_sums[5] = {0, 0, 0, 0, 0};  // sum (g - gbar) t, sum t, sum t^2, sum r on the set, t . r
     if (preconditioned) {
@@ -247,11 +238,8 @@ void DistributedPolonskyKeer::iterate(double total) {
     const double gt = step_sums[0], t_sum = step_sums[1], tt = step_sums[2], r_sum = step_sums[3];
     // t . (r - rbar) on the contact set (t is zero elsewhere).
     const double tr = step_sums[4] - r_sum / moments.elastic * t_sum;
-    const double tau = tr > 0 ? damping * gt / tr : 0.0;
-    // Entering nodes: PK's step, or (preconditioned, t a pressure) the plain step of t, <t,t>/<t,Gt>; without
-    // a descent, the stiffness of one pixel.
-    const double tau_enter = preconditioned ? damping * (tr > 0 && tt > 0 ? tt / tr : 1 / self_response)
-                                            : (tr > 0 ? tau : damping / self_response);
+    const PolonskyKeerStep::Lengths lengths = step.lengths(gt, tr, tt, self_response, preconditioned);
+    const double tau = lengths.tau, tau_enter = lengths.enter;
 
     // The update q = max(p - tau t, 0); nodes out of contact that the surface penetrates enter with
     // -tau_enter g (PK eq. 14). Then the load imposed by rescaling, and the next gap.
