@@ -157,6 +157,56 @@ void ActiveSet<T>::make_coarse_level() {
   coarse_ = std::make_unique<ActiveSet<T>>(coarse_grid, std::move(coarse_heights), modulus_, threads_);
 }
 
+// The starting sets. Cold: {p - k g > 0}, k the stiffness of one pixel, g the gap of the nested start
+// (under load control with the flat from its mean on the start's own contact set), under load control
+// cut to the coarse level's contact area (coarse_area_level). Warm: the start's own contact set {p > 0},
+// the previous solution's: under a growing load the set of the rule above overshoots (the scaled
+// previous pressure presses the flat too deep; surface A at 256^2, load 0.001 -> 0.002: 8673 nodes for
+// the 2472 of the solution), and the outer steps that shrink it back cost more than those that grow the
+// previous set (10-load curve: 0.81-0.92 of the cold solves' iterations at 256^2 and 512^2 against
+// 0.88-1.10; about 1 at 1024^2, where the cold nested start is as good; docs/solvers.md). Of those,
+// the nodes at or above the hardness start plastic. The start's G p is made with p scaled to the load
+// on its way in and the set {p > 0} with its mean of u - h on the way out.
+// Returns the sums of holding p to them (keep_to_sets); d: the flat's height of the start.
+template <class T>
+typename ActiveSet<T>::Sums ActiveSet<T>::start_sets(std::vector<T>& p, bool warm, double total, double& d) {
+  const double factor = load_control_ ? start_scale(p, total) : 1.0;
+  const double start_flat = start_displacement(p, factor);
+  d = load_control_ ? start_flat : separation_;
+  if (!warm) {
+    const double stiffness = 1 / operator_->self_response();
+    const std::size_t candidates = score_start(p, d, stiffness);
+    const T level = load_control_ && coarse_ ? coarse_area_level(candidates) : T(0);
+    if (level > 0)
+      over_points([&](std::size_t begin, std::size_t end, Sums&) {
+        for (std::size_t k = begin; k < end; ++k)
+          if (in_[k]) in_[k] = start_score(p, k, d, stiffness) >= level;  // the same operation as ranked
+      });
+  }
+  // The starting sets' plastic nodes, and the pressure held to the sets; from here each set update holds
+  // p to its new sets in its own pass.
+  Sums kept = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
+    for (std::size_t k = begin; k < end; ++k) {
+      plastic_[k] = in_[k] && p[k] >= cap_;
+      in_[k] = in_[k] && !plastic_[k];
+      keep_to_sets(p, k, part);
+    }
+  });
+  if (kept.b == 0 && kept.g == 0) {  // load control: every node; separation control: those the flat
+    kept = over_points([&](std::size_t begin, std::size_t end, Sums& part) {  // penetrates
+      for (std::size_t k = begin; k < end; ++k) {
+        in_[k] = load_control_ || static_cast<double>(h_[k]) > separation_;
+        keep_to_sets(p, k, part);
+      }
+    });
+  }
+  return kept;
+}
+
+template typename ActiveSet<double>::Sums ActiveSet<double>::start_sets(std::vector<double>&, bool, double,
+                                                                        double&);
+template typename ActiveSet<float>::Sums ActiveSet<float>::start_sets(std::vector<float>&, bool, double,
+                                                                      double&);
 template double ActiveSet<double>::start_scale(const std::vector<double>& p, double total);
 template double ActiveSet<float>::start_scale(const std::vector<float>& p, double total);
 template double ActiveSet<double>::start_displacement(std::vector<double>& p, double factor);

@@ -92,18 +92,87 @@ template <class T>
 Index ActiveSet<T>::cg_on_set(std::vector<T>& p, double scale, double reduction, double absolute,
                               double step_change, Index budget, const std::function<void()>& between) {
   const std::uint8_t* const in = in_.data();
+  const T* const h = h_.data();
+  const T* const u = u_.data();
+  const Sums count = count_on_set(p, scale);
+  set_size_ = count.c;
+  set_mean_ = 0;
+  if (set_size_ == 0) return 0;
+  // The residual is r - c on the set: r stepped by the CG (r -= tau G t), c the mean those steps add to it
+  // under load control (0 under separation control). Stepped, not formed from u - h at each step: in single
+  // precision u - h carries the round-off of u (about 1e-14 m on a micrometre surface), and at 2048^2 the
+  // residual's norm never fell below that floor (the solve ran on for minutes). Of x = r - c on the set:
+  // its sum, its sum of squares, its largest and its smallest value (as the largest of -x).
+  T* const r = r_.data();
+  CgStep step;
+  step.radius = extension_radius();
+  // r = u - h less its mean on the set (load control), u - h + d (separation control).
+  const double start_shift = load_control_ ? count.a / set_size_ : -separation_;
+  const Sums start = over_points([&, start_shift](std::size_t begin, std::size_t end, Sums& part) {
+    part.e = part.f = -std::numeric_limits<double>::infinity();
+    for (std::size_t k = begin; k < end; ++k)  // (r off the set is the extension's, written before use)
+      if (in[k]) {
+        r[k] = static_cast<T>(static_cast<double>(u[k]) - static_cast<double>(h[k]) - start_shift);
+        add_residual(part, static_cast<double>(r[k]));
+      }
+  });
+  double norm = 0, largest = 0;
+  // c moved to the mean of x (load control), and the residual's norm and largest value from the sums.
+  auto settle = [&](const Sums& s) {
+    const double shift = load_control_ ? s.a / set_size_ : 0.0;
+    step.c += shift;
+    norm = std::sqrt(std::max(s.b - 2 * shift * s.a + set_size_ * shift * shift, 0.0));
+    largest = std::max(s.e - shift, s.f + shift);
+  };
+  settle(start);
+  const double r0 = norm;
+  double rz_old = 0;
+  Index iterations = 0;
+  last_step_change_ = 0;  // no step yet: the pressure has not moved
+  for (; iterations < budget; ++iterations) {
+    // While the set still changes (reduction > 0) a gap within the threshold everywhere on the set also
+    // ends the solve: what is left to reduce is below what the update and the convergence test resolve.
+    const bool within = largest <= absolute && (reduction > 0 || last_step_change_ <= step_change);
+    if (within || norm <= reduction * r0 || norm == 0) break;
+    if (between) between();
+    if (iterations == 0 && step.radius > 0) make_extension_weights(step.radius);
+    for (Sums& s : sums_)
+      s = Sums{};
+    step.shift_c = static_cast<T>(step.c);
+    // Into the filter scaled by a power of two to about 1 (float's range: a residual of 1e-20 m squared
+    // in the product would underflow), out scaled back: exact apart from float's rounding.
+    step.to_filter = std::ldexp(1.0, -std::ilogb(largest));
+    step.from_filter = std::ldexp(1.0, std::ilogb(largest));
+    restart_windows();
+    step.rz = filter_pass(step);  // <r, z>
+    step.zbar = static_cast<T>(load_control_ ? combined().a / set_size_ : 0.0);
+    if (!(step.rz > 0)) break;  // no descent left (a set of one node, or round-off)
+    step.beta = static_cast<T>(rz_old > 0 ? step.rz / rz_old : 0.0);
+    rz_old = step.rz;
+    for (Sums& s : sums_) {
+      s = Sums{};
+      s.e = s.f = -std::numeric_limits<double>::infinity();
+    }
+    restart_windows();
+    operator_pass(p, step);
+    displacement_fresh_ = false;  // u stepped
+    if (!(step.t_gt > 0)) break;  // nothing moved: tau was 0
+    const Sums f = combined();
+    const double pressure_sum = f.d + count.g;  // sum |p|: the elastic set's and the plastic nodes'
+    last_step_change_ = pressure_sum > 0 ? f.c / pressure_sum : 0;
+    settle(f);
+  }
+  set_mean_ = start_shift + step.c;  // u - h = r + start_shift on the set, r stepped as u is
+  return iterations;
+}
+
+template <class T>
+typename ActiveSet<T>::Sums ActiveSet<T>::count_on_set(std::vector<T>& p, double scale) {
+  const std::uint8_t* const in = in_.data();
   const std::uint8_t* const plastic = plastic_.data();
   const T* const h = h_.data();
-  T* const z = z_.data();
-  T* const t = t_.data();
   T* const u = u_.data();
   T* const pp = p.data();
-  const Index nx = grid_.nx;
-  using Producer = typename Convolution<T>::Producer;
-  using Consumer = typename Convolution<T>::Consumer;
-  using ProductHook = typename Convolution<T>::ProductHook;
-  using FilterProducer = Convolution<float>::Producer;
-  using FilterConsumer = Convolution<float>::Consumer;
   // The set's size and the sum of u - h on it, counted in the pass that makes the load's rescaling: p
   // times `scale` off the plastic set, and u = G p with it when current; else u = G p made afresh, the
   // rescaling on p's way into the transform and the count on u's way out. From here u is kept by the
@@ -134,81 +203,55 @@ Index ActiveSet<T>::cg_on_set(std::vector<T>& p, double scale, double reduction,
   } else {
     count = fresh_displacement(p, rescaled, counted);
   }
-  set_size_ = count.c;
-  set_mean_ = 0;
-  if (set_size_ == 0) return 0;
-  // The residual is r - c on the set: r stepped by the CG (r -= tau G t), c the mean those steps add to it
-  // under load control (0 under separation control). Stepped, not formed from u - h at each step: in single
-  // precision u - h carries the round-off of u (about 1e-14 m on a micrometre surface), and at 2048^2 the
-  // residual's norm never fell below that floor (the solve ran on for minutes). Of x = r - c on the set:
-  // its sum, its sum of squares, its largest and its smallest value (as the largest of -x).
-  T* const r = r_.data();
-  double c = 0;
-  auto residual_sums = [&](Sums& part, std::size_t k, double shift) {  // shift: c, as a local copy
-    const double x = static_cast<double>(r[k]) - shift;
-    part.a += x;
-    part.b += x * x;
-    part.e = std::max(part.e, x);
-    part.f = std::max(part.f, -x);
-  };
-  const Index radius = extension_radius();
+  return count;
+}
+
+// The extension's weights of this set, made before the first iteration (none when the start is already
+// within the stopping test).
+template <class T>
+void ActiveSet<T>::make_extension_weights(Index radius) {
+  const std::uint8_t* const in = in_.data();
   float* const weight = extension_weight_.data();
-  // The extension's weights of this set, made before the first iteration (none when the start is
-  // already within the stopping test).
-  auto make_weights = [&] {
-    const double floor = kExtensionFloor * static_cast<double>((2 * radius + 1) * (2 * radius + 1));
-    auto weight_of = [&](std::size_t k, double count) {
-      return in[k] ? 0.0f : static_cast<float>(1 / std::max(count, floor));
-    };
-    if (weights_current_) {
-      update_weights(radius, weight_of);
-    } else {
-      box_sum(
-          grid_.nx, grid_.ny, radius, grid_.periodic,
-          [&](Index y, double* values) {
-            const std::uint8_t* const in_row = in + y * nx;
-            for (Index x = 0; x < nx; ++x)
-              values[x] = in_row[x] ? 1.0 : 0.0;
-          },
-          [&](Index y, const double* sums, int) {
-            for (Index x = 0; x < nx; ++x) {
-              const std::size_t k = static_cast<std::size_t>(y * nx + x);
-              window_count_[k] = static_cast<std::uint16_t>(sums[x]);
-              weight[k] = weight_of(k, sums[x]);
-            }
-          },
-          window_rows_, team());
-    }
-    weights_current_ = true;
-    pending_flips_.clear();
+  const Index nx = grid_.nx;
+  const double floor = kExtensionFloor * static_cast<double>((2 * radius + 1) * (2 * radius + 1));
+  auto weight_of = [&](std::size_t k, double count) {
+    return in[k] ? 0.0f : static_cast<float>(1 / std::max(count, floor));
   };
-  // r = u - h less its mean on the set (load control), u - h + d (separation control).
-  const double start_shift = load_control_ ? count.a / set_size_ : -separation_;
-  const Sums start = over_points([&, start_shift](std::size_t begin, std::size_t end, Sums& part) {
-    part.e = part.f = -std::numeric_limits<double>::infinity();
-    for (std::size_t k = begin; k < end; ++k)  // (r off the set is the extension's, written before use)
-      if (in[k]) {
-        r[k] = static_cast<T>(static_cast<double>(u[k]) - static_cast<double>(h[k]) - start_shift);
-        residual_sums(part, k, 0.0);
-      }
-  });
-  double norm = 0, largest = 0;
-  // c moved to the mean of x (load control), and the residual's norm and largest value from the sums.
-  auto settle = [&](const Sums& s) {
-    const double shift = load_control_ ? s.a / set_size_ : 0.0;
-    c += shift;
-    norm = std::sqrt(std::max(s.b - 2 * shift * s.a + set_size_ * shift * shift, 0.0));
-    largest = std::max(s.e - shift, s.f + shift);
-  };
-  settle(start);
-  const double r0 = norm;
-  auto clear = [&] {
-    for (Sums& s : sums_)
-      s = Sums{};
-  };
-  // Filter: r in; z = its image kept on the set out, with its sum.
-  T shift_c = 0;
-  double to_filter = 1, from_filter = 1;  // powers of two: the residual's scale into the filter and back
+  if (weights_current_) {
+    update_weights(radius, weight_of);
+  } else {
+    box_sum(
+        grid_.nx, grid_.ny, radius, grid_.periodic,
+        [&](Index y, double* values) {
+          const std::uint8_t* const in_row = in + y * nx;
+          for (Index x = 0; x < nx; ++x)
+            values[x] = in_row[x] ? 1.0 : 0.0;
+        },
+        [&](Index y, const double* sums, int) {
+          for (Index x = 0; x < nx; ++x) {
+            const std::size_t k = static_cast<std::size_t>(y * nx + x);
+            window_count_[k] = static_cast<std::uint16_t>(sums[x]);
+            weight[k] = weight_of(k, sums[x]);
+          }
+        },
+        window_rows_, team());
+  }
+  weights_current_ = true;
+  pending_flips_.clear();
+}
+
+// Filter: r in; z = its image kept on the set out, with its sum. Returns <r, z>.
+template <class T>
+double ActiveSet<T>::filter_pass(const CgStep& step) {
+  using FilterProducer = Convolution<float>::Producer;
+  using FilterConsumer = Convolution<float>::Consumer;
+  const std::uint8_t* const in = in_.data();
+  const T* const r = r_.data();
+  T* const z = z_.data();
+  const float* const weight = extension_weight_.data();
+  const Index nx = grid_.nx, radius = step.radius;
+  const T& shift_c = step.shift_c;
+  const double &to_filter = step.to_filter, &from_filter = step.from_filter;
   // E's inputs: the residual on the set, 0 off it.
   auto extension_inputs = [&](Index y, double* values) {
     const std::uint8_t* const in_row = in + y * nx;
@@ -256,11 +299,29 @@ Index ActiveSet<T>::cg_on_set(std::vector<T>& p, double scale, double reduction,
     }
     sums_[static_cast<std::size_t>(thread)].a += z_sum;
   };
-  // Operator: the direction t = (z - zbar) + beta t on the set in; the step tau = <r, z>/<t, G t> once the
-  // spectrum is multiplied; G t out: p -= tau t, u -= tau G t, and the sums of the new residual and of the
-  // pressure's change.
-  T zbar = 0, beta = 0, tau = 0;
-  double rz = 0, t_gt = 0;
+  return filter_->apply(FilterProducer(residual_in), FilterConsumer(filtered_out), {}, true) * from_filter *
+         from_filter;
+}
+
+// Operator: the direction t = (z - zbar) + beta t on the set in; the step tau = <r, z>/<t, G t> once the
+// spectrum is multiplied; G t out: p -= tau t, u -= tau G t, and the sums of the new residual and of the
+// pressure's change.
+template <class T>
+void ActiveSet<T>::operator_pass(std::vector<T>& p, CgStep& step) {
+  using Producer = typename Convolution<T>::Producer;
+  using Consumer = typename Convolution<T>::Consumer;
+  using ProductHook = typename Convolution<T>::ProductHook;
+  const std::uint8_t* const in = in_.data();
+  const T* const z = z_.data();
+  T* const t = t_.data();
+  T* const u = u_.data();
+  T* const r = r_.data();
+  T* const pp = p.data();
+  const Index nx = grid_.nx, radius = step.radius;
+  const T &zbar = step.zbar, &beta = step.beta;
+  T& tau = step.tau;
+  double& t_gt = step.t_gt;
+  const double &rz = step.rz, &c = step.c;
   // E^T's inputs: z off the set (already times its weight), 0 on it.
   auto transpose_inputs = [&](Index y, double* values) {
     const std::uint8_t* const in_row = in + y * nx;
@@ -310,7 +371,7 @@ Index ActiveSet<T>::cg_on_set(std::vector<T>& p, double scale, double reduction,
           pp[k] -= change;
           sum += std::abs(static_cast<double>(pp[k]));
           r[k] -= step * w;
-          residual_sums(s, k, shift);
+          add_residual(s, static_cast<double>(r[k]) - shift);
         }
       }
       s.c += moved;
@@ -318,43 +379,7 @@ Index ActiveSet<T>::cg_on_set(std::vector<T>& p, double scale, double reduction,
     }
     sums_[static_cast<std::size_t>(thread)].add(s);
   };
-  double rz_old = 0;
-  Index iterations = 0;
-  last_step_change_ = 0;  // no step yet: the pressure has not moved
-  for (; iterations < budget; ++iterations) {
-    // While the set still changes (reduction > 0) a gap within the threshold everywhere on the set also
-    // ends the solve: what is left to reduce is below what the update and the convergence test resolve.
-    const bool within = largest <= absolute && (reduction > 0 || last_step_change_ <= step_change);
-    if (within || norm <= reduction * r0 || norm == 0) break;
-    if (between) between();
-    if (iterations == 0 && radius > 0) make_weights();
-    clear();
-    shift_c = static_cast<T>(c);
-    // Into the filter scaled by a power of two to about 1 (float's range: a residual of 1e-20 m squared
-    // in the product would underflow), out scaled back: exact apart from float's rounding.
-    to_filter = std::ldexp(1.0, -std::ilogb(largest));
-    from_filter = std::ldexp(1.0, std::ilogb(largest));
-    restart_windows();
-    rz = filter_->apply(FilterProducer(residual_in), FilterConsumer(filtered_out), {}, true) * from_filter *
-         from_filter;  // <r, z>
-    zbar = static_cast<T>(load_control_ ? combined().a / set_size_ : 0.0);
-    if (!(rz > 0)) break;  // no descent left (a set of one node, or round-off)
-    beta = static_cast<T>(rz_old > 0 ? rz / rz_old : 0.0);
-    rz_old = rz;
-    clear();
-    for (Sums& s : sums_)
-      s.e = s.f = -std::numeric_limits<double>::infinity();
-    restart_windows();
-    operator_->apply(Producer(direction_in), Consumer(stepped_out), {}, true, ProductHook(step_length));
-    displacement_fresh_ = false;  // u stepped
-    if (!(t_gt > 0)) break;       // nothing moved: tau was 0
-    const Sums f = combined();
-    const double pressure_sum = f.d + count.g;  // sum |p|: the elastic set's and the plastic nodes'
-    last_step_change_ = pressure_sum > 0 ? f.c / pressure_sum : 0;
-    settle(f);
-  }
-  set_mean_ = start_shift + c;  // u - h = r + start_shift on the set, r stepped as u is
-  return iterations;
+  operator_->apply(Producer(direction_in), Consumer(stepped_out), {}, true, ProductHook(step_length));
 }
 
 template Index ActiveSet<double>::cg_on_set(std::vector<double>& p, double scale, double reduction,
@@ -363,5 +388,14 @@ template Index ActiveSet<double>::cg_on_set(std::vector<double>& p, double scale
 template Index ActiveSet<float>::cg_on_set(std::vector<float>& p, double scale, double reduction,
                                            double absolute, double step_change, Index budget,
                                            const std::function<void()>& between);
+
+template typename ActiveSet<double>::Sums ActiveSet<double>::count_on_set(std::vector<double>&, double);
+template typename ActiveSet<float>::Sums ActiveSet<float>::count_on_set(std::vector<float>&, double);
+template void ActiveSet<double>::make_extension_weights(Index);
+template void ActiveSet<float>::make_extension_weights(Index);
+template double ActiveSet<double>::filter_pass(const CgStep&);
+template double ActiveSet<float>::filter_pass(const CgStep&);
+template void ActiveSet<double>::operator_pass(std::vector<double>&, CgStep&);
+template void ActiveSet<float>::operator_pass(std::vector<float>&, CgStep&);
 
 }  // namespace contactbench

@@ -59,46 +59,8 @@ ActiveSetOutcome ActiveSet<T>::solve(const ActiveSetProblem& problem, double tol
     outcome.coarse_iterations = coarse.iterations;
     outcome.work = coarse.work / 4;  // a coarse level's iteration costs a quarter of a fine one
   }
-  // The starting sets. Cold: {p - k g > 0}, k the stiffness of one pixel, g the gap of the nested start
-  // (under load control with the flat from its mean on the start's own contact set), under load control
-  // cut to the coarse level's contact area (coarse_area_level). Warm: the start's own contact set {p > 0},
-  // the previous solution's: under a growing load the set of the rule above overshoots (the scaled
-  // previous pressure presses the flat too deep; surface A at 256^2, load 0.001 -> 0.002: 8673 nodes for
-  // the 2472 of the solution), and the outer steps that shrink it back cost more than those that grow the
-  // previous set (10-load curve: 0.81-0.92 of the cold solves' iterations at 256^2 and 512^2 against
-  // 0.88-1.10; about 1 at 1024^2, where the cold nested start is as good; docs/solvers.md). Of those,
-  // the nodes at or above the hardness start plastic. The start's G p is made with p scaled to the load
-  // on its way in and the set {p > 0} with its mean of u - h on the way out.
-  const double factor = load_control_ ? start_scale(p, total) : 1.0;
-  const double start_flat = start_displacement(p, factor);
-  double d = load_control_ ? start_flat : separation_;
-  if (!warm) {
-    const double stiffness = 1 / operator_->self_response();
-    const std::size_t candidates = score_start(p, d, stiffness);
-    const T level = load_control_ && coarse_ ? coarse_area_level(candidates) : T(0);
-    if (level > 0)
-      over_points([&](std::size_t begin, std::size_t end, Sums&) {
-        for (std::size_t k = begin; k < end; ++k)
-          if (in_[k]) in_[k] = start_score(p, k, d, stiffness) >= level;  // the same operation as ranked
-      });
-  }
-  // The starting sets' plastic nodes, and the pressure held to the sets; from here each set update holds
-  // p to its new sets in its own pass.
-  Sums kept = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
-    for (std::size_t k = begin; k < end; ++k) {
-      plastic_[k] = in_[k] && p[k] >= cap_;
-      in_[k] = in_[k] && !plastic_[k];
-      keep_to_sets(p, k, part);
-    }
-  });
-  if (kept.b == 0 && kept.g == 0) {  // load control: every node; separation control: those the flat
-    kept = over_points([&](std::size_t begin, std::size_t end, Sums& part) {  // penetrates
-      for (std::size_t k = begin; k < end; ++k) {
-        in_[k] = load_control_ || static_cast<double>(h_[k]) > separation_;
-        keep_to_sets(p, k, part);
-      }
-    });
-  }
+  double d = 0;  // the flat's height
+  Sums kept = start_sets(p, warm, total, d);
 
   // A cold start caps only once the elastic sets have settled: the first inner solves, far from the
   // solution, give a few nodes pressures many times the load's, which as plastic nodes would carry more
@@ -157,33 +119,7 @@ ActiveSetOutcome ActiveSet<T>::solve(const ActiveSetProblem& problem, double tol
     // nodes whose gap opens by more than the threshold become elastic again.
     const double limit = threshold(tolerance, d);
     const double entry = outer <= kLaxEntrySteps ? gap_round_off_ : limit;
-    for (auto& log : flips_)
-      log.clear();
-    const Sums update = over_points([&, d, limit, entry](std::size_t begin, std::size_t end, Sums& part) {
-      for (std::size_t k = begin; k < end; ++k) {
-        const double g = d + static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
-        bool elastic = in_[k], plastic = plastic_[k];
-        if (elastic) {
-          part.e = std::max(part.e, std::abs(g));
-          part.d += p[k] > cap_ ? 1.0 : 0.0;
-          elastic = p[k] >= 0 && (p[k] <= cap_ || !capping);
-          plastic = p[k] > cap_ && capping;
-        } else if (plastic) {
-          plastic = g <= limit;
-          elastic = !plastic;
-        } else {
-          elastic = g < -entry;
-        }
-        if (elastic != static_cast<bool>(in_[k]) || plastic != static_cast<bool>(plastic_[k])) {
-          if (elastic != static_cast<bool>(in_[k])) log_flip(k, elastic);
-          in_[k] = elastic;
-          plastic_[k] = plastic;
-          part.h += 1;
-        }
-        keep_to_sets(p, k, part);  // for the next outer step, or the output's clipping below
-      }
-    });
-    note_flips();
+    const Sums update = update_sets(p, d, limit, entry, capping);
     const double residual = update.e;
     const Index changed = static_cast<Index>(update.h);
     kept = update;
@@ -207,6 +143,18 @@ ActiveSetOutcome ActiveSet<T>::solve(const ActiveSetProblem& problem, double tol
     final = changed == 0;  // the sets settled: the next inner solve runs to the tolerance
     if (outcome.iterations >= max_iterations) break;
   }
+  finish(p, total, tolerance, d, kept, inner + column_updates, outcome);
+  outcome.work += static_cast<double>(outcome.iterations);
+  outcome.iterations = std::llround(outcome.work);
+  return outcome;
+}
+
+// The output: the pressure of the sets the loop ended on (clipped to them, rescaled to the load if it was),
+// its gap afresh when u may have drifted from G p, the flat's height and the counts. `steps`: the updates u
+// took since it was last made (the CG's steps and the column updates).
+template <class T>
+void ActiveSet<T>::finish(std::vector<T>& p, double total, double tolerance, double d, const Sums& kept,
+                          Index steps, ActiveSetOutcome& outcome) {
   // The pressure of the sets it ends on (on convergence, nothing is clipped: 0 < p <= H on the elastic
   // set), its gap.
   const Sums held = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
@@ -226,8 +174,8 @@ ActiveSetOutcome ActiveSet<T>::solve(const ActiveSetProblem& problem, double tol
   // threshold (single precision, or a solve near round-off such as the 1e-12 references). In double at
   // the tolerances of use a fresh G p would change the gap by 1e-15 of the height range against a
   // threshold of 1e-8 of the approach.
-  const double drift = static_cast<double>(inner + column_updates + 1) *
-                       static_cast<double>(std::numeric_limits<T>::epsilon()) * height_range_;
+  const double drift =
+      static_cast<double>(steps + 1) * static_cast<double>(std::numeric_limits<T>::epsilon()) * height_range_;
   const bool drifted = !displacement_fresh_ && kDriftMargin * drift > threshold(tolerance, d);
   if (clipped || !displacement_current_ || drifted) {
     operator_->apply(p.data(), u_.data());
@@ -250,9 +198,6 @@ ActiveSetOutcome ActiveSet<T>::solve(const ActiveSetProblem& problem, double tol
   outcome.separation = load_control_ ? flat_height(last) : separation_;
   outcome.pressure_sum = last.g;
   contact_fraction_ = last.d / static_cast<double>(n_);
-  outcome.work += static_cast<double>(outcome.iterations);
-  outcome.iterations = std::llround(outcome.work);
-  return outcome;
 }
 
 // G p - h of the last solution.
@@ -271,6 +216,10 @@ template ActiveSetOutcome ActiveSet<double>::solve(const ActiveSetProblem& probl
 template ActiveSetOutcome ActiveSet<float>::solve(const ActiveSetProblem& problem, double tolerance,
                                                   Index max_iterations, bool warm, std::vector<float>& p,
                                                   const std::function<void()>& between);
+template void ActiveSet<double>::finish(std::vector<double>&, double, double, double, const Sums&, Index,
+                                        ActiveSetOutcome&);
+template void ActiveSet<float>::finish(std::vector<float>&, double, double, double, const Sums&, Index,
+                                       ActiveSetOutcome&);
 template void ActiveSet<double>::displacement_minus_heights(std::vector<double>& out);
 template void ActiveSet<float>::displacement_minus_heights(std::vector<float>& out);
 

@@ -141,7 +141,11 @@ class ActiveSet {
     return combined();
   }
 
+  void finish(std::vector<T>& p, double total, double tolerance, double d, const Sums& kept, Index steps,
+              ActiveSetOutcome& outcome);
+
   // The sets (active_set_sets.cpp).
+  Sums update_sets(std::vector<T>& p, double d, double limit, double entry, bool capping);
   void reseat(std::vector<T>& p, double total);
   void keep_to_sets(std::vector<T>& p, std::size_t k, Sums& part);
   void add_columns();
@@ -154,7 +158,28 @@ class ActiveSet {
                   Index budget, const std::function<void()>& between);
   template <class WeightOf>
   void update_weights(Index radius, WeightOf weight_of);
+  // What the CG's two passes of an iteration share.
+  struct CgStep {
+    double c = 0;                           // the mean the steps added to r (load control)
+    T shift_c = 0;                          // c as T
+    double to_filter = 1, from_filter = 1;  // powers of two: the residual's scale into the filter and back
+    T zbar = 0, beta = 0, tau = 0;
+    double rz = 0, t_gt = 0;  // <r, z> and <t, G t>
+    Index radius = 0;         // of the extension's window
+  };
+  Sums count_on_set(std::vector<T>& p, double scale);
+  void make_extension_weights(Index radius);
+  double filter_pass(const CgStep& step);
+  void operator_pass(std::vector<T>& p, CgStep& step);
+  // Of x = r - c on the set: its sum (a), sum of squares (b), largest value (e) and largest of -x (f).
+  static void add_residual(Sums& part, double x) {
+    part.a += x;
+    part.b += x * x;
+    part.e = std::max(part.e, x);
+    part.f = std::max(part.f, -x);
+  }
   // The starts (active_set_coarse_start.cpp).
+  Sums start_sets(std::vector<T>& p, bool warm, double total, double& d);
   double start_scale(const std::vector<T>& p, double total);
   double start_displacement(std::vector<T>& p, double factor);
   std::size_t score_start(const std::vector<T>& p, double d, double stiffness);

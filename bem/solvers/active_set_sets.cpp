@@ -141,6 +141,45 @@ void ActiveSet<T>::scale_with_displacement(std::vector<T>& p, double factor) {
   });
 }
 
+// One set update (solve's comment says the rule) with p held to the new sets; e: the largest |g| on the
+// elastic set before it, d: its nodes above the hardness, h: the nodes that changed set.
+template <class T>
+typename ActiveSet<T>::Sums ActiveSet<T>::update_sets(std::vector<T>& p, double d, double limit, double entry,
+                                                      bool capping) {
+  for (auto& log : flips_)
+    log.clear();
+  const Sums update = over_points([&, d, limit, entry](std::size_t begin, std::size_t end, Sums& part) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const double g = d + static_cast<double>(u_[k]) - static_cast<double>(h_[k]);
+      bool elastic = in_[k], plastic = plastic_[k];
+      if (elastic) {
+        part.e = std::max(part.e, std::abs(g));
+        part.d += p[k] > cap_ ? 1.0 : 0.0;
+        elastic = p[k] >= 0 && (p[k] <= cap_ || !capping);
+        plastic = p[k] > cap_ && capping;
+      } else if (plastic) {
+        plastic = g <= limit;
+        elastic = !plastic;
+      } else {
+        elastic = g < -entry;
+      }
+      if (elastic != static_cast<bool>(in_[k]) || plastic != static_cast<bool>(plastic_[k])) {
+        if (elastic != static_cast<bool>(in_[k])) log_flip(k, elastic);
+        in_[k] = elastic;
+        plastic_[k] = plastic;
+        part.h += 1;
+      }
+      keep_to_sets(p, k, part);  // for the next outer step, or the output's clipping below
+    }
+  });
+  note_flips();
+  return update;
+}
+
+template typename ActiveSet<double>::Sums ActiveSet<double>::update_sets(std::vector<double>&, double, double,
+                                                                         double, bool);
+template typename ActiveSet<float>::Sums ActiveSet<float>::update_sets(std::vector<float>&, double, double,
+                                                                       double, bool);
 template void ActiveSet<double>::reseat(std::vector<double>& p, double total);
 template void ActiveSet<float>::reseat(std::vector<float>& p, double total);
 template void ActiveSet<double>::keep_to_sets(std::vector<double>& p, std::size_t k, Sums& part);
