@@ -267,7 +267,7 @@ TEST(SolverRegistry, ThePreconditionedSolverNeedsFewerIterationsOnARoughSurface)
     iterations[static_cast<int>(kind)] = s.iterations;
   }
   EXPECT_LT(2 * iterations[1], iterations[0]) << iterations[0] << " vs " << iterations[1];
-  // The active-set method: 25 against 81 here (measured; 41 before the changes of docs/solvers.md "Outer
+  // The active-set method: 25 against 81 here (measured; 41 before the changes of docs/solvers_log.md "Outer
   // steps at low contact" and "Fewer transforms"; its count includes a fresh G p per set update that moves
   // more than a few pressures and one for its start, bem/active_set.hpp, which weigh most on a grid this
   // small); asking for fewer than two thirds leaves room for platform differences without hiding a
@@ -279,9 +279,9 @@ TEST(ActiveSet, ALooseToleranceDoesNotBiasTheAreaLow) {
   // Nodes that penetrate by less than the convergence threshold used to stay out of the contact set: at
   // tolerance 1e-4 the area of pixel-rough H = 0.8 surfaces (256^2, periodic, about 30 % contact, three
   // seeds) came out below that of a 1e-10 solve by 34 of 62,642 nodes (5.4e-4; every seed low), a bias that
-  // grows with the grid (1e-3 at 2048^2, docs/solvers.md "Which nodes enter"). Entering at any penetration
-  // beyond round-off leaves the solve's own error: 5 nodes (8e-5). Both measured; 2.5e-4 leaves a factor
-  // of three either side.
+  // grows with the grid (1e-3 at 2048^2, docs/solvers_log.md "Which nodes enter"). Entering at any
+  // penetration beyond round-off leaves the solve's own error: 5 nodes (8e-5). Both measured; 2.5e-4 leaves a
+  // factor of three either side.
   const Grid grid{.nx = 256, .ny = 256, .lx = 1e-4, .ly = 1e-4, .periodic = true};
   const SelfAffinePsd psd{
       .sigma = 0.5e-6, .hurst = 0.8, .qr = 4 * 2 * pi / 1e-4, .qs = std::nullopt, .anisotropy = 1};

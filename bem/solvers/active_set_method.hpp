@@ -1,5 +1,5 @@
-// The primal-dual active-set method (bem/active_set.hpp, docs/solvers.md "active_set") on one grid, with its
-// next coarser level for the nested start: one class, its work split by concept over
+// The primal-dual active-set method (bem/active_set.hpp, docs/solvers.md "The active-set method") on one
+// grid, with its next coarser level for the nested start: one class, its work split by concept over
 //   active_set_method.cpp        the outer loop: the starting sets, the inner solves, the convergence test;
 //   active_set_sets.cpp          the sets: their update's bookkeeping, the load they carry, G p kept current;
 //   active_set_inner_cg.cpp      the inner CG on a fixed set, with the extended filter;
@@ -45,13 +45,13 @@ inline constexpr std::size_t kFewChanges = 16;
 // A guard against a set that cycles: at most this many outer steps (each ends an inner solve).
 inline constexpr Index kMaxOuter = 500;
 // Nodes enter the contact set when they penetrate beyond the gap's round-off for this many outer steps, then
-// only beyond the convergence threshold (docs/solvers.md "Which nodes enter"): a node at p = 0 and g = 0
+// only beyond the convergence threshold (docs/solvers_log.md "Which nodes enter"): a node at p = 0 and g = 0
 // within the solve's accuracy could otherwise enter and leave again for ever. Solves in tests/ take 5 to 16
 // outer steps.
 inline constexpr Index kLaxEntrySteps = 30;
-// The extended filter (docs/solvers.md "The extended filter"): the residual is extended off the contact set
-// by its average over the set nodes of a (2 kExtensionRadius + 1)^2 window before the Fourier filter, and the
-// filter's output gathered back by the transpose. The average divides by the window's count of set nodes,
+// The extended filter (docs/solvers_log.md "The extended filter"): the residual is extended off the contact
+// set by its average over the set nodes of a (2 kExtensionRadius + 1)^2 window before the Fourier filter, and
+// the filter's output gathered back by the transpose. The average divides by the window's count of set nodes,
 // but by at least kExtensionFloor of the window, so that a node with few set nodes near it gets a damped
 // value, not one node's residual. Measured with `contactbench bem` at 1024^2 (surface A refined and an
 // H = 0.8 surface, 1 %, 10 % and 30 % contact, seven cases): 210 / 197 / 191 / 195 iterations in all for
