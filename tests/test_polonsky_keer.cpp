@@ -11,6 +11,7 @@
 #include "contact_shapes.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
 #include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/solvers/contact_solver.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
@@ -239,6 +240,29 @@ TEST(SolverRegistry, NamesRoundTripAndAnUnknownNameListsTheKnownOnes) {
     for (const std::string& name : solver_names())
       EXPECT_NE(message.find(name), std::string::npos) << message;
   }
+}
+
+TEST(SolverRegistry, EachEntryDescribesItselfAndItsFactoryMakesWhatItSays) {
+  // Every solver registers a unique name, a description and a factory, in the order of SolverKind; what an
+  // entry says it does natively about a hardness must be what its solver does (PolonskyKeer searches the
+  // flat's height for the others, bem/solvers/hardness_search.hpp).
+  const Grid grid{.nx = 16, .ny = 16, .lx = 1e-5, .ly = 1e-5, .periodic = true};
+  const Surface surface(grid, HeightMap::Random(16, 16) * 1e-7);
+  std::size_t index = 0;
+  for (const SolverEntry& entry : solver_registry()) {
+    EXPECT_EQ(std::string(entry.name), solver_names().at(index++));
+    EXPECT_EQ(solver_kind(entry.name), entry.kind);
+    EXPECT_EQ(&solver_entry(entry.kind), &entry);
+    EXPECT_FALSE(entry.description.empty()) << entry.name;
+    ASSERT_TRUE(entry.make) << entry.name;
+    for (const bool single : {false, true}) {
+      const std::unique_ptr<ContactSolver> solver = entry.make(surface.centred(), kModulus, 1, single);
+      ASSERT_NE(solver, nullptr) << entry.name;
+      EXPECT_EQ(solver->caps_load_control(), entry.hardness) << entry.name;
+      EXPECT_FALSE(solver->warm()) << entry.name;
+    }
+  }
+  EXPECT_EQ(index, solver_names().size());
 }
 
 TEST(SolverRegistry, ThePreconditionedSolverNeedsFewerIterationsOnARoughSurface) {
