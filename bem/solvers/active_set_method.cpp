@@ -130,7 +130,7 @@ ActiveSetOutcome ActiveSet<T>::solve(const ActiveSetProblem& problem, double tol
     // (and below the final gap), each application of G as a whole iteration.
     outcome.iterations = inner + fresh + 1;
     const bool above_cap = update.d > 0;
-    if (changed == 0 && !above_cap && residual <= limit && last_step_change_ <= tolerance) {
+    if (converged(changed, above_cap, residual, limit, tolerance)) {
       outcome.converged = true;
       break;
     }

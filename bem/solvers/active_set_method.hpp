@@ -141,6 +141,12 @@ class ActiveSet {
     return combined();
   }
 
+  // The convergence test after a set update (docs/solvers.md "The active-set method, precisely"): no node
+  // changed set and no elastic pressure is above the cap, the largest |gap| on the set (`residual`) is
+  // within the threshold `limit`, and the last CG step changed the pressure by at most the tolerance.
+  bool converged(Index changed, bool above_cap, double residual, double limit, double tolerance) const {
+    return changed == 0 && !above_cap && residual <= limit && last_step_change_ <= tolerance;
+  }
   void finish(std::vector<T>& p, double total, double tolerance, double d, const Sums& kept, Index steps,
               ActiveSetOutcome& outcome);
 
