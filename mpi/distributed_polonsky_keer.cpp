@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "contactbench/bem/solvers/constrained_cg_kernels.hpp"
 #include "contactbench/bem/solvers/polonsky_keer_step.hpp"
 #include "contactbench/core/error.hpp"
 
@@ -39,12 +40,6 @@ void sum_over_ranks(double (&values)[N], MPI_Comm comm) {
 }
 
 }  // namespace
-
-// The gap's moments on the contact set, and the pressure's sum and change
-// (bem/solvers/constrained_cg_kernels.hpp's Moments).
-struct DistributedPolonskyKeer::Moments {
-  double change = 0, sum = 0, elastic = 0, g_mean = 0, g_norm = 0;
-};
 
 DistributedPolonskyKeer::DistributedPolonskyKeer(const Grid& grid, const HeightMap& local_heights,
                                                  Real modulus, MPI_Comm comm, PolonskyKeerOptions options,
@@ -100,11 +95,10 @@ void DistributedPolonskyKeer::apply(const std::vector<double>& in, std::vector<d
 
 // g = s_new u - h (u = G q_new, in u_), the change of the pressure from s_old q_old, and the moments of the
 // gap on the contact set. Each rank sums about a shift, the first gap in contact it meets, and the ranks'
-// sums are combined exactly in rank order (Chan et al.), as the serial solver combines its threads' (the same
-// on every rank, so that every rank takes the same decisions).
-DistributedPolonskyKeer::Moments DistributedPolonskyKeer::gap_pass(const std::vector<double>& q_new,
-                                                                   const std::vector<double>& q_old,
-                                                                   double s_new, double s_old) {
+// sums are combined exactly in rank order (Chan et al.) by the serial solver's own code for its threads'
+// (cg::combine_moments; the same on every rank, so that every rank takes the same decisions).
+cg::Moments DistributedPolonskyKeer::gap_pass(const std::vector<double>& q_new,
+                                              const std::vector<double>& q_old, double s_new, double s_old) {
   double change = 0, sum = 0, s1 = 0, s2 = 0, elastic = 0, shift = 0;
   bool has_shift = false;
   for (std::size_t i = 0; i < h_.size(); ++i) {
@@ -128,30 +122,18 @@ DistributedPolonskyKeer::Moments DistributedPolonskyKeer::gap_pass(const std::ve
   const double mine[6] = {change, sum, elastic, shift, s1, s2};
   std::vector<double> all(static_cast<std::size_t>(6 * ranks));
   MPI_Allgather(mine, 6, MPI_DOUBLE, all.data(), 6, MPI_DOUBLE, comm_);
-  Moments m;
+  // Each rank's sums as the serial solver's threads' partial sums, combined by the same code.
+  std::vector<cg::Partial> parts(static_cast<std::size_t>(ranks));
   for (int r = 0; r < ranks; ++r) {
-    m.change += all[6 * r];
-    m.sum += all[6 * r + 1];
-    m.elastic += all[6 * r + 2];
+    cg::Partial& part = parts[static_cast<std::size_t>(r)];
+    part.change = all[6 * r];
+    part.sum = all[6 * r + 1];
+    part.elastic = all[6 * r + 2];
+    part.shift = all[6 * r + 3];
+    part.s1 = all[6 * r + 4];
+    part.s2 = all[6 * r + 5];
   }
-  if (m.elastic == 0) return m;
-  double mean = 0;
-  for (int r = 0; r < ranks; ++r) {
-    const double e = all[6 * r + 2];
-    if (e > 0) mean += e * all[6 * r + 3] + all[6 * r + 4];
-  }
-  mean /= m.elastic;
-  double norm = 0;
-  for (int r = 0; r < ranks; ++r) {
-    const double e = all[6 * r + 2], sh = all[6 * r + 3], a = all[6 * r + 4], b = all[6 * r + 5];
-    if (e > 0) {
-      const double own = sh + a / e;
-      norm += b - a * a / e + e * (own - mean) * (own - mean);
-    }
-  }
-  m.g_mean = mean;
-  m.g_norm = std::max(norm, 0.0);
-  return m;
+  return cg::combine_moments<true>(parts);
 }
 
 // bem/solvers/polonsky_keer_solver.cpp's iterate<kLoad = true, kHard = false>, plain or preconditioned, pass
@@ -164,7 +146,7 @@ void DistributedPolonskyKeer::iterate(double total) {
   const std::size_t n = h_.size();
 
   apply(q_[cur_], u_);
-  Moments moments = gap_pass(q_[cur_], q_[cur_], s_[cur_], s_[cur_]);
+  cg::Moments moments = gap_pass(q_[cur_], q_[cur_], s_[cur_], s_[cur_]);
 
   double g_norm_old = 1, delta = 0, change = 0;  // delta = 0: the first step is steepest descent
   double rz_old = 1;                             // preconditioned: <r, z> of the last direction
