@@ -3,8 +3,8 @@
 // along y of whole rows (the window's rows kept in a ring small enough to stay in cache), then along x of
 // each row of column sums, so the cost does not depend on the radius and the input is read once, a row at a
 // time, and the output handed over a row at a time: the caller's loops over a row vectorise. The active-set
-// solver's extension of the residual off the contact set is made of such sums (bem/active_set.cpp,
-// docs/solvers.md "The extended filter").
+// solver's extension of the residual off the contact set is made of such sums
+// (bem/solvers/active_set_inner_cg.cpp, docs/solvers_log.md "The extended filter").
 #pragma once
 
 #include <omp.h>

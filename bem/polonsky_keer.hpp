@@ -1,79 +1,17 @@
 // The boundary-element ground truth: frictionless normal contact of a rough rigid surface and an elastic
-// half-space (equivalently a rigid flat on a rough elastic body), solved for a prescribed mean pressure by
-// the constrained conjugate gradient of Polonsky & Keer (Wear 231, 206-219, 1999; docs/theory.md section 6),
-// or its Fourier-preconditioned variant (below; docs/solvers.md).
+// half-space, solved for a prescribed mean pressure (solve) or a prescribed height of the flat
+// (solve_for_separation), elastic or capped at a hardness, periodic or not, in double or single precision
+// (docs/solvers.md "The problem every solver solves"; the physics in docs/theory.md section 6). Three
+// iterations solve it (options.solver, bem/solver_registry.hpp; docs/solvers.md "How to choose"), each a
+// class behind one interface (bem/solvers/contact_solver.hpp); this class is the one callers use.
 //
-// Unknowns: the pressure p >= 0 on the grid and the flat's height d above the mean plane. The gap is
-// g = d - h + u(p) >= 0 with u = G p the elastic displacement (bem/half_space.hpp); where p > 0 the gap is 0,
-// and mean(p) = the prescribed mean pressure. Each iteration costs two applications of G (two FFT pairs),
-// with all of its element-wise work fused into them (bem/convolution.hpp): about two FFT pairs in all.
-//
-// Three iterations solve this problem (options.solver, bem/solver_registry.hpp; docs/solvers.md):
-// - polonsky_keer: PK's constrained CG, the search direction built from the gap on the contact set;
-// - preconditioned_cg: the same loop with the gap residual (its mean on the contact set removed) filtered by
-//   (E*/2)|q| in Fourier space (bem/fourier_preconditioner.hpp), restricted to the contact set again with its
-//   mean there removed, before it becomes a direction; conjugation restarts when nodes enter the set, and
-//   entering nodes take the overlap times the plain step <t,t>/<t,Gt> (PK's entry step has the wrong
-//   dimension once t is a pressure). One more convolution an iteration (periodic: one FFT pair; non-periodic:
-//   3/4 of a padded pair, as the operator's), far fewer iterations, and a count that grows much more slowly
-//   with the grid (results/bench/bem_solvers.md);
-// - active_set: a primal-dual active-set method (bem/active_set.hpp): the linear problem on a guessed contact
-//   set solved by a conjugate gradient with the same filter, the set updated from p and the gap, from a
-//   nested coarse start; a count that barely grows with the grid. It stops on its own criterion (the set
-//   settled, the largest gap on it at most the tolerance times the approach max h - d, the last CG step's
-//   relative change at most the tolerance; bem/active_set.hpp). The default (kDefaultSolver): the fastest
-//   of the three along the load curves scenes run, from 256^2 to 1024^2 (docs/solvers.md).
-//
-// active_set solves every problem itself: load or separation control, elastic or capped at a hardness (a
-// third, plastic set; a capped load is one solve). preconditioned_cg applies to load-controlled elastic
-// solves; under separation control and with a hardness it iterates as polonsky_keer (polonsky_keer.cpp says
-// why), and with both of them a capped load is met by a search on the flat's height, each trial a capped
-// solve under separation control.
-//
-// Stopping criteria of polonsky_keer and preconditioned_cg, the same tolerance for both (active_set: above):
-// - the relative change of the pressure in one iteration (Polonsky & Keer's),
-//     sum |p_new - p_old| / sum p_new < tolerance;
-// - and, for every solver, the complementarity residual at most residual_bound(tolerance) (below): a solve
-//   that met the change criterion with a larger residual is marked converged = false, with a warning;
-// - preconditioned_cg also requires that no node entered or left the contact set in that iteration: the
-//   change is then a CG step on a settled set, which is why it cannot stall on a wrong answer (the failure
-//   of preconditioning the whole gap: a change of 1e-16 with the pressure 100 % off). Its direction is a
-//   descent direction of the constrained problem whenever the gap on the contact set is not uniform
-//   (<r, z> > 0 for the positive filter), so a vanishing step means a vanishing residual.
-// The complementarity residual is reported as `residual`: the largest |g| on the contact set relative to
-// the surface's height range. What the tolerance buys (measured by bench/bench_bem_solvers.cpp against a
-// solve at 1e-12 on surface A and an H = 0.8 surface, 256^2 to 2048^2, 1 % to 30 % contact): the contact
-// area to 1e-4 relative and the pressure to 1e-4 relative L2 needed a tolerance of 1e-4 to 1e-6 with
-// polonsky_keer, twice 1e-7, and 1e-3 to 1e-5 with preconditioned_cg, once 1e-7 (where 1e-4 of the area is
-// about one node: the count must be exact), and 1e-4 to 1e-6 with active_set (1e-5 in 29 of 45 cases, 1e-6
-// in 3); results/bench/bem_solvers.md, column tol. The defaults (1e-10 here, 1e-8 in scenes and
-// on the command line) are tighter than that for all three. A solve
-// that reaches the iteration cap is marked converged = false and says so through the options' warning sink;
-// it is never passed off as converged.
-//
-// Hardness (optional): a perfectly plastic cap, p <= H. Nodes at p = H are plastic: their gap may be negative
-// (the surface there flowed; the overlap is the plastic indentation) and they leave the conjugate-gradient
-// set, which is the elastic contact {0 < p < H}; a plastic node whose gap opens (g > 0) is released, as a
-// node out of contact that the surface penetrates enters (the standard capped PK variant: e.g. Almqvist et
-// al., Tribol. Int. 40, 2007; Weber et al., Nat. Commun. 9, 2018). Rescaling the pressure to the load, PK's
-// way of imposing it, does not commute with the cap, so under load control the cap is met the way a
-// rigid-body approach is: the capped problem is solved for the flat's height d (separation control, where
-// the CG needs neither the mean taken out nor the rescaling, and the cap is a plain projection onto
-// [0, H]), and d is searched (bracketed, then regula falsi with the Illinois modification) until the mean
-// pressure is the load to the relative tolerance; the elastic pressures are then rescaled to impose it
-// exactly. The search starts from the elastic solution, which is the answer when its largest pressure is at
-// most H (then no capped code runs at all). Without a hardness, nothing of this runs.
-//
-// Separation control (solve_for_separation): the flat's height d above the mean plane of the heights is
-// imposed and the load is the unknown; the CG then takes no mean out of the gap and does not rescale the
-// pressure (PK's two steps for an unknown d and a known load). Why d and not the mean gap: in the periodic
-// case they are the same thing (the operator's q = 0 mode is zero, so the displacement has zero mean and
-// the mean gap is d - mean(h) + mean(u) = d), and there d must be > 0 (a mean gap of zero or less needs an
-// infinite load; refused, unless a hardness bounds the load); in the non-periodic case d is the rigid-body
-// approach measured from the undeformed surface (the displacement vanishes far away; the approach of the
-// highest point is max h - d, Hertz's and Sneddon's delta), while the mean gap over the window would
-// depend on the displacement of the whole window, a poor thing to prescribe. Solving for the d that a
-// load-controlled solve reported gives that load back (tests/test_bem_effects.cpp).
+// The gap is g = d - h + u(p) >= 0, u = G p (bem/half_space.hpp), d the flat's height above the mean plane of
+// the heights (ContactSolution::separation): under separation control in the periodic case d is the mean gap
+// and must be > 0, in the non-periodic case the rigid-body approach is max h - d (docs/solvers.md
+// "Separation control"). A solve is converged only when its stopping criterion is met AND the
+// complementarity residual is at most residual_bound(tolerance) (below; docs/solvers.md "Stopping criteria
+// and what the tolerance buys"); a solve that reaches the iteration cap is marked converged = false and says
+// so through the options' warning sink. A hardness makes nodes at p = H plastic (docs/solvers.md "Hardness").
 #pragma once
 
 #include <functional>
@@ -90,11 +28,11 @@ namespace contactbench {
 enum class LoadPathStart { scaled, extrapolated };
 
 struct PolonskyKeerOptions {
-  Real tolerance = 1e-10;  // on the relative change of the pressure (see above)
+  Real tolerance = 1e-10;  // of the stopping criterion (docs/solvers.md "Stopping criteria ...")
   Index max_iterations = 20000;
-  // The indentation hardness H [Pa] of a perfectly plastic cap p <= H (see above); none: purely elastic.
-  // A mean pressure P/A0 >= H is refused: the whole surface would be plastic (full plastic contact, p = H
-  // everywhere, the flat's height undetermined).
+  // The indentation hardness H [Pa] of a perfectly plastic cap p <= H (docs/solvers.md "Hardness"); none:
+  // elastic. A mean pressure P/A0 >= H is refused: the whole surface would be plastic (full plastic contact,
+  // p = H everywhere, the flat's height undetermined).
   std::optional<Real> hardness = std::nullopt;
   // Iterate in single precision (FFTW's float transforms, float arrays; sums still in double): half the
   // memory, and faster (measured per iteration, one thread: x1.2 at 256^2, x1.5 to x1.6 at 1024^2). Float
@@ -166,27 +104,22 @@ class PolonskyKeer {
   const ContactSolution& solve(Real mean_pressure);
 
   // Solves with the flat at height `separation` [m] above the mean plane of the heights (the d of
-  // ContactSolution::separation; see above), the load unknown: solution().mean_pressure is the resulting
-  // P/A0. Warm-started like solve(). A flat at or above the highest point touches nothing (zero pressure).
+  // ContactSolution::separation; docs/solvers.md "Separation control"), the load unknown:
+  // solution().mean_pressure is the resulting P/A0. Warm-started like solve(). A flat at or above the highest
+  // point touches nothing (zero pressure).
   const ContactSolution& solve_for_separation(Real separation);
 
   const ContactSolution& solution() const { return solution_; }
   const Surface& surface() const { return surface_; }
 
  private:
-  Index start_coarse(Real mean_pressure);  // returns the coarse levels' iterations
-
   Surface surface_;
   PolonskyKeerOptions options_;
   Real engine_modulus_;
   int threads_;
   ContactSolution solution_;
-
- public:
-  class Engine;  // the iteration, in the chosen scalar (polonsky_keer.cpp)
-
- private:
-  std::unique_ptr<Engine> engine_;
+  // The iteration, in the chosen scalar: the registry's solver (bem/solver_registry.hpp).
+  std::unique_ptr<ContactSolver> engine_;
 };
 
 }  // namespace contactbench

@@ -1,11 +1,17 @@
 // The boundary-element solvers by name: what a scene's `solver = "..."` and the command line's `--solver`
 // choose (docs/solvers.md). Every solver solves the same problem (bem/polonsky_keer.hpp) with the same
-// options and the same stopping rules; they differ in how an iteration picks its search direction.
+// options and the same stopping rules; they differ in how an iteration picks its search direction. Each is a
+// class behind one interface (bem/solvers/contact_solver.hpp) that registers itself here: its name, what it
+// does, what it supports natively, and how to make it.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "contactbench/core/surface.hpp"
 
 namespace contactbench {
 
@@ -25,6 +31,30 @@ enum class SolverKind {
 inline constexpr SolverKind kDefaultSolver = SolverKind::active_set;
 // The default of a solve on several MPI ranks, where active_set has no distributed version (docs/mpi.md).
 inline constexpr SolverKind kDefaultDistributedSolver = SolverKind::preconditioned_cg;
+
+class ContactSolver;  // bem/solvers/contact_solver.hpp
+
+// One solver as it registers itself.
+struct SolverEntry {
+  SolverKind kind = SolverKind::polonsky_keer;
+  std::string_view name;         // as scenes and --solver spell it
+  std::string_view description;  // one line
+  // What it does itself, without help from PolonskyKeer: separation control with its own iteration (else it
+  // iterates as polonsky_keer there), a hardness under load control in one solve (else PolonskyKeer searches
+  // the flat's height, bem/solvers/hardness_search.hpp), and single precision.
+  bool separation_control = false;
+  bool hardness = false;
+  bool single_precision = false;
+  // Makes the solver for a centred surface, E* [Pa], threads, in float when single_precision.
+  std::function<std::unique_ptr<ContactSolver>(const Surface& centred, Real modulus, int threads,
+                                               bool single_precision)>
+      make;
+};
+
+// Every solver, in the order of SolverKind.
+const std::vector<SolverEntry>& solver_registry();
+// The entry of a kind.
+const SolverEntry& solver_entry(SolverKind kind);
 
 // The known names, in the order of SolverKind.
 const std::vector<std::string>& solver_names();

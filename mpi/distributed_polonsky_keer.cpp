@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "contactbench/bem/solvers/constrained_cg_kernels.hpp"
+#include "contactbench/bem/solvers/polonsky_keer_step.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench::mpi {
@@ -38,11 +40,6 @@ void sum_over_ranks(double (&values)[N], MPI_Comm comm) {
 }
 
 }  // namespace
-
-// The gap's moments on the contact set, and the pressure's sum and change (bem/polonsky_keer.cpp's Moments).
-struct DistributedPolonskyKeer::Moments {
-  double change = 0, sum = 0, elastic = 0, g_mean = 0, g_norm = 0;
-};
 
 DistributedPolonskyKeer::DistributedPolonskyKeer(const Grid& grid, const HeightMap& local_heights,
                                                  Real modulus, MPI_Comm comm, PolonskyKeerOptions options,
@@ -98,11 +95,10 @@ void DistributedPolonskyKeer::apply(const std::vector<double>& in, std::vector<d
 
 // g = s_new u - h (u = G q_new, in u_), the change of the pressure from s_old q_old, and the moments of the
 // gap on the contact set. Each rank sums about a shift, the first gap in contact it meets, and the ranks'
-// sums are combined exactly in rank order (Chan et al.), as the serial solver combines its threads' (the same
-// on every rank, so that every rank takes the same decisions).
-DistributedPolonskyKeer::Moments DistributedPolonskyKeer::gap_pass(const std::vector<double>& q_new,
-                                                                   const std::vector<double>& q_old,
-                                                                   double s_new, double s_old) {
+// sums are combined exactly in rank order (Chan et al.) by the serial solver's own code for its threads'
+// (cg::combine_moments; the same on every rank, so that every rank takes the same decisions).
+cg::Moments DistributedPolonskyKeer::gap_pass(const std::vector<double>& q_new,
+                                              const std::vector<double>& q_old, double s_new, double s_old) {
   double change = 0, sum = 0, s1 = 0, s2 = 0, elastic = 0, shift = 0;
   bool has_shift = false;
   for (std::size_t i = 0; i < h_.size(); ++i) {
@@ -126,33 +122,22 @@ DistributedPolonskyKeer::Moments DistributedPolonskyKeer::gap_pass(const std::ve
   const double mine[6] = {change, sum, elastic, shift, s1, s2};
   std::vector<double> all(static_cast<std::size_t>(6 * ranks));
   MPI_Allgather(mine, 6, MPI_DOUBLE, all.data(), 6, MPI_DOUBLE, comm_);
-  Moments m;
+  // Each rank's sums as the serial solver's threads' partial sums, combined by the same code.
+  std::vector<cg::Partial> parts(static_cast<std::size_t>(ranks));
   for (int r = 0; r < ranks; ++r) {
-    m.change += all[6 * r];
-    m.sum += all[6 * r + 1];
-    m.elastic += all[6 * r + 2];
+    cg::Partial& part = parts[static_cast<std::size_t>(r)];
+    part.change = all[6 * r];
+    part.sum = all[6 * r + 1];
+    part.elastic = all[6 * r + 2];
+    part.shift = all[6 * r + 3];
+    part.s1 = all[6 * r + 4];
+    part.s2 = all[6 * r + 5];
   }
-  if (m.elastic == 0) return m;
-  double mean = 0;
-  for (int r = 0; r < ranks; ++r) {
-    const double e = all[6 * r + 2];
-    if (e > 0) mean += e * all[6 * r + 3] + all[6 * r + 4];
-  }
-  mean /= m.elastic;
-  double norm = 0;
-  for (int r = 0; r < ranks; ++r) {
-    const double e = all[6 * r + 2], sh = all[6 * r + 3], a = all[6 * r + 4], b = all[6 * r + 5];
-    if (e > 0) {
-      const double own = sh + a / e;
-      norm += b - a * a / e + e * (own - mean) * (own - mean);
-    }
-  }
-  m.g_mean = mean;
-  m.g_norm = std::max(norm, 0.0);
-  return m;
+  return cg::combine_moments<true>(parts);
 }
 
-// bem/polonsky_keer.cpp's iterate<kLoad = true, kHard = false>, plain or preconditioned, pass by pass.
+// bem/solvers/polonsky_keer_solver.cpp's iterate<kLoad = true, kHard = false>, plain or preconditioned, pass
+// by pass; the decisions between passes are the same code (bem/solvers/polonsky_keer_step.hpp).
 void DistributedPolonskyKeer::iterate(double total) {
   const double tolerance = options_.tolerance;
   const Index max_iterations = options_.max_iterations;
@@ -161,34 +146,22 @@ void DistributedPolonskyKeer::iterate(double total) {
   const std::size_t n = h_.size();
 
   apply(q_[cur_], u_);
-  Moments moments = gap_pass(q_[cur_], q_[cur_], s_[cur_], s_[cur_]);
+  cg::Moments moments = gap_pass(q_[cur_], q_[cur_], s_[cur_], s_[cur_]);
 
   double g_norm_old = 1, delta = 0, change = 0;  // delta = 0: the first step is steepest descent
   double rz_old = 1;                             // preconditioned: <r, z> of the last direction
   double entered = 0;                            // nodes that entered the set in the last update
-  // Step damping after kStall iterations without a new lowest change (bem/polonsky_keer.cpp says why).
-  constexpr Index kStall = 25;
-  double damping = 1, lowest_change = std::numeric_limits<double>::infinity();
-  Index since_lowest = 0;
+  PolonskyKeerStep step;                         // the serial solver's criterion, damping and step lengths
   Index iteration = 0;
   bool converged = false;
   for (;;) {
     if (iteration > 0) {
-      change = moments.sum > 0 ? moments.change / moments.sum
-                               : (moments.change == 0 ? 0.0 : std::numeric_limits<double>::infinity());
-      // Preconditioned, the contact set must also have settled (docs/solvers.md).
-      if (change < tolerance && (!preconditioned || entered == 0)) {
+      change = PolonskyKeerStep::relative_change(moments.change, moments.sum);
+      if (PolonskyKeerStep::converged(change, tolerance, preconditioned, entered)) {
         converged = true;
         break;
       }
-      if (change < lowest_change) {
-        lowest_change = change;
-        since_lowest = 0;
-      } else if (++since_lowest >= kStall && damping > 0x1p-30) {
-        damping *= 0.5;
-        since_lowest = 0;
-        lowest_change = change;
-      }
+      step.observe(change);
     }
     if (iteration == max_iterations) break;
     if (options_.between_iterations) options_.between_iterations();
@@ -198,7 +171,7 @@ void DistributedPolonskyKeer::iterate(double total) {
 
     // The direction on the contact set, and r = G t. Plain: t = g - gbar + beta t (PK eq. 11).
     // Preconditioned: z = the filtered residual g - gbar on the set, t = z - zbar + beta t
-    // (bem/polonsky_keer.cpp).
+    // (bem/solvers/preconditioned_cg_solver.cpp).
     double beta = 0;
     double step_sums[5] = {0, 0, 0, 0, 0};  // sum (g - gbar) t, sum t, sum t^2, sum r on the set, t . r
     if (preconditioned) {
@@ -247,11 +220,8 @@ void DistributedPolonskyKeer::iterate(double total) {
     const double gt = step_sums[0], t_sum = step_sums[1], tt = step_sums[2], r_sum = step_sums[3];
     // t . (r - rbar) on the contact set (t is zero elsewhere).
     const double tr = step_sums[4] - r_sum / moments.elastic * t_sum;
-    const double tau = tr > 0 ? damping * gt / tr : 0.0;
-    // Entering nodes: PK's step, or (preconditioned, t a pressure) the plain step of t, <t,t>/<t,Gt>; without
-    // a descent, the stiffness of one pixel.
-    const double tau_enter = preconditioned ? damping * (tr > 0 && tt > 0 ? tt / tr : 1 / self_response)
-                                            : (tr > 0 ? tau : damping / self_response);
+    const PolonskyKeerStep::Lengths lengths = step.lengths(gt, tr, tt, self_response, preconditioned);
+    const double tau = lengths.tau, tau_enter = lengths.enter;
 
     // The update q = max(p - tau t, 0); nodes out of contact that the surface penetrates enter with
     // -tau_enter g (PK eq. 14). Then the load imposed by rescaling, and the next gap.

@@ -20,6 +20,10 @@
 #include "contactbench/mpi/distributed_half_space.hpp"
 #include "contactbench/mpi/slab.hpp"
 
+namespace contactbench::cg {
+struct Moments;  // bem/solvers/constrained_cg_kernels.hpp
+}  // namespace contactbench::cg
+
 namespace contactbench::mpi {
 
 struct DistributedContactSolution {
@@ -54,9 +58,8 @@ class DistributedPolonskyKeer {
 
  private:
   void apply(const std::vector<double>& in, std::vector<double>& out);
-  struct Moments;
-  Moments gap_pass(const std::vector<double>& q_new, const std::vector<double>& q_old, double s_new,
-                   double s_old);
+  cg::Moments gap_pass(const std::vector<double>& q_new, const std::vector<double>& q_old, double s_new,
+                       double s_old);
   void iterate(double total);
   void write();
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The 30 cold solves by which active_set's outer steps were tuned (docs/solvers.md, "Outer steps"): surface A
+# The 30 cold solves by which active_set's outer steps were tuned (docs/solvers_log.md, "Outer steps"): surface A
 # refined to 256^2, 512^2 and 1024^2 and an H = 0.8 surface at 256^2 and 1024^2, periodic and non-periodic,
 # about 1, 10 and 30 % contact, tolerance 1e-6 (TOL overrides). Prints each case's iterations and the total.
 # Usage: scripts/active_set_cases.sh [CONTACTBENCH]   (default build/release/app/contactbench)

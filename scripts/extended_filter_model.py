@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """A numpy model of active_set's inner conjugate gradient on a fixed contact set, with and without the
-extended filter (bem/active_set.cpp; docs/solvers.md "The extended filter").
+extended filter (bem/solvers/active_set_inner_cg.cpp; docs/solvers_log.md "The extended filter").
 
 Reads a pressure field written by `contactbench bem FILE --periodic --fields PREFIX` (PREFIX_load1_pressure.txt,
 the project's surface format), takes its contact set A = {p > 0}, and solves G_AA x = b on the zero-mean

@@ -534,11 +534,11 @@ TEST(ActiveSetSinglePrecision, ALargeContactSetConverges) {
 }
 
 TEST(ActiveSetExtendedFilter, CutsTheIterationsOnARoughSurface) {
-  // The extended filter (bem/active_set.cpp, docs/solvers.md "The extended filter"): the residual averaged
-  // into the gaps between contact spots before the Fourier filter. Surface A on 256 x 256 points,
-  // non-periodic, P/(E* A0) = 0.05 gbar (about 10 % contact), tolerance 1e-6. Measured: 24 iterations, and
-  // 36 with the residual left at zero off the set (the filter as it was); at most 30 tells the two apart with
-  // room for a few iterations of platform difference (the counts are deterministic).
+  // The extended filter (bem/solvers/active_set_inner_cg.cpp, docs/solvers_log.md "The extended filter"): the
+  // residual averaged into the gaps between contact spots before the Fourier filter. Surface A on 256 x 256
+  // points, non-periodic, P/(E* A0) = 0.05 gbar (about 10 % contact), tolerance 1e-6. Measured: 24
+  // iterations, and 36 with the residual left at zero off the set (the filter as it was); at most 30 tells
+  // the two apart with room for a few iterations of platform difference (the counts are deterministic).
   const Surface surface = surface_a(256, 1).with_periodic(false);
   PolonskyKeer solver(surface, kModulus,
                       {.tolerance = 1e-6, .max_iterations = 20000, .solver = SolverKind::active_set});
@@ -549,11 +549,11 @@ TEST(ActiveSetExtendedFilter, CutsTheIterationsOnARoughSurface) {
 
 TEST(ActiveSetColdStart, KeepsNoMoreNodesThanTheCoarseLevelTouches) {
   // A cold start under load control keeps at most as many nodes as the coarse level's solution touches
-  // (bem/active_set.cpp, coarse_area_level): the rule p - k g > 0 on the interpolated coarse pressure lets in
-  // more, and the outer steps must take them out. Surface A on 256 x 256 points, periodic and not,
-  // P/(E* A0) = 0.005 gbar (about 1 % contact, where the set updates are most of the work), tolerance 1e-6.
-  // Measured: 23 + 23 iterations, 26 + 26 with the rule's set; at most 49 tells the two apart with a few
-  // iterations of platform difference on either side (the counts are deterministic).
+  // (bem/solvers/active_set_coarse_start.cpp, coarse_area_level): the rule p - k g > 0 on the interpolated
+  // coarse pressure lets in more, and the outer steps must take them out. Surface A on 256 x 256 points,
+  // periodic and not, P/(E* A0) = 0.005 gbar (about 1 % contact, where the set updates are most of the work),
+  // tolerance 1e-6. Measured: 23 + 23 iterations, 26 + 26 with the rule's set; at most 49 tells the two apart
+  // with a few iterations of platform difference on either side (the counts are deterministic).
   Index iterations = 0;
   for (const bool periodic : {true, false}) {
     const Surface surface = surface_a(256, 1).with_periodic(periodic);
@@ -567,14 +567,14 @@ TEST(ActiveSetColdStart, KeepsNoMoreNodesThanTheCoarseLevelTouches) {
 }
 
 TEST(ActiveSetWarmStart, ACurveCostsLessThanColdSolves) {
-  // Why active_set warm-starts from the last solution's contact set (bem/active_set.cpp): the cold start's
-  // set rule applied to the scaled last pressure let too many nodes in, and a warm curve cost 0.88 (256^2) to
-  // 1.10 (512^2) of the cold solves' iterations; from the last set, 0.81 (docs/solvers.md, "Load paths").
-  // Surface A on 256 x 256 points, 10 loads P/(E* A0) = 0.001 ... 0.01 (the benchmark's curve, 2 to 17 %
-  // contact), tolerance 1e-8. Measured: 221 against 275 iterations (before the cold start kept the coarse
-  // area, 254 against 315; before the extended filter, 395 against 490; the old rule: 432 of 490); at most
-  // 0.85 tells the two rules apart (the counts are deterministic; a few iterations of platform difference fit
-  // the margin).
+  // Why active_set warm-starts from the last solution's contact set
+  // (bem/solvers/active_set_coarse_start.cpp): the cold start's set rule applied to the scaled last pressure
+  // let too many nodes in, and a warm curve cost 0.88 (256^2) to 1.10 (512^2) of the cold solves' iterations;
+  // from the last set, 0.81 (docs/solvers_log.md, "Load paths"). Surface A on 256 x 256 points, 10 loads
+  // P/(E* A0) = 0.001 ... 0.01 (the benchmark's curve, 2 to 17 % contact), tolerance 1e-8. Measured: 221
+  // against 275 iterations (before the cold start kept the coarse area, 254 against 315; before the extended
+  // filter, 395 against 490; the old rule: 432 of 490); at most 0.85 tells the two rules apart (the counts
+  // are deterministic; a few iterations of platform difference fit the margin).
   const Surface surface = surface_a(256, 1);
   const PolonskyKeerOptions options{
       .tolerance = 1e-8, .max_iterations = 20000, .solver = SolverKind::active_set};

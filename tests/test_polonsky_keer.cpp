@@ -11,6 +11,7 @@
 #include "contact_shapes.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
 #include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/solvers/contact_solver.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
@@ -241,6 +242,29 @@ TEST(SolverRegistry, NamesRoundTripAndAnUnknownNameListsTheKnownOnes) {
   }
 }
 
+TEST(SolverRegistry, EachEntryDescribesItselfAndItsFactoryMakesWhatItSays) {
+  // Every solver registers a unique name, a description and a factory, in the order of SolverKind; what an
+  // entry says it does natively about a hardness must be what its solver does (PolonskyKeer searches the
+  // flat's height for the others, bem/solvers/hardness_search.hpp).
+  const Grid grid{.nx = 16, .ny = 16, .lx = 1e-5, .ly = 1e-5, .periodic = true};
+  const Surface surface(grid, HeightMap::Random(16, 16) * 1e-7);
+  std::size_t index = 0;
+  for (const SolverEntry& entry : solver_registry()) {
+    EXPECT_EQ(std::string(entry.name), solver_names().at(index++));
+    EXPECT_EQ(solver_kind(entry.name), entry.kind);
+    EXPECT_EQ(&solver_entry(entry.kind), &entry);
+    EXPECT_FALSE(entry.description.empty()) << entry.name;
+    ASSERT_TRUE(entry.make) << entry.name;
+    for (const bool single : {false, true}) {
+      const std::unique_ptr<ContactSolver> solver = entry.make(surface.centred(), kModulus, 1, single);
+      ASSERT_NE(solver, nullptr) << entry.name;
+      EXPECT_EQ(solver->caps_load_control(), entry.hardness) << entry.name;
+      EXPECT_FALSE(solver->warm()) << entry.name;
+    }
+  }
+  EXPECT_EQ(index, solver_names().size());
+}
+
 TEST(SolverRegistry, ThePreconditionedSolverNeedsFewerIterationsOnARoughSurface) {
   // The reason it exists: on a 128^2 periodic random surface at ~20 % contact, plain PK needs 81 iterations
   // to a relative change of 1e-10 and the preconditioned CG 32 (measured); asking for fewer than half leaves
@@ -267,7 +291,7 @@ TEST(SolverRegistry, ThePreconditionedSolverNeedsFewerIterationsOnARoughSurface)
     iterations[static_cast<int>(kind)] = s.iterations;
   }
   EXPECT_LT(2 * iterations[1], iterations[0]) << iterations[0] << " vs " << iterations[1];
-  // The active-set method: 25 against 81 here (measured; 41 before the changes of docs/solvers.md "Outer
+  // The active-set method: 25 against 81 here (measured; 41 before the changes of docs/solvers_log.md "Outer
   // steps at low contact" and "Fewer transforms"; its count includes a fresh G p per set update that moves
   // more than a few pressures and one for its start, bem/active_set.hpp, which weigh most on a grid this
   // small); asking for fewer than two thirds leaves room for platform differences without hiding a
@@ -279,9 +303,9 @@ TEST(ActiveSet, ALooseToleranceDoesNotBiasTheAreaLow) {
   // Nodes that penetrate by less than the convergence threshold used to stay out of the contact set: at
   // tolerance 1e-4 the area of pixel-rough H = 0.8 surfaces (256^2, periodic, about 30 % contact, three
   // seeds) came out below that of a 1e-10 solve by 34 of 62,642 nodes (5.4e-4; every seed low), a bias that
-  // grows with the grid (1e-3 at 2048^2, docs/solvers.md "Which nodes enter"). Entering at any penetration
-  // beyond round-off leaves the solve's own error: 5 nodes (8e-5). Both measured; 2.5e-4 leaves a factor
-  // of three either side.
+  // grows with the grid (1e-3 at 2048^2, docs/solvers_log.md "Which nodes enter"). Entering at any
+  // penetration beyond round-off leaves the solve's own error: 5 nodes (8e-5). Both measured; 2.5e-4 leaves a
+  // factor of three either side.
   const Grid grid{.nx = 256, .ny = 256, .lx = 1e-4, .ly = 1e-4, .periodic = true};
   const SelfAffinePsd psd{
       .sigma = 0.5e-6, .hurst = 0.8, .qr = 4 * 2 * pi / 1e-4, .qs = std::nullopt, .anisotropy = 1};

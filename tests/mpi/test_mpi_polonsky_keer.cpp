@@ -19,7 +19,7 @@ constexpr Real kModulus = 1e11;
 // 1e-8. Much tighter, the last iterations run at the operator's round-off floor, where any reordering of the
 // sums steers them (measured on the non-periodic case at 1e-10: the trajectories part once the change is
 // ~1e-8 and end one iteration and 4e-11 of the peak pressure apart, within what that tolerance promises;
-// bem/polonsky_keer.cpp says the same of different thread counts).
+// bem/solvers/constrained_cg_kernels.hpp says the same of different thread counts).
 constexpr double kPressureTolerance = 1e-12;
 
 PolonskyKeerOptions options_for(SolverKind solver) {

@@ -1,0 +1,23 @@
+// A hardness under load control for the solvers that do not meet it in one solve (SolverEntry::hardness
+// false: polonsky_keer, preconditioned_cg). Rescaling the pressure to the load, PK's way of imposing it,
+// does not commute with the cap, so the cap is met the way a rigid-body approach is: the capped problem is
+// solved for the flat's height d (separation control, where the cap is a plain projection onto [0, H]),
+// and d is searched until the mean pressure is the load (docs/solvers.md "Hardness"). Internal to the
+// solvers (bem/solvers/).
+#pragma once
+
+#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/solvers/contact_solver.hpp"
+
+namespace contactbench {
+
+// The capped solution under load control: the flat's height d bracketed from the elastic solution just
+// computed (its d carries less than the load once capped, and lower flats carry more: the load is a
+// continuous, non-increasing function of d), then regula falsi with the Illinois modification, each trial a
+// capped solve under separation control warm-started from the last, until the mean pressure is the load to
+// the tolerance. Leaves the solver at the trial that met the tolerance, with the elastic pressures then
+// rescaled to the load exactly. Returns the trials' iterations, summed.
+SolveOutcome search_flat_height(ContactSolver& solver, const HeightMap& heights,
+                                const PolonskyKeerOptions& options, Real mean_pressure);
+
+}  // namespace contactbench
