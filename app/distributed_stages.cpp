@@ -10,8 +10,8 @@
 #include "contactbench/app/stages.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/topography_io.hpp"
+#include "contactbench/mpi/distributed_bem_solver.hpp"
 #include "contactbench/mpi/distributed_contact_statistics.hpp"
-#include "contactbench/mpi/distributed_polonsky_keer.hpp"
 #include "contactbench/mpi/distributed_sweep.hpp"
 #include "contactbench/mpi/environment.hpp"
 #include "contactbench/mpi/slab.hpp"
@@ -127,9 +127,9 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
   const Grid& grid = request.grid;
   const mpi::Slab slab = mpi::slab_of(grid, kWorld);
   const HeightMap local = mpi::scatter_from_root(heights ? *heights : HeightMap(), slab, kWorld);
-  PolonskyKeerOptions options = request.settings.solver;
+  BemSolverOptions options = request.settings.solver;
   options.warning = warning;
-  mpi::DistributedPolonskyKeer solver(grid, local, request.estar, kWorld, options, request.threads);
+  mpi::DistributedBemSolver solver(grid, local, request.estar, kWorld, options, request.threads);
   SolvedLoads result;
   unsigned long long bytes = solver.bytes();
   MPI_Reduce(is_root() ? MPI_IN_PLACE : &bytes, &bytes, 1, MPI_UNSIGNED_LONG_LONG, MPI_MAX, 0, kWorld);

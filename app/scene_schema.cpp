@@ -267,13 +267,10 @@ Scene parse_scene_table(const toml::table& document, const std::filesystem::path
           labels.empty() ? std::string("a label of a [methods.<label>] table") : join(labels) + ", \"\"");
     scene.reference = *reference;
   } else if (!root.has("reference")) {
-    // Default: the BEM when it is the only one, else no comparison.
-    const auto bem = std::count_if(scene.methods.begin(), scene.methods.end(),
-                                   [](const MethodSpec& m) { return m.name() == "bem"; });
-    if (bem == 1)
-      scene.reference = std::find_if(scene.methods.begin(), scene.methods.end(), [](const MethodSpec& m) {
-                          return m.name() == "bem";
-                        })->label;
+    // Default: the ground truth (the BEM) when only one method is, else no comparison.
+    const auto truth = [](const MethodSpec& m) { return m.method->is_ground_truth(); };
+    if (std::count_if(scene.methods.begin(), scene.methods.end(), truth) == 1)
+      scene.reference = std::find_if(scene.methods.begin(), scene.methods.end(), truth)->label;
   }
   problems.throw_if_any();
   scene.surface = *surface;

@@ -26,10 +26,10 @@ class SerialRunner final : public StageRunner {
     const RunObserver quiet;
     const RunObserver& observer = context.observer ? *context.observer : quiet;
     const std::string name = stage.name();
-    PolonskyKeerOptions solver_options = stage.settings.solver;
+    BemSolverOptions solver_options = stage.settings.solver;
     solver_options.hardness = stage.hardness;  // absent: purely elastic
     solver_options.warning = [&](const std::string& text) { observer.warn(text); };
-    PolonskyKeer solver(solved, estar, solver_options, context.threads);
+    BemSolver solver(solved, estar, solver_options, context.threads);
     std::map<int, Labeller> labellers;
     for (const int c : connectivities)
       labellers.emplace(c, Labeller(Topology::for_surface(c == 8 ? Connectivity::eight : Connectivity::four,

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
-#include "contactbench/bem/polonsky_keer.hpp"
 #include "contactbench/core/surface.hpp"
 #include "contactbench/core/sweep.hpp"
 #include "contactbench/core/topology.hpp"

@@ -58,7 +58,7 @@ bool SweepStage::same_as(const SweepStage& other) const {
 }
 
 std::string BemStage::name() const {
-  const PolonskyKeerOptions& solver = settings.solver;
+  const BemSolverOptions& solver = settings.solver;
   std::ostringstream text;
   text << "bem (";
   if (settings.refine > 0) text << "refined to " << settings.refine << " x " << settings.refine << ", ";

@@ -12,8 +12,8 @@
 
 #include "contactbench/app/methods/bem_settings.hpp"
 #include "contactbench/app/run_observer.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
-#include "contactbench/bem/polonsky_keer.hpp"
 #include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/load_area_curve.hpp"
 #include "contactbench/core/surface.hpp"

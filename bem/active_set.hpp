@@ -1,5 +1,5 @@
 // The solver "active_set" (bem/solver_registry.hpp): a primal-dual active-set (semismooth Newton) method for
-// the contact problem of bem/polonsky_keer.hpp, under load or separation control, elastic or capped at a
+// the contact problem of bem/bem_solver.hpp, under load or separation control, elastic or capped at a
 // hardness: the linear problem on a guessed contact set solved by a conjugate gradient with the extended
 // Fourier filter, the set updated from p and the gap, from a nested coarse start. What it does, its
 // convergence test and how its iterations are counted: docs/solvers.md "The active-set method" and "The

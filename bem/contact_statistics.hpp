@@ -4,7 +4,7 @@
 
 #include <numbers>
 
-#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/core/labelling.hpp"
 
 namespace contactbench {

@@ -1,4 +1,4 @@
-// The preconditioner of the constrained conjugate gradient (bem/polonsky_keer.hpp, solver
+// The preconditioner of the constrained conjugate gradient (bem/bem_solver.hpp, solver
 // "preconditioned_cg"; docs/solvers.md): the gap residual r [m] filtered in Fourier space by the inverse of
 // the periodic half-space's symbol, z(q) = (E*/2) |q| r(q) [Pa]. The operator G (u(q) = 2 p(q)/(E* |q|),
 // docs/theory.md section 6) has eigenvalues spread over the whole |q| range of the lattice, so its condition

@@ -1,5 +1,5 @@
 // The boundary-element solvers by name: what a scene's `solver = "..."` and the command line's `--solver`
-// choose (docs/solvers.md). Every solver solves the same problem (bem/polonsky_keer.hpp) with the same
+// choose (docs/solvers.md). Every solver solves the same problem (bem/bem_solver.hpp) with the same
 // options and the same stopping rules; they differ in how an iteration picks its search direction. Each is a
 // class behind one interface (bem/solvers/contact_solver.hpp) that registers itself here: its name, what it
 // does, what it supports natively, and how to make it.
@@ -39,8 +39,8 @@ struct SolverEntry {
   SolverKind kind = SolverKind::polonsky_keer;
   std::string_view name;         // as scenes and --solver spell it
   std::string_view description;  // one line
-  // What it does itself, without help from PolonskyKeer: separation control with its own iteration (else it
-  // iterates as polonsky_keer there), a hardness under load control in one solve (else PolonskyKeer searches
+  // What it does itself, without help from BemSolver: separation control with its own iteration (else it
+  // iterates as polonsky_keer there), a hardness under load control in one solve (else BemSolver searches
   // the flat's height, bem/solvers/hardness_search.hpp), and single precision.
   bool separation_control = false;
   bool hardness = false;

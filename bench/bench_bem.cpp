@@ -17,7 +17,7 @@
 #include <string>
 
 #include "bench_surfaces.hpp"
-#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/core/fft.hpp"
 #include "contactbench/core/generation.hpp"
 
@@ -76,7 +76,7 @@ void solve(benchmark::State& state, Index n, bool periodic, Run run) {
   const Index padded = periodic ? n : 2 * n;
   const double pair_ms = fft_pair_ms(padded), measured_pair_ms = fft_pair_ms(padded, FftRigor::measure);
   // Plain Polonsky-Keer, the record of results/bench/bem.md; the solvers are compared in bench_bem_solvers.
-  const PolonskyKeerOptions options{
+  const BemSolverOptions options{
       .tolerance = 1e-8, .max_iterations = 20000, .solver = SolverKind::polonsky_keer};
   Index iterations = 0;
   double seconds = 0;
@@ -84,17 +84,16 @@ void solve(benchmark::State& state, Index n, bool periodic, Run run) {
     iterations = 0;
     seconds = 0;
     if (run == Run::solve) {
-      PolonskyKeer solver(surface, kModulus, options, kThreads);
+      BemSolver solver(surface, kModulus, options, kThreads);
       const ContactSolution& s = solver.solve(kModulus * kLoad);
       iterations = s.iterations;
       seconds = s.seconds;
     } else {
       // 10 loads from 0.001 to 0.01: warm, each from the last solution; cold, each by a new solver.
-      PolonskyKeer warm(surface, kModulus, options, kThreads);
+      BemSolver warm(surface, kModulus, options, kThreads);
       for (int k = 1; k <= 10; ++k) {
-        std::unique_ptr<PolonskyKeer> cold;
-        if (run == Run::cold_curve)
-          cold = std::make_unique<PolonskyKeer>(surface, kModulus, options, kThreads);
+        std::unique_ptr<BemSolver> cold;
+        if (run == Run::cold_curve) cold = std::make_unique<BemSolver>(surface, kModulus, options, kThreads);
         const ContactSolution& s = (cold ? *cold : warm).solve(kModulus * 0.001 * k);
         iterations += s.iterations;
         seconds += s.seconds;

@@ -39,8 +39,8 @@
 #include <vector>
 
 #include "bench_surfaces.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/convolution.hpp"
-#include "contactbench/bem/polonsky_keer.hpp"
 #include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/fft.hpp"
@@ -97,7 +97,7 @@ const Reference& reference(SurfaceKind kind, Index n, bool periodic, int pct) {
   auto& slot = cache[{kind, n, periodic, pct}];
   if (!slot) {
     const Surface surface = case_surface(kind, n).with_periodic(periodic);
-    PolonskyKeer solver(
+    BemSolver solver(
         surface, kModulus,
         {.tolerance = kReferenceTolerance, .max_iterations = 100000, .solver = SolverKind::polonsky_keer},
         kThreads);
@@ -162,12 +162,12 @@ void equal_accuracy(benchmark::State& state, SolverKind solver_kind, bool coarse
     bool met = false;
     for (int exponent = 3; exponent <= last_exponent && !met; ++exponent) {
       tolerance = std::pow(10.0, -exponent);
-      const PolonskyKeerOptions options{.tolerance = tolerance,
-                                        .max_iterations = 100000,
-                                        .single_precision = single,
-                                        .solver = solver_kind,
-                                        .coarse_start = coarse};
-      PolonskyKeer solver(surface, kModulus, options, kThreads);
+      const BemSolverOptions options{.tolerance = tolerance,
+                                     .max_iterations = 100000,
+                                     .single_precision = single,
+                                     .solver = solver_kind,
+                                     .coarse_start = coarse};
+      BemSolver solver(surface, kModulus, options, kThreads);
       const ContactSolution& s = solver.solve(load);
       // A coarse start's levels cost 1/4, 1/16, ... of a fine iteration each: counted as 1/4 (an upper
       // bound).
@@ -184,7 +184,7 @@ void equal_accuracy(benchmark::State& state, SolverKind solver_kind, bool coarse
         // can be slowed several times over by a neighbour (the iterations are the same every run).
         std::vector<double> runs{seconds};
         for (int repeat = 0; repeat < 2; ++repeat) {
-          PolonskyKeer again(surface, kModulus, options, kThreads);
+          BemSolver again(surface, kModulus, options, kThreads);
           runs.push_back(again.solve(load).seconds);
         }
         std::sort(runs.begin(), runs.end());
@@ -225,7 +225,7 @@ void curve(benchmark::State& state, SolverKind solver_kind, Index n, bool period
   const Surface surface = case_surface(SurfaceKind::surface_a, n).with_periodic(periodic);
   std::optional<Real> hardness;
   if (hardness_over_modulus) hardness = *hardness_over_modulus * kModulus;
-  const PolonskyKeerOptions options{
+  const BemSolverOptions options{
       .tolerance = 1e-8,
       .max_iterations = 100000,
       .hardness = hardness,
@@ -236,10 +236,10 @@ void curve(benchmark::State& state, SolverKind solver_kind, Index n, bool period
   for (auto _ : state) {
     iterations = 0;
     seconds = 0;
-    PolonskyKeer warm(surface, kModulus, options, kThreads);
+    BemSolver warm(surface, kModulus, options, kThreads);
     for (int k = 1; k <= 10; ++k) {
-      std::unique_ptr<PolonskyKeer> cold;
-      if (start == Start::cold) cold = std::make_unique<PolonskyKeer>(surface, kModulus, options, kThreads);
+      std::unique_ptr<BemSolver> cold;
+      if (start == Start::cold) cold = std::make_unique<BemSolver>(surface, kModulus, options, kThreads);
       const ContactSolution& s = (cold ? *cold : warm).solve(kModulus * 0.001 * k);
       if (!s.converged) state.SkipWithError("a load did not converge");
       iterations += s.iterations;
@@ -267,8 +267,8 @@ void separation(benchmark::State& state, SolverKind solver_kind, SurfaceKind kin
   for (auto _ : state) {
     std::vector<double> runs;
     for (int repeat = 0; repeat < 3; ++repeat) {
-      PolonskyKeer solver(surface, kModulus,
-                          {.tolerance = 1e-8, .max_iterations = 100000, .solver = solver_kind}, kThreads);
+      BemSolver solver(surface, kModulus,
+                       {.tolerance = 1e-8, .max_iterations = 100000, .solver = solver_kind}, kThreads);
       const ContactSolution& s = solver.solve_for_separation(ref.separation);
       if (!s.converged) state.SkipWithError("the solve did not converge");
       iterations = s.iterations;
@@ -290,7 +290,7 @@ void separation(benchmark::State& state, SolverKind solver_kind, SurfaceKind kin
 }
 
 // Every solver from a cold start, and the preconditioned one from a coarse start too (<solver>_coarse;
-// PolonskyKeerOptions::coarse_start): its `iterations` are the fine ones plus a quarter of the coarse
+// BemSolverOptions::coarse_start): its `iterations` are the fine ones plus a quarter of the coarse
 // levels'.
 std::vector<std::pair<std::string, bool>> variants() {
   std::vector<std::pair<std::string, bool>> out;

@@ -18,12 +18,12 @@
 
 #include <fftw3-mpi.h>
 
-#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
+#include "contactbench/mpi/distributed_bem_solver.hpp"
 #include "contactbench/mpi/distributed_generation.hpp"
-#include "contactbench/mpi/distributed_polonsky_keer.hpp"
 #include "contactbench/mpi/environment.hpp"
 
 using namespace contactbench;
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
   const HeightMap local = mpi::generate_surface_slab(grid, psd, 1, comm);
   const Real modulus = 1.1e11;
   const Real load = 0.02 * modulus * mpi::distributed_spectral_moments(grid, local, comm).rms_gradient();
-  PolonskyKeerOptions options;
+  BemSolverOptions options;
   options.solver = solver;
   options.tolerance = 1e-300;  // never reached: every solve runs `iterations` iterations
   options.max_iterations = iterations;
@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
   std::vector<double> times;
   std::size_t bytes = 0;
   for (int r = 0; r < repetitions; ++r) {
-    mpi::DistributedPolonskyKeer distributed(grid, local, modulus, comm, options, threads);
+    mpi::DistributedBemSolver distributed(grid, local, modulus, comm, options, threads);
     MPI_Barrier(comm);
     const auto start = std::chrono::steady_clock::now();
     const auto& solution = distributed.solve(load);
@@ -127,7 +127,7 @@ int main(int argc, char** argv) {
     const Surface surface = generate_surface(grid, psd, 1, threads);
     std::vector<double> serial_times;
     for (int r = 0; r < repetitions; ++r) {
-      PolonskyKeer reference(surface, modulus, options, threads);
+      BemSolver reference(surface, modulus, options, threads);
       const auto start = std::chrono::steady_clock::now();
       const auto& solution = reference.solve(load);
       serial_times.push_back(seconds_since(start) / static_cast<double>(solution.iterations));

@@ -24,7 +24,7 @@ mkdir -p results/bench
   echo "of the same problem is the reference, timed in the same run). Plain Polonsky-Keer, surface A's spectrum"
   echo "(docs/theory.md section 2) on n x n points, periodic, ~4 % contact. 'transposes' is the time of FFTW-MPI's"
   echo "global transposes an iteration would take (4 a plain iteration), timed on their own; 'MiB/rank' is the"
-  echo "largest rank's solver memory (DistributedPolonskyKeer::bytes), 'serial MiB' an estimate of the serial"
+  echo "largest rank's solver memory (DistributedBemSolver::bytes), 'serial MiB' an estimate of the serial"
   echo "solver's arrays. Threads are FFTW's threads a rank (the element-wise passes run on one)."
   echo
   echo "| ranks | threads | n | solver | s/iteration | serial s/iteration | ratio | transposes s/iteration | share | MiB/rank | serial MiB |"

@@ -12,7 +12,7 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/contactbench-install.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
 cmake --install "$build" --prefix "$work/prefix" >"$work/install.log"
-for header in core/surface.hpp bem/polonsky_keer.hpp theories/plateau_model.hpp; do
+for header in core/surface.hpp bem/bem_solver.hpp theories/plateau_model.hpp; do
   [[ -f "$work/prefix/include/contactbench/$header" ]] || { echo "check-install: missing include/contactbench/$header" >&2; exit 1; }
 done
 # Built with MPI (CB_WITH_MPI): the distributed library is installed too, with its headers and target.

@@ -1,4 +1,4 @@
-// The Polonsky-Keer solver's options beyond the elastic load-controlled contact (bem/polonsky_keer.hpp): a
+// The Polonsky-Keer solver's options beyond the elastic load-controlled contact (bem/bem_solver.hpp): a
 // perfectly plastic pressure cap (hardness), checked in its two limits (very hard: elastic; very soft: the
 // bearing area) and on a sphere; separation control, against load control and Hertz's approach; single
 // precision, against double; and the options of `contactbench bem` that reach them, end to end. First, the
@@ -19,9 +19,9 @@
 #include <sys/wait.h>
 
 #include "contact_shapes.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/convolution.hpp"
 #include "contactbench/bem/half_space.hpp"
-#include "contactbench/bem/polonsky_keer.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/topography_io.hpp"
@@ -111,13 +111,13 @@ TEST_P(Hardness, VeryHardReproducesTheElasticSolution) {
   for (const bool periodic : {true, false}) {
     const Surface surface = rough_surface(64, periodic);
     const Real load = 0.02 * kModulus * 0.05;  // P/A0: a few percent of contact
-    PolonskyKeer elastic(surface, kModulus, {.tolerance = 1e-10, .solver = GetParam()});
+    BemSolver elastic(surface, kModulus, {.tolerance = 1e-10, .solver = GetParam()});
     const ContactSolution reference = elastic.solve(load);
     ASSERT_TRUE(reference.converged);
     const Real largest = reference.pressure.maxCoeff();
     for (const Real factor : {1e6, 1.001}) {
-      PolonskyKeer capped(surface, kModulus,
-                          {.tolerance = 1e-10, .hardness = factor * largest, .solver = GetParam()});
+      BemSolver capped(surface, kModulus,
+                       {.tolerance = 1e-10, .hardness = factor * largest, .solver = GetParam()});
       const ContactSolution& s = capped.solve(load);
       ASSERT_TRUE(s.converged) << periodic << " " << factor;
       EXPECT_EQ(s.plastic_points, 0);
@@ -134,10 +134,10 @@ TEST_P(Hardness, CapJustBelowThePeakIsCloseToElastic) {
   // plastic point, the same contact count; allow 0.5 % of it).
   const Surface surface = rough_surface(64, true);
   const Real load = 0.02 * kModulus * 0.05;
-  PolonskyKeer elastic(surface, kModulus, {.tolerance = 1e-10, .solver = GetParam()});
+  BemSolver elastic(surface, kModulus, {.tolerance = 1e-10, .solver = GetParam()});
   const ContactSolution reference = elastic.solve(load);
   const Real hardness = 0.99 * reference.pressure.maxCoeff();
-  PolonskyKeer capped(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness, .solver = GetParam()});
+  BemSolver capped(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness, .solver = GetParam()});
   const ContactSolution& s = capped.solve(load);
   ASSERT_TRUE(s.converged);
   EXPECT_GT(s.plastic_points, 0);
@@ -158,11 +158,11 @@ TEST(ActiveSetHardness, ACappedLoadIsOneSolveNotASearch) {
   for (const bool periodic : {true, false}) {
     const Surface surface = rough_surface(128, periodic);
     const Real load = 0.02 * kModulus * 0.05;
-    PolonskyKeer elastic(surface, kModulus, {.tolerance = 1e-10, .solver = SolverKind::active_set});
+    BemSolver elastic(surface, kModulus, {.tolerance = 1e-10, .solver = SolverKind::active_set});
     const Real hardness = 0.5 * elastic.solve(load).pressure.maxCoeff();
     auto capped = [&](SolverKind solver) {
-      PolonskyKeer capped_solver(surface, kModulus,
-                                 {.tolerance = 1e-10, .hardness = hardness, .solver = solver});
+      BemSolver capped_solver(surface, kModulus,
+                              {.tolerance = 1e-10, .hardness = hardness, .solver = solver});
       return capped_solver.solve(load);
     };
     const ContactSolution plain = capped(SolverKind::polonsky_keer);
@@ -186,7 +186,7 @@ TEST_P(Hardness, VerySoftTendsToTheBearingArea) {
     const Surface surface = rough_surface(n, periodic);
     const Real scale = 0.05 * kModulus;  // pressures of the elastic contact: E* times a slope
     const Real hardness = 1e-4 * scale, load = 0.2 * hardness;
-    PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness, .solver = GetParam()});
+    BemSolver solver(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness, .solver = GetParam()});
     const ContactSolution& s = solver.solve(load);
     ASSERT_TRUE(s.converged) << periodic;
     const Index points = n * n;
@@ -219,7 +219,7 @@ TEST_P(Hardness, SphereBelowItsHertzPeakIsCappedAndWider) {
   const Real load = hertz.load_of_contact_radius(a), hardness = 0.7 * hertz.peak_pressure(load);
   const Surface surface = sphere(n, dx, radius);
   const Real area = surface.grid().nominal_area();
-  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness, .solver = GetParam()});
+  BemSolver solver(surface, kModulus, {.tolerance = 1e-10, .hardness = hardness, .solver = GetParam()});
   const ContactSolution& s = solver.solve(load / area);
   ASSERT_TRUE(s.converged) << s.iterations;
   EXPECT_LE(s.pressure.maxCoeff(), hardness);
@@ -238,12 +238,12 @@ TEST_P(Hardness, SphereBelowItsHertzPeakIsCappedAndWider) {
 
 TEST_P(Hardness, RefusesFullPlasticContactAndABadHardness) {
   const Surface surface = rough_surface(16, true);
-  PolonskyKeer solver(surface, kModulus, {.hardness = 1e9, .solver = GetParam()});
+  BemSolver solver(surface, kModulus, {.hardness = 1e9, .solver = GetParam()});
   EXPECT_THROW(solver.solve(1e9), Error);  // P/A0 = H: full plastic contact
   EXPECT_THROW(solver.solve(2e9), Error);
-  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = 0.0, .solver = GetParam()}), Error);
-  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = -1.0, .solver = GetParam()}), Error);
-  EXPECT_THROW(PolonskyKeer(surface, kModulus, {.hardness = std::nan(""), .solver = GetParam()}), Error);
+  EXPECT_THROW(BemSolver(surface, kModulus, {.hardness = 0.0, .solver = GetParam()}), Error);
+  EXPECT_THROW(BemSolver(surface, kModulus, {.hardness = -1.0, .solver = GetParam()}), Error);
+  EXPECT_THROW(BemSolver(surface, kModulus, {.hardness = std::nan(""), .solver = GetParam()}), Error);
 }
 
 TEST_P(Separation, GivesBackTheLoadThatLoadControlFound) {
@@ -254,10 +254,10 @@ TEST_P(Separation, GivesBackTheLoadThatLoadControlFound) {
   for (const bool periodic : {true, false}) {
     const Surface surface = rough_surface(64, periodic);
     const Real load = 0.02 * kModulus * 0.05;
-    PolonskyKeer by_load(surface, kModulus, {.tolerance = 1e-12, .solver = GetParam()});
+    BemSolver by_load(surface, kModulus, {.tolerance = 1e-12, .solver = GetParam()});
     const ContactSolution reference = by_load.solve(load);
     ASSERT_TRUE(reference.converged);
-    PolonskyKeer by_separation(surface, kModulus, {.tolerance = 1e-12, .solver = GetParam()});
+    BemSolver by_separation(surface, kModulus, {.tolerance = 1e-12, .solver = GetParam()});
     const ContactSolution& s = by_separation.solve_for_separation(reference.separation);
     ASSERT_TRUE(s.converged) << periodic;
     EXPECT_NEAR(s.mean_pressure, load, 1e-6 * load) << periodic;
@@ -280,7 +280,7 @@ TEST_P(Separation, HertzLoadOfAnApproach) {
   const Index n = 128;
   const Real dx = 1e-6, radius = 1e-3, a = 32 * dx;
   const Surface surface = sphere(n, dx, radius);
-  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000, .solver = GetParam()});
+  BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000, .solver = GetParam()});
   const Real apex = solver.surface().heights().maxCoeff();
   const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
   const Real load = hertz.load_of_contact_radius(a);
@@ -302,11 +302,11 @@ TEST_P(Separation, WithHardnessGivesBackTheCappedLoad) {
   const Real load = hertz.load_of_contact_radius(a), hardness = 0.7 * hertz.peak_pressure(load);
   const Surface surface = sphere(n, dx, radius);
   const Real mean = load / surface.grid().nominal_area();
-  PolonskyKeer by_load(surface, kModulus, {.tolerance = 1e-12, .hardness = hardness, .solver = GetParam()});
+  BemSolver by_load(surface, kModulus, {.tolerance = 1e-12, .hardness = hardness, .solver = GetParam()});
   const ContactSolution reference = by_load.solve(mean);
   ASSERT_TRUE(reference.converged);
-  PolonskyKeer by_separation(surface, kModulus,
-                             {.tolerance = 1e-12, .hardness = hardness, .solver = GetParam()});
+  BemSolver by_separation(surface, kModulus,
+                          {.tolerance = 1e-12, .hardness = hardness, .solver = GetParam()});
   const ContactSolution& s = by_separation.solve_for_separation(reference.separation);
   ASSERT_TRUE(s.converged);
   EXPECT_NEAR(s.mean_pressure, mean, 1e-6 * mean);
@@ -316,7 +316,7 @@ TEST_P(Separation, WithHardnessGivesBackTheCappedLoad) {
 
 TEST_P(Separation, AboveTheSurfaceNothingAndPeriodicNeedsAPositiveMeanGap) {
   const Surface surface = rough_surface(32, true);
-  PolonskyKeer solver(surface, kModulus, {.solver = GetParam()});
+  BemSolver solver(surface, kModulus, {.solver = GetParam()});
   const Real top = solver.surface().heights().maxCoeff();
   const ContactSolution& s = solver.solve_for_separation(top);
   EXPECT_TRUE(s.converged);
@@ -331,7 +331,7 @@ TEST_P(Separation, AboveTheSurfaceNothingAndPeriodicNeedsAPositiveMeanGap) {
   // punch, whose displacement dwarfs the roughness: full contact, at a finite load. (One range below is
   // not enough: a punch sinks deeper at its centre than at its edges, and lifts off there; measured 726 of
   // 1024 points, load control at the same load agreeing.)
-  PolonskyKeer window(rough_surface(32, false), kModulus, {.tolerance = 1e-10, .solver = GetParam()});
+  BemSolver window(rough_surface(32, false), kModulus, {.tolerance = 1e-10, .solver = GetParam()});
   const Real bottom = window.surface().heights().minCoeff();
   const ContactSolution& full = window.solve_for_separation(bottom - 10 * (top - bottom));
   EXPECT_TRUE(full.converged);
@@ -348,9 +348,9 @@ TEST_P(SinglePrecision, AgreesWithDoubleToFloatsAccuracy) {
   for (const bool periodic : {true, false}) {
     const Surface surface = rough_surface(128, periodic);
     const Real load = 0.01 * kModulus;
-    PolonskyKeer twice(surface, kModulus, {.tolerance = 1e-10, .solver = GetParam()});
+    BemSolver twice(surface, kModulus, {.tolerance = 1e-10, .solver = GetParam()});
     const ContactSolution reference = twice.solve(load);
-    PolonskyKeer single(
+    BemSolver single(
         surface, kModulus,
         {.tolerance = kSinglePrecisionTolerance, .single_precision = true, .solver = GetParam()});
     const ContactSolution& s = single.solve(load);
@@ -385,20 +385,19 @@ TEST_P(SinglePrecision, CappedAndSeparationControlledToo) {
       0.25 * (static_cast<Real>(std::nextafter(held, 2 * held)) - static_cast<Real>(held));
   ASSERT_LT(static_cast<Real>(static_cast<float>(rounds_down)), rounds_down);
   for (const Real hardness : {given, rounds_down}) {
-    PolonskyKeer capped(surface, kModulus,
-                        {.tolerance = kSinglePrecisionTolerance,
-                         .hardness = hardness,
-                         .single_precision = true,
-                         .solver = GetParam()});
+    BemSolver capped(surface, kModulus,
+                     {.tolerance = kSinglePrecisionTolerance,
+                      .hardness = hardness,
+                      .single_precision = true,
+                      .solver = GetParam()});
     const ContactSolution& s = capped.solve(load / area);
     ASSERT_TRUE(s.converged) << hardness << ": residual " << s.residual;
     EXPECT_LE(s.pressure.maxCoeff(), hardness * (1 + 1e-6));  // H rounded to float
     EXPECT_GT(s.plastic_points, 0) << hardness;
     EXPECT_NEAR(s.pressure.mean() * area, load, 1e-5 * load);
   }
-  PolonskyKeer elastic(
-      surface, kModulus,
-      {.tolerance = kSinglePrecisionTolerance, .single_precision = true, .solver = GetParam()});
+  BemSolver elastic(surface, kModulus,
+                    {.tolerance = kSinglePrecisionTolerance, .single_precision = true, .solver = GetParam()});
   const Real apex = elastic.surface().heights().maxCoeff();
   const ContactSolution& e = elastic.solve_for_separation(apex - hertz.approach(load));
   ASSERT_TRUE(e.converged);
@@ -408,12 +407,11 @@ TEST_P(SinglePrecision, CappedAndSeparationControlledToo) {
 TEST_P(SinglePrecision, RefusesATolerancePastFloat) {
   const Surface surface = rough_surface(16, true);
   EXPECT_THROW(
-      PolonskyKeer(surface, kModulus, {.tolerance = 1e-7, .single_precision = true, .solver = GetParam()}),
+      BemSolver(surface, kModulus, {.tolerance = 1e-7, .single_precision = true, .solver = GetParam()}),
       Error);
   EXPECT_NO_THROW(
-      PolonskyKeer(surface, kModulus, {.tolerance = 1e-6, .single_precision = true, .solver = GetParam()}));
-  EXPECT_NO_THROW(
-      PolonskyKeer(surface, kModulus, {.tolerance = 1e-7, .solver = GetParam()}));  // double: fine
+      BemSolver(surface, kModulus, {.tolerance = 1e-6, .single_precision = true, .solver = GetParam()}));
+  EXPECT_NO_THROW(BemSolver(surface, kModulus, {.tolerance = 1e-7, .solver = GetParam()}));  // double: fine
 }
 
 // `contactbench bem` run as a user would (the binary the build made), in a folder of its own.

@@ -1,4 +1,4 @@
-// Validation of the Polonsky-Keer solver beyond the single-load analytic checks of test_polonsky_keer.cpp
+// Validation of the Polonsky-Keer solver beyond the single-load analytic checks of test_bem_solver.cpp
 // (docs/theory.md sections 6 and 7): the bi-sinusoid's two asymptotes (Johnson, Greenwood and Higginson
 // 1985), reciprocity and energy of solutions, convergence under grid refinement, and hard cases (a single
 // spike, contact fractions of 1e-4 and 0.99, height ranges of 1e6, non-square grids, random surfaces). Every
@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "contact_shapes.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
 #include "contactbench/bem/half_space.hpp"
-#include "contactbench/bem/polonsky_keer.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "each_solver.hpp"
@@ -103,8 +103,8 @@ const reference::Bisinusoid kBisinusoid{.amplitude = kAmplitude, .wavelength = k
 const Real kFullContact = kBisinusoid.full_contact_pressure();  // p*
 
 TEST_P(BemValidation, BisinusoidAtSmallLoadIsTwoHertzContacts) {
-  PolonskyKeer solver(bisinusoid(kBisinusoidPoints, kLambda, kAmplitude), kModulus,
-                      {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+  BemSolver solver(bisinusoid(kBisinusoidPoints, kLambda, kAmplitude), kModulus,
+                   {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
   Labeller labeller(Topology::for_surface(Connectivity::four, true));
   std::vector<Real> deviation;
   for (const Real ratio : {0.005, 0.01, 0.05}) {  // increasing loads, warm-started
@@ -131,8 +131,8 @@ TEST_P(BemValidation, BisinusoidAtSmallLoadIsTwoHertzContacts) {
 }
 
 TEST_P(BemValidation, BisinusoidNearFullContactLeavesTwoShrinkingIslands) {
-  PolonskyKeer solver(bisinusoid(kBisinusoidPoints, kLambda, kAmplitude), kModulus,
-                      {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+  BemSolver solver(bisinusoid(kBisinusoidPoints, kLambda, kAmplitude), kModulus,
+                   {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
   Labeller labeller(Topology::for_surface(Connectivity::four, true));
   std::vector<Real> deviation;
   for (const Real ratio : {0.8, 0.9, 0.95}) {
@@ -185,7 +185,7 @@ TEST(BemOperator, HalfSpaceIsSymmetricAndPositiveOnSignedFields) {
 // Betti for two solutions of the same surface: <p1, u2> = <p2, u1>, with u = h - d + g read off each
 // solution (the solver's separation d and gap g). Off the contact sets this is exact (g is computed from
 // u); on them g = 0 is imposed, which is right to the complementarity residual.
-void expect_reciprocal(const PolonskyKeer& solver, const ContactSolution& s1, const ContactSolution& s2,
+void expect_reciprocal(const BemSolver& solver, const ContactSolution& s1, const ContactSolution& s2,
                        const char* what) {
   const HeightMap& h = solver.surface().heights();
   const HeightMap u1 = h - s1.separation + s1.gap, u2 = h - s2.separation + s2.gap;
@@ -200,8 +200,7 @@ TEST_P(BemValidation, TwoSolutionsAreReciprocal) {
   {  // periodic: surface A on 64 x 64 points, 239 and 1016 contact nodes
     const Surface surface = surface_a(64, 3);
     const Real gbar = rms_gradient(surface);
-    PolonskyKeer solver(surface, kModulus,
-                        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const ContactSolution s1 = solver.solve(0.02 * kModulus * gbar);
     const ContactSolution s2 = solver.solve(0.1 * kModulus * gbar);
     expect_admissible(s1, solver.surface(), "surface A, low load");
@@ -211,8 +210,7 @@ TEST_P(BemValidation, TwoSolutionsAreReciprocal) {
   }
   {  // non-periodic: a sphere on 64 x 64 points, 29 and 89 contact nodes
     const Surface surface = sphere_cap(64, 64, 1e-6, 1e-3);
-    PolonskyKeer solver(surface, kModulus,
-                        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const ContactSolution s1 = solver.solve(1e6);
     const ContactSolution s2 = solver.solve(5e6);
     expect_admissible(s1, solver.surface(), "sphere, low load");
@@ -236,8 +234,7 @@ TEST_P(BemValidation, TheGapIsThatOfThePressure) {
     const Surface surface = surface_a(128, 5).with_periodic(periodic);
     const HeightMap& h = surface.heights();
     const Real range = h.maxCoeff() - h.minCoeff();
-    PolonskyKeer solver(surface, kModulus,
-                        {.tolerance = 1e-10, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver solver(surface, kModulus, {.tolerance = 1e-10, .max_iterations = 20000, .solver = GetParam()});
     const auto half_space = make_half_space(surface.grid(), kModulus);
     for (const Real ratio : {0.005, 0.05}) {
       const ContactSolution& s = solver.solve(ratio * rms_gradient(surface) * kModulus);
@@ -263,7 +260,7 @@ TEST_P(BemValidation, WorkOfTheLoadIsTheElasticEnergy) {
   const Surface surface = sphere_cap(n, n, dx, radius);
   const Grid& grid = surface.grid();
   const Real pixel = grid.dx() * grid.dy();
-  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+  BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
   const auto half_space = make_half_space(grid, kModulus);
   std::vector<Real> load, approach, energy;
   for (Index k = 0; k <= intervals; ++k) {
@@ -290,7 +287,7 @@ TEST_P(BemValidation, WorkOfTheLoadIsTheElasticEnergy) {
   EXPECT_NEAR(trapezoid_error / hertz_work, 1.42e-3, 1e-5);
   // Less that term, work and energy agree to the next Euler-Maclaurin term, O(h^4) ~ 1e-6, plus the grid's
   // error in the curvature of P(delta), which is of the order of the stiffness' discretisation error (a
-  // few % at 8-16 pixels, cf. the flat punch in test_polonsky_keer.cpp) times the 1.4e-3: allow 1.5e-4
+  // few % at 8-16 pixels, cf. the flat punch in test_bem_solver.cpp) times the 1.4e-3: allow 1.5e-4
   // (measured 7e-5). Without the correction the test would fail: the two tests pin the rule's error.
   EXPECT_NEAR(work - trapezoid_error, gained, 1.5e-4 * gained);
   EXPECT_GT(std::abs(work - gained), 1e-3 * gained);
@@ -310,8 +307,7 @@ TEST_P(BemValidation, HertzConvergesUnderGridRefinement) {
   for (const Index n : {32, 64, 128}) {
     const Real dx = 4 * a / static_cast<Real>(n);
     const Surface surface = sphere_cap(n, n, dx, radius);
-    PolonskyKeer solver(surface, kModulus,
-                        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const ContactSolution& s = solver.solve(load / surface.grid().nominal_area());
     expect_admissible(s, solver.surface(), "n = " + std::to_string(n));
     Real error = 0, norm = 0;
@@ -376,8 +372,7 @@ TEST_P(BemValidation, ASingleSpikeCarriesTheWholeLoad) {
       EXPECT_NEAR(compliance * kModulus / surface.grid().dx(), 1.122200, 5e-7);
     }
     const Real touching = kSpikeHeight / compliance;  // the spike's pressure that brings it to the flat
-    PolonskyKeer solver(surface, kModulus,
-                        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const Real pbar = 0.3 * touching / static_cast<Real>(kSpikeGrid * kSpikeGrid);
     const ContactSolution& s = solver.solve(pbar);
     expect_admissible(s, solver.surface(), periodic ? "periodic" : "non-periodic");
@@ -405,8 +400,7 @@ TEST_P(BemValidation, ASpikePressedIntoTheFlatConverges) {
     for (const Real factor : {1.5, 3.0, 10.0}) {
       const Surface surface = spike_on_a_flat(periodic);
       const Real touching = kSpikeHeight / spike_compliance(surface);
-      PolonskyKeer solver(surface, kModulus,
-                          {.tolerance = 1e-10, .max_iterations = 2000, .solver = GetParam()});
+      BemSolver solver(surface, kModulus, {.tolerance = 1e-10, .max_iterations = 2000, .solver = GetParam()});
       const ContactSolution& s = solver.solve(factor * touching / static_cast<Real>(kSpikeGrid * kSpikeGrid));
       const std::string what = std::string(periodic ? "periodic" : "non-periodic") + ", " +
                                std::to_string(factor) + " x the touching load";
@@ -426,8 +420,8 @@ TEST_P(BemValidation, AWarmStartFromOneContactNodeStillFindsThePenetration) {
     const Surface surface = spike_on_a_flat(periodic);
     const Real touching = kSpikeHeight / spike_compliance(surface);
     const Real nodes = static_cast<Real>(kSpikeGrid * kSpikeGrid);
-    PolonskyKeer warm(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
-    PolonskyKeer cold(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver warm(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver cold(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const char* what = periodic ? "periodic" : "non-periodic";
     ASSERT_EQ(warm.solve(0.3 * touching / nodes).contact_points, 1) << what;
     const ContactSolution& w = warm.solve(10 * touching / nodes);
@@ -449,15 +443,14 @@ TEST_P(BemValidation, AnExtrapolatedLoadPathGivesTheSameAnswers) {
     const Surface surface = spike_on_a_flat(periodic);
     const Real touching = kSpikeHeight / spike_compliance(surface);
     const Real nodes = static_cast<Real>(kSpikeGrid * kSpikeGrid);
-    PolonskyKeer path(surface, kModulus,
-                      {.tolerance = 1e-12,
-                       .max_iterations = 20000,
-                       .solver = GetParam(),
-                       .load_path = LoadPathStart::extrapolated});
+    BemSolver path(surface, kModulus,
+                   {.tolerance = 1e-12,
+                    .max_iterations = 20000,
+                    .solver = GetParam(),
+                    .load_path = LoadPathStart::extrapolated});
     const char* what = periodic ? "periodic" : "non-periodic";
     for (const Real factor : {0.3, 3.0, 6.0, 12.0}) {
-      PolonskyKeer cold(surface, kModulus,
-                        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+      BemSolver cold(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
       const ContactSolution& p = path.solve(factor * touching / nodes);
       const ContactSolution& c = cold.solve(factor * touching / nodes);
       expect_admissible(p, path.surface(), what);
@@ -471,15 +464,15 @@ TEST_P(BemValidation, AnExtrapolatedLoadPathGivesTheSameAnswers) {
 
 TEST_P(BemValidation, ACoarseStartGivesTheSameAnswer) {
   // Surface A on 128 x 128 points, periodic and not, at about 10 % contact: a coarse start (the 64 grid
-  // solved first, PolonskyKeerOptions::coarse_start) must reach the cold start's answer; both stop at 1e-12:
+  // solved first, BemSolverOptions::coarse_start) must reach the cold start's answer; both stop at 1e-12:
   // tolerance::solver_consistency. The hierarchy really ran: the coarse levels report their iterations.
   for (const bool periodic : {true, false}) {
     const Surface surface = surface_a(128, 11).with_periodic(periodic);
     const Real load = 0.05 * kModulus * rms_gradient(surface) / 2;
-    PolonskyKeer coarse(
+    BemSolver coarse(
         surface, kModulus,
         {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam(), .coarse_start = true});
-    PolonskyKeer cold(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver cold(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const ContactSolution& c = cold.solve(load);
     const ContactSolution& s = coarse.solve(load);
     const char* what = periodic ? "periodic" : "non-periodic";
@@ -500,10 +493,9 @@ TEST_P(BemValidation, AWarmStartedCurveGivesTheColdAnswersInBothDirections) {
   for (const bool periodic : {true, false}) {
     const Surface surface = surface_a(128, 11).with_periodic(periodic);
     const Real unit = kModulus * rms_gradient(surface) / 2;  // pct / 100 * unit: about pct % contact
-    PolonskyKeer warm(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver warm(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     for (const Real pct : {2.0, 5.0, 12.0, 30.0, 10.0, 3.0}) {
-      PolonskyKeer cold(surface, kModulus,
-                        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+      BemSolver cold(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
       const ContactSolution& c = cold.solve(pct / 100 * unit);
       const ContactSolution& w = warm.solve(pct / 100 * unit);
       const std::string what =
@@ -525,7 +517,7 @@ TEST(ActiveSetSinglePrecision, ALargeContactSetConverges) {
   // (measured: 511 iterations, stopped by the cap of 500; stepped: 63, 0.3 s).
   const Grid grid = paper::grid();
   const Surface surface = synthesize(grid, generate_coefficients(grid, paper::surface_a(), 1), 512, 512);
-  PolonskyKeer solver(
+  BemSolver solver(
       surface, kModulus,
       {.tolerance = 1e-6, .max_iterations = 500, .single_precision = true, .solver = SolverKind::active_set});
   const ContactSolution& s = solver.solve(0.03 * kModulus);
@@ -540,8 +532,8 @@ TEST(ActiveSetExtendedFilter, CutsTheIterationsOnARoughSurface) {
   // iterations, and 36 with the residual left at zero off the set (the filter as it was); at most 30 tells
   // the two apart with room for a few iterations of platform difference (the counts are deterministic).
   const Surface surface = surface_a(256, 1).with_periodic(false);
-  PolonskyKeer solver(surface, kModulus,
-                      {.tolerance = 1e-6, .max_iterations = 20000, .solver = SolverKind::active_set});
+  BemSolver solver(surface, kModulus,
+                   {.tolerance = 1e-6, .max_iterations = 20000, .solver = SolverKind::active_set});
   const ContactSolution& s = solver.solve(0.05 * rms_gradient(surface) * kModulus);
   ASSERT_TRUE(s.converged);
   EXPECT_LE(s.iterations, 30) << "iterations";
@@ -557,8 +549,8 @@ TEST(ActiveSetColdStart, KeepsNoMoreNodesThanTheCoarseLevelTouches) {
   Index iterations = 0;
   for (const bool periodic : {true, false}) {
     const Surface surface = surface_a(256, 1).with_periodic(periodic);
-    PolonskyKeer solver(surface, kModulus,
-                        {.tolerance = 1e-6, .max_iterations = 20000, .solver = SolverKind::active_set});
+    BemSolver solver(surface, kModulus,
+                     {.tolerance = 1e-6, .max_iterations = 20000, .solver = SolverKind::active_set});
     const ContactSolution& s = solver.solve(0.005 * rms_gradient(surface) * kModulus);
     ASSERT_TRUE(s.converged);
     iterations += s.iterations;
@@ -576,12 +568,12 @@ TEST(ActiveSetWarmStart, ACurveCostsLessThanColdSolves) {
   // filter, 395 against 490; the old rule: 432 of 490); at most 0.85 tells the two rules apart (the counts
   // are deterministic; a few iterations of platform difference fit the margin).
   const Surface surface = surface_a(256, 1);
-  const PolonskyKeerOptions options{
+  const BemSolverOptions options{
       .tolerance = 1e-8, .max_iterations = 20000, .solver = SolverKind::active_set};
-  PolonskyKeer warm(surface, kModulus, options);
+  BemSolver warm(surface, kModulus, options);
   Index warm_iterations = 0, cold_iterations = 0;
   for (int k = 1; k <= 10; ++k) {
-    PolonskyKeer cold(surface, kModulus, options);
+    BemSolver cold(surface, kModulus, options);
     const ContactSolution& c = cold.solve(0.001 * k * kModulus);
     ASSERT_TRUE(c.converged);
     cold_iterations += c.iterations;
@@ -597,7 +589,7 @@ TEST_P(BemValidation, AContactFractionOf1e4OnARandomSurface) {
   // kappa ~ 2-3 times the load), cold-started from the uniform pressure over all 65536 nodes.
   const Surface surface = surface_a(256, 11);
   const Real gbar = rms_gradient(surface);
-  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+  BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
   const ContactSolution& s = solver.solve(3e-5 * kModulus * gbar);
   expect_admissible(s, solver.surface(), "A/A0 ~ 1e-4");
   // A few nodes (measured 5, A/A0 = 7.6e-5, 39 iterations): between 1 and 30 (1.5e-5 <= A/A0 <= 4.6e-4).
@@ -616,7 +608,7 @@ TEST_P(BemValidation, AContactFractionOf099OnARandomSurface) {
   // small islands. No reference value exists; the band only makes sure that the case is the one intended.
   const Surface surface = surface_a(128, 11);
   const Real gbar = rms_gradient(surface);
-  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+  BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
   const ContactSolution& s = solver.solve(1.2 * kModulus * gbar);
   expect_admissible(s, solver.surface(), "A/A0 ~ 0.99");
   EXPECT_GT(node_fraction(s), 0.98);
@@ -635,8 +627,8 @@ TEST_P(BemValidation, ScaledSurfacesGiveTheSameDimensionlessAnswer) {
   // 1e-6: surface A (0.5 um rms) becomes 0.5 m rms, or 0.5 pm rms.
   const Surface base = surface_a(64, 5);
   const Real load = 0.05;  // p/(E* gbar)
-  PolonskyKeer reference_solver(base, kModulus,
-                                {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+  BemSolver reference_solver(base, kModulus,
+                             {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
   const ContactSolution reference = reference_solver.solve(load * kModulus * rms_gradient(base));
   expect_admissible(reference, reference_solver.surface(), "reference");
   for (const Real scale : {1e6, 1e-6})
@@ -647,8 +639,7 @@ TEST_P(BemValidation, ScaledSurfacesGiveTheSameDimensionlessAnswer) {
         grid.ly *= scale;
       }
       const Surface scaled(grid, base.heights() * scale);
-      PolonskyKeer solver(scaled, kModulus,
-                          {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+      BemSolver solver(scaled, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
       const ContactSolution& s = solver.solve(load * kModulus * rms_gradient(scaled));
       const std::string what =
           "scale " + std::to_string(scale) + (lateral ? ", lateral too" : ", heights only");
@@ -678,8 +669,7 @@ TEST_P(BemValidation, ADeepPitChangesNothingAHeightRangeOf1e6) {
     HeightMap h = base.heights();
     h(20, 30) = -depth;
     const Surface surface(base.grid(), h);
-    PolonskyKeer solver(surface, kModulus,
-                        {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     solutions.push_back(solver.solve(load));
     means.push_back(surface.mean_height());
     // Penetration is judged against the roughness, not against the metre of the pit.
@@ -703,10 +693,10 @@ TEST_P(BemValidation, WestergaardOnATransposedGridIsTheTransposedAnswer) {
   // (docs/theory.md section 7): pbar/p* = sin^2(pi a/lambda), right to half a pixel at each edge (allow 1.5
   // pixels of 64).
   const Real lambda = 64e-6, amplitude = 1e-6, p_star = pi * kModulus * amplitude / lambda;
-  PolonskyKeer along_x(wavy(64, 8, false, lambda, amplitude), kModulus,
-                       {.tolerance = 1e-12, .solver = GetParam()});
-  PolonskyKeer along_y(wavy(64, 8, true, lambda, amplitude), kModulus,
-                       {.tolerance = 1e-12, .solver = GetParam()});
+  BemSolver along_x(wavy(64, 8, false, lambda, amplitude), kModulus,
+                    {.tolerance = 1e-12, .solver = GetParam()});
+  BemSolver along_y(wavy(64, 8, true, lambda, amplitude), kModulus,
+                    {.tolerance = 1e-12, .solver = GetParam()});
   const ContactSolution& x = along_x.solve(0.3 * p_star);
   const ContactSolution& y = along_y.solve(0.3 * p_star);
   expect_admissible(x, along_x.surface(), "64 x 8");
@@ -729,8 +719,8 @@ TEST_P(BemValidation, HertzOnARectangularGridEqualsTheSquareOne) {
   const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
   const Real load = hertz.load_of_contact_radius(a);
   const Surface rectangle = sphere_cap(96, 48, dx, radius), square = sphere_cap(96, 96, dx, radius);
-  PolonskyKeer on_rectangle(rectangle, kModulus, {.tolerance = 1e-12, .solver = GetParam()});
-  PolonskyKeer on_square(square, kModulus, {.tolerance = 1e-12, .solver = GetParam()});
+  BemSolver on_rectangle(rectangle, kModulus, {.tolerance = 1e-12, .solver = GetParam()});
+  BemSolver on_square(square, kModulus, {.tolerance = 1e-12, .solver = GetParam()});
   const ContactSolution& r = on_rectangle.solve(load / rectangle.grid().nominal_area());
   const ContactSolution& s = on_square.solve(load / square.grid().nominal_area());
   expect_admissible(r, on_rectangle.surface(), "96 x 48");

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
-#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/topography_io.hpp"
 #include "csv_rows.hpp"
@@ -54,19 +54,19 @@ TEST_P(ConvergedMeansSmallResidual, ALooseStopIsNotConverged) {
   const SolverKind solver = GetParam();
   {
     const Surface surface = small_surface();
-    PolonskyKeer capped(surface, 1e11, {.tolerance = 1e-8, .max_iterations = 1, .solver = solver});
+    BemSolver capped(surface, 1e11, {.tolerance = 1e-8, .max_iterations = 1, .solver = solver});
     EXPECT_FALSE(capped.solve(1e8).converged) << solver_name(solver);
     // E* = 1e300 (the library does not refuse it; the app does): the sums of squared pressures overflow, and
     // plain Polonsky-Keer met its pressure-change criterion after one iteration with the whole grid in
     // contact and a gap of half the height range left on it. Only the residual shows it.
-    PolonskyKeer fooled(surface, 1e300, {.tolerance = 1e-8, .solver = solver});
+    BemSolver fooled(surface, 1e300, {.tolerance = 1e-8, .solver = solver});
     const ContactSolution& f = fooled.solve(1e297);
     EXPECT_FALSE(f.converged && f.residual > residual_bound(1e-8)) << solver_name(solver);
     if (solver == SolverKind::polonsky_keer) {
       EXPECT_FALSE(f.converged);
     }
     // The same problem solved properly is converged, with a residual within the bound.
-    PolonskyKeer proper(surface, 1e11, {.tolerance = 1e-8, .solver = solver});
+    BemSolver proper(surface, 1e11, {.tolerance = 1e-8, .solver = solver});
     const ContactSolution& p = proper.solve(1e8);
     EXPECT_TRUE(p.converged) << solver_name(solver);
     EXPECT_LE(p.residual, residual_bound(1e-8)) << solver_name(solver);

@@ -1,4 +1,4 @@
-// The boundary-element ground truth as a method of a scene: Polonsky-Keer (bem/polonsky_keer.hpp) at every
+// The boundary-element ground truth as a method of a scene: Polonsky-Keer (bem/bem_solver.hpp) at every
 // scene load, its area perimeter-corrected (bem/contact_statistics.hpp; docs/theory.md section 6).
 #include <algorithm>
 #include <cmath>
@@ -34,6 +34,7 @@ class BemMethod final : public Method {
  public:
   std::string_view name() const override { return "bem"; }
   std::vector<Effect> models() const override { return {Effect::hardness}; }
+  bool is_ground_truth() const override { return true; }
   std::string compared_area() const override {
     if (settings_.node_area)
       return "area_fraction_nodes (contact nodes / all nodes, as a node-based finite-element model reports "
@@ -111,7 +112,7 @@ class BemMethod final : public Method {
     }
     check_memory(check);
     if (const std::optional<Real> hardness = check.interface.hardness) {
-      // A mean pressure at or above H is full plastic contact: nothing to solve (bem/polonsky_keer.hpp).
+      // A mean pressure at or above H is full plastic contact: nothing to solve (bem/bem_solver.hpp).
       std::vector<std::string> refused;
       for (std::size_t k = 0; k < check.scene.loads.size(); ++k)
         if (check.scene.loads[k] * check.scene.material.estar >= *hardness)

@@ -1,7 +1,7 @@
 // Every key of a [methods.<label>] table with method = "bem", declared once (app/settings.hpp): the scene
 // reader and writer, `contactbench bem`'s flags, the Python BemSolver's keywords, the MPI packing and the key
-// table of scenes/README.md all come from bem_settings(). The solver's own options are PolonskyKeer's
-// (bem/polonsky_keer.hpp), reached through the rows, not copied. Adding a BEM option: a field of the solver's
+// table of scenes/README.md all come from bem_settings(). The solver's own options are BemSolver's
+// (bem/bem_solver.hpp), reached through the rows, not copied. Adding a BEM option: a field of the solver's
 // options (or of BemSettings for one of the method), one row below, and its line in scenes/README.md.
 #pragma once
 
@@ -9,19 +9,18 @@
 #include <string>
 
 #include "contactbench/app/settings.hpp"
-#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 
 namespace contactbench {
 
 struct BemSettings {
   Index refine = 0;              // points a side after Fourier refinement; 0: the scene's surface as it is
   std::optional<bool> periodic;  // none: the surface's own periodicity
-  PolonskyKeerOptions solver =
-      {};                    // tolerance, iteration cap, precision, iteration (hardness: the interface's)
-  std::string fields;        // prefix of per-load pressure and gap files; empty: none written
-  bool extrapolate = false;  // solve again on twice the points a side (docs/theory.md section 9)
-  int connectivity = 4;      // for counting contact spots
-  bool node_area = false;    // area = "nodes": compared by the node count (a node-based FE model's area)
+  BemSolverOptions solver = {};  // tolerance, iteration cap, precision, iteration (hardness: the interface's)
+  std::string fields;            // prefix of per-load pressure and gap files; empty: none written
+  bool extrapolate = false;      // solve again on twice the points a side (docs/theory.md section 9)
+  int connectivity = 4;          // for counting contact spots
+  bool node_area = false;        // area = "nodes": compared by the node count (a node-based FE model's area)
   bool allow_unconverged = false;  // unconverged loads marked, the run exits 0
 };
 

@@ -107,6 +107,9 @@ class Method {
   // The interface effects it models (app/interface.hpp); a scene calling for any other is refused unless
   // the method's table ignores it. Default: none (frictionless, elastic, non-adhesive).
   virtual std::vector<Effect> models() const { return {}; }
+  // Whether it is the ground truth the others are judged against when a scene names no reference and it is
+  // the only such method (the BEM).
+  virtual bool is_ground_truth() const { return false; }
   // Which area its A/A0 is, as the tables say (e.g. "area_fraction_corrected: perimeter-corrected nodes").
   virtual std::string compared_area() const = 0;
   // What the report's tables and plot legend add after its label, in parentheses (e.g. "Hertz-consistent

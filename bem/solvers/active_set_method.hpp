@@ -4,7 +4,7 @@
 //   active_set_sets.cpp          the sets: their update's bookkeeping, the load they carry, G p kept current;
 //   active_set_inner_cg.cpp      the inner CG on a fixed set, with the extended filter;
 //   active_set_coarse_start.cpp  the nested coarse start and the cold start's sets.
-// Internal to the solvers (bem/solvers/); callers use PolonskyKeer.
+// Internal to the solvers (bem/solvers/); callers use BemSolver.
 #pragma once
 
 #include <omp.h>

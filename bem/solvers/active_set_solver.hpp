@@ -1,7 +1,7 @@
 // The solver "active_set" behind the solver interface: the primal-dual active-set method of
 // bem/active_set.hpp (docs/solvers.md) with the pressure, gap and warm starts every solver keeps
 // (pressure_state.hpp). It meets a hardness itself, under load or separation control. Internal to the
-// solvers (bem/solvers/); callers use PolonskyKeer.
+// solvers (bem/solvers/); callers use BemSolver.
 #pragma once
 
 #include <memory>

@@ -1,5 +1,5 @@
 // The one interface every BEM solver implements (bem/solver_registry.hpp lists them; docs/solvers.md says
-// what each does). PolonskyKeer (bem/polonsky_keer.hpp) holds one, made by the registry's factory, and adds
+// what each does). BemSolver (bem/bem_solver.hpp) holds one, made by the registry's factory, and adds
 // what is the same for every solver: the checks of the input, the zero load, the coarse start
 // (bem/solvers/load_stepping.hpp), the search on the flat's height that meets a hardness under load control
 // for the solvers that do not meet it themselves (bem/solvers/hardness_search.hpp) and the solution's
@@ -8,7 +8,7 @@
 
 #include <functional>
 
-#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/core/types.hpp"
 
 namespace contactbench {
@@ -25,14 +25,14 @@ class ContactSolver {
   virtual ~ContactSolver() = default;
   // The next solve starts afresh (after an abandoned solve, or a zero load).
   virtual void forget() = 0;
-  // Called before every iteration (PolonskyKeerOptions::between_iterations; may be empty, may throw).
+  // Called before every iteration (BemSolverOptions::between_iterations; may be empty, may throw).
   void set_between_iterations(std::function<void()> hook) { between_iterations_ = std::move(hook); }
   // Whether a solve would start from a previous solution.
   virtual bool warm() const = 0;
   // The next solve starts from this pressure [Pa] (ny x nx), as from a previous solution.
   virtual void start_from(const HeightMap& pressure) = 0;
   // Load control: mean(p) = mean_pressure, the flat's height found; pressures capped at `hardness` (may be
-  // infinite) when caps_load_control(), else elastic (PolonskyKeer::solve then meets the cap by a search on
+  // infinite) when caps_load_control(), else elastic (BemSolver::solve then meets the cap by a search on
   // the flat's height, bem/solvers/hardness_search.hpp). extrapolate: start from the linear extrapolation of
   // the last two load-controlled solutions (when there are two), else from the last one scaled to the load.
   virtual SolveOutcome solve_load(double mean_pressure, double hardness, double tolerance,

@@ -7,7 +7,7 @@
 namespace contactbench {
 
 SolveOutcome search_flat_height(ContactSolver& solver, const HeightMap& heights,
-                                const PolonskyKeerOptions& options, Real mean_pressure) {
+                                const BemSolverOptions& options, Real mean_pressure) {
   constexpr int kMaxTrials = 200;
   const Real hardness = *options.hardness;
   SolveOutcome total;

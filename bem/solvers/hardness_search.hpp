@@ -6,7 +6,7 @@
 // solvers (bem/solvers/).
 #pragma once
 
-#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/solvers/contact_solver.hpp"
 
 namespace contactbench {
@@ -18,6 +18,6 @@ namespace contactbench {
 // the tolerance. Leaves the solver at the trial that met the tolerance, with the elastic pressures then
 // rescaled to the load exactly. Returns the trials' iterations, summed.
 SolveOutcome search_flat_height(ContactSolver& solver, const HeightMap& heights,
-                                const PolonskyKeerOptions& options, Real mean_pressure);
+                                const BemSolverOptions& options, Real mean_pressure);
 
 }  // namespace contactbench

@@ -54,7 +54,7 @@ template void PressureState<double>::end_load(double);
 template void PressureState<float>::end_load(double);
 
 Index coarse_start(ContactSolver& solver, const Surface& surface, Real modulus,
-                   const PolonskyKeerOptions& options, int threads, Real mean_pressure) {
+                   const BemSolverOptions& options, int threads, Real mean_pressure) {
   // Each coarse pixel's pressure on its four fine pixels.
   constexpr Index kCoarsest = 64;
   constexpr Real kCoarseTolerance = 1e-4;
@@ -69,11 +69,11 @@ Index coarse_start(ContactSolver& solver, const Surface& surface, Real modulus,
     for (Index x = 0; x < grid.nx; ++x)
       coarse(y, x) =
           0.25 * (h(2 * y, 2 * x) + h(2 * y, 2 * x + 1) + h(2 * y + 1, 2 * x) + h(2 * y + 1, 2 * x + 1));
-  PolonskyKeerOptions coarse_options = options;
+  BemSolverOptions coarse_options = options;
   coarse_options.tolerance = std::max(options.tolerance, kCoarseTolerance);
   coarse_options.hardness = std::nullopt;
   coarse_options.load_path = LoadPathStart::scaled;
-  PolonskyKeer coarse_solver(Surface(grid, coarse), modulus, coarse_options, threads);
+  BemSolver coarse_solver(Surface(grid, coarse), modulus, coarse_options, threads);
   const ContactSolution& s = coarse_solver.solve(mean_pressure);
   HeightMap start(fine.ny, fine.nx);
   for (Index y = 0; y < fine.ny; ++y)

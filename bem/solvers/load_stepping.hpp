@@ -1,10 +1,10 @@
-// Where a load-controlled solve starts (PolonskyKeerOptions::load_path and coarse_start; docs/solvers.md):
+// Where a load-controlled solve starts (BemSolverOptions::load_path and coarse_start; docs/solvers.md):
 // after a previous load, from its solution scaled to the new load or from the extrapolation of the last two
 // (PressureState::begin_load, load_stepping.cpp); cold, optionally from the solution of the surface averaged
 // over 2 x 2 blocks (coarse_start below). Internal to the solvers (bem/solvers/).
 #pragma once
 
-#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/solvers/contact_solver.hpp"
 
 namespace contactbench {
@@ -14,6 +14,6 @@ namespace contactbench {
 // hardness is met afterwards by the fine solve. Returns the coarse levels' iterations (0, and no start,
 // when the grid is odd or too small).
 Index coarse_start(ContactSolver& solver, const Surface& surface, Real modulus,
-                   const PolonskyKeerOptions& options, int threads, Real mean_pressure);
+                   const BemSolverOptions& options, int threads, Real mean_pressure);
 
 }  // namespace contactbench

@@ -1,7 +1,7 @@
 // The solver "polonsky_keer": Polonsky & Keer's constrained conjugate gradient (Wear 231, 206-219, 1999;
 // docs/theory.md section 6, docs/solvers.md), the search direction built from the gap on the contact set.
 // Its loop also serves "preconditioned_cg" (preconditioned_cg_solver.hpp), which changes the direction under
-// load control only. Internal to the solvers (bem/solvers/); callers use PolonskyKeer.
+// load control only. Internal to the solvers (bem/solvers/); callers use BemSolver.
 #pragma once
 
 #include <memory>

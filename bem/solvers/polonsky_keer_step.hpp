@@ -1,5 +1,5 @@
 // The step control of Polonsky & Keer's constrained CG that the serial solver (bem/solvers/
-// polonsky_keer_solver.cpp) and the distributed one (mpi/distributed_polonsky_keer.cpp) share, so that both
+// polonsky_keer_solver.cpp) and the distributed one (mpi/distributed_bem_solver.cpp) share, so that both
 // take the same decisions from the same sums: the stopping criterion, the damping of a cycling iteration and
 // the step lengths (docs/solvers.md).
 #pragma once

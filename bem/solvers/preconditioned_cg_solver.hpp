@@ -4,7 +4,7 @@
 // it becomes a direction. Conjugation restarts when nodes enter the set, entering nodes take the overlap
 // times the plain step <t,t>/<t,Gt> (PolonskyKeerStep::lengths), and convergence also asks that no node
 // entered or left the set in the last update. Load control only: under separation control, and so with a
-// hardness, it iterates as polonsky_keer. Internal to the solvers (bem/solvers/); callers use PolonskyKeer.
+// hardness, it iterates as polonsky_keer. Internal to the solvers (bem/solvers/); callers use BemSolver.
 #pragma once
 
 #include "contactbench/bem/solvers/polonsky_keer_solver.hpp"

@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <iostream>
 
-#include <contactbench/bem/polonsky_keer.hpp>
+#include <contactbench/bem/bem_solver.hpp>
 #include <contactbench/core/generation.hpp>
 #include <contactbench/core/material.hpp>
 
@@ -14,7 +14,7 @@ int main() {
       cb::contact_modulus(100e9, 0.3);  // E* [Pa] of E = 100 GPa, nu = 0.3 on a rigid flat
 
   // P/(E* A0) = 1e-3: a few per cent of the surface in contact.
-  cb::PolonskyKeer solver(surface, modulus, {.tolerance = 1e-8});
+  cb::BemSolver solver(surface, modulus, {.tolerance = 1e-8});
   const cb::ContactSolution& solution = solver.solve(1e-3 * modulus);
 
   const double area_fraction = double(solution.contact_points) / double(surface.grid().points());

@@ -1,4 +1,4 @@
-// The boundary-element ground truth as a solver object (bem/polonsky_keer.hpp, bem/contact_statistics.hpp,
+// The boundary-element ground truth as a solver object (bem/bem_solver.hpp, bem/contact_statistics.hpp,
 // docs/theory.md section 6). Solves release the GIL. Ctrl-C is honoured between iterations: the solver's
 // between_iterations hook takes the GIL, lets Python run its signal handlers and abandons the solve with
 // KeyboardInterrupt (the solver then starts its next solve afresh).
@@ -12,8 +12,8 @@
 
 #include "bindings.hpp"
 #include "contactbench/app/methods/bem_settings.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
-#include "contactbench/bem/polonsky_keer.hpp"
 #include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/error.hpp"
 
@@ -64,10 +64,10 @@ BemSettings settings_of(const py::kwargs& keywords) {
   return settings;
 }
 
-class BemSolver {
+class PythonBemSolver {
  public:
-  BemSolver(const Surface& surface, Real modulus, std::optional<Real> hardness, int threads,
-            const BemSettings& settings)
+  PythonBemSolver(const Surface& surface, Real modulus, std::optional<Real> hardness, int threads,
+                  const BemSettings& settings)
       : modulus_(modulus),
         labeller_(Topology::for_surface(settings.connectivity == 8 ? Connectivity::eight : Connectivity::four,
                                         settings.periodic.value_or(surface.grid().periodic)),
@@ -82,7 +82,7 @@ class BemSolver {
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();
     };
     const Surface solved = settings.periodic ? surface.with_periodic(*settings.periodic) : surface;
-    solver_ = std::make_unique<PolonskyKeer>(solved, modulus, options_, threads);
+    solver_ = std::make_unique<BemSolver>(solved, modulus, options_, threads);
   }
 
   BemResult solve(Real mean_pressure) {
@@ -98,14 +98,14 @@ class BemSolver {
   }
 
   Real modulus() const { return modulus_; }
-  const PolonskyKeerOptions& options() const { return options_; }
+  const BemSolverOptions& options() const { return options_; }
   const Surface& surface() const { return solver_->surface(); }
 
  private:
   Real modulus_;
-  PolonskyKeerOptions options_;
+  BemSolverOptions options_;
   Labeller labeller_;
-  std::unique_ptr<PolonskyKeer> solver_;
+  std::unique_ptr<BemSolver> solver_;
   std::mutex mutex_;  // one solve at a time: the GIL is released while it runs
 };
 
@@ -202,22 +202,25 @@ void register_bem(py::module_& m) {
       .def_property_readonly(
           "seconds", [](const BemResult& r) { return r.solution.seconds; }, "wall time [s]");
 
-  py::class_<BemSolver>(m, "BemSolver", solver_doc.c_str())
+  py::class_<PythonBemSolver>(m, "BemSolver", solver_doc.c_str())
       .def(py::init([](const Surface& surface, Real modulus, std::optional<Real> hardness, int threads,
                        const py::kwargs& keywords) {
-             return std::make_unique<BemSolver>(surface, modulus, hardness, threads, settings_of(keywords));
+             return std::make_unique<PythonBemSolver>(surface, modulus, hardness, threads,
+                                                      settings_of(keywords));
            }),
            py::arg("surface"), py::arg("modulus"), py::kw_only(), py::arg("hardness") = py::none(),
            py::arg("threads") = 1)
       .def(
           "solve",
-          [](BemSolver& s, Real mean_pressure) { return unlocked([&] { return s.solve(mean_pressure); }); },
+          [](PythonBemSolver& s, Real mean_pressure) {
+            return unlocked([&] { return s.solve(mean_pressure); });
+          },
           py::arg("mean_pressure"),
           "Solves for the mean pressure P/A0 [Pa] (>= 0), warm-started from the previous solve. Releases the "
           "GIL; Ctrl-C stops it between iterations (KeyboardInterrupt).")
       .def(
           "solve_for_separation",
-          [](BemSolver& s, Real separation) {
+          [](PythonBemSolver& s, Real separation) {
             return unlocked([&] { return s.solve_for_separation(separation); });
           },
           py::arg("separation"),
@@ -225,7 +228,7 @@ void register_bem(py::module_& m) {
           "(result.mean_pressure). Releases the GIL; Ctrl-C stops it between iterations.")
       .def(
           "solve_loads",
-          [](BemSolver& s, const std::vector<Real>& loads) {
+          [](PythonBemSolver& s, const std::vector<Real>& loads) {
             for (std::size_t k = 0; k < loads.size(); ++k)
               if (!(std::isfinite(loads[k]) && loads[k] >= 0 && (k == 0 || loads[k] >= loads[k - 1])))
                 throw Error("loads: every load P/(E* A0) must be finite, >= 0 and ascending; load " +
@@ -241,19 +244,21 @@ void register_bem(py::module_& m) {
           "Solves each load P/(E* A0) (ascending), like `contactbench bem --loads`: a list of BemResult. "
           "Ctrl-C "
           "stops it between iterations (KeyboardInterrupt).")
-      .def_property_readonly("modulus", &BemSolver::modulus, "E* [Pa]")
+      .def_property_readonly("modulus", &PythonBemSolver::modulus, "E* [Pa]")
       .def_property_readonly(
-          "tolerance", [](const BemSolver& s) { return s.options().tolerance; },
+          "tolerance", [](const PythonBemSolver& s) { return s.options().tolerance; },
           "on the relative change of the pressure [-]")
       .def_property_readonly(
-          "hardness", [](const BemSolver& s) { return s.options().hardness; }, "H [Pa] or None")
+          "hardness", [](const PythonBemSolver& s) { return s.options().hardness; }, "H [Pa] or None")
       .def_property_readonly(
-          "precision", [](const BemSolver& s) { return s.options().single_precision ? "single" : "double"; },
+          "precision",
+          [](const PythonBemSolver& s) { return s.options().single_precision ? "single" : "double"; },
           "\"double\" or \"single\"")
       .def_property_readonly(
-          "solver", [](const BemSolver& s) { return std::string(solver_name(s.options().solver)); },
+          "solver", [](const PythonBemSolver& s) { return std::string(solver_name(s.options().solver)); },
           "the BEM iteration")
-      .def_property_readonly("surface", &BemSolver::surface, "the surface solved (centred: mean removed)");
+      .def_property_readonly("surface", &PythonBemSolver::surface,
+                             "the surface solved (centred: mean removed)");
 }
 
 }  // namespace contactbench::python

@@ -5,8 +5,8 @@
 #include "contactbench/bem/contact_statistics.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
+#include "contactbench/mpi/distributed_bem_solver.hpp"
 #include "contactbench/mpi/distributed_contact_statistics.hpp"
-#include "contactbench/mpi/distributed_polonsky_keer.hpp"
 #include "mpi_fixtures.hpp"
 
 namespace contactbench::mpi {
@@ -61,11 +61,11 @@ TEST(DistributedContactStatistics, CountASpotThatWrapsAroundAsOne) {
 TEST(DistributedContactStatistics, EqualTheSerialOnesOnASolvedContact) {
   const Surface surface = generate_surface({.nx = 48, .ny = 40, .lx = 1e-4, .ly = 1e-4, .periodic = true},
                                            {.sigma = 1e-6, .hurst = 0.7, .qr = 1e5, .qs = std::nullopt}, 6);
-  PolonskyKeerOptions options;
+  BemSolverOptions options;
   options.tolerance = 1e-8;
   const Slab slab = slab_of(surface.grid(), MPI_COMM_WORLD);
-  DistributedPolonskyKeer solver(surface.grid(), testing::rows_of(surface.heights(), slab), 1e11,
-                                 MPI_COMM_WORLD, options);
+  DistributedBemSolver solver(surface.grid(), testing::rows_of(surface.heights(), slab), 1e11, MPI_COMM_WORLD,
+                              options);
   const DistributedContactSolution& d = solver.solve(0.03 * 1e11 * spectral_moments(surface).rms_gradient());
   // Every rank needs the whole fields for the serial reference: gathered, then broadcast (tests only).
   HeightMap pressure = gather_to_root(d.pressure, slab, MPI_COMM_WORLD);

@@ -1,11 +1,11 @@
-// The distributed Polonsky-Keer solver against the serial one (bem/polonsky_keer.hpp) on the same surface.
+// The distributed Polonsky-Keer solver against the serial one (bem/bem_solver.hpp) on the same surface.
 #include <gtest/gtest.h>
 
-#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
-#include "contactbench/mpi/distributed_polonsky_keer.hpp"
+#include "contactbench/mpi/distributed_bem_solver.hpp"
 #include "mpi_fixtures.hpp"
 
 namespace contactbench::mpi {
@@ -22,25 +22,25 @@ constexpr Real kModulus = 1e11;
 // bem/solvers/constrained_cg_kernels.hpp says the same of different thread counts).
 constexpr double kPressureTolerance = 1e-12;
 
-PolonskyKeerOptions options_for(SolverKind solver) {
-  PolonskyKeerOptions options;
+BemSolverOptions options_for(SolverKind solver) {
+  BemSolverOptions options;
   options.solver = solver;
   options.tolerance = 1e-8;
   return options;
 }
 
-PolonskyKeerOptions plain() {
+BemSolverOptions plain() {
   return options_for(SolverKind::polonsky_keer);
 }
 
 // Solves the loads in order with both solvers (warm starts), and compares each load's result on rank 0.
 void expect_same_solutions(const Surface& surface, const std::vector<double>& slope_fractions,
-                           const PolonskyKeerOptions& options) {
+                           const BemSolverOptions& options) {
   const Grid& grid = surface.grid();
   const Slab slab = slab_of(grid, MPI_COMM_WORLD);
-  DistributedPolonskyKeer distributed(grid, testing::rows_of(surface.heights(), slab), kModulus,
-                                      MPI_COMM_WORLD, options);
-  PolonskyKeer serial(surface, kModulus, options);
+  DistributedBemSolver distributed(grid, testing::rows_of(surface.heights(), slab), kModulus, MPI_COMM_WORLD,
+                                   options);
+  BemSolver serial(surface, kModulus, options);
   const Real slope = spectral_moments(surface).rms_gradient();
   for (const double fraction : slope_fractions) {
     const Real load = fraction * kModulus * slope;  // about 2 * fraction of the area in contact
@@ -77,11 +77,11 @@ Surface non_periodic_surface() {
       .with_periodic(false);
 }
 
-TEST(DistributedPolonskyKeer, TakesTheSerialStepsOnAPeriodicSurface) {
+TEST(DistributedBemSolver, TakesTheSerialStepsOnAPeriodicSurface) {
   expect_same_solutions(periodic_surface(), {0.01, 0.03, 0.08}, plain());
 }
 
-TEST(DistributedPolonskyKeer, TakesTheSerialStepsOnANonPeriodicSurface) {
+TEST(DistributedBemSolver, TakesTheSerialStepsOnANonPeriodicSurface) {
   expect_same_solutions(non_periodic_surface(), {0.02, 0.045}, plain());
 }
 
@@ -98,32 +98,32 @@ TEST(DistributedPreconditionedCg, IsNotThePlainIteration) {
   const Surface surface = periodic_surface();
   const Slab slab = slab_of(surface.grid(), MPI_COMM_WORLD);
   const Real load = 0.01 * kModulus * spectral_moments(surface).rms_gradient();
-  DistributedPolonskyKeer plain_solver(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
-                                       MPI_COMM_WORLD, plain());
-  DistributedPolonskyKeer filtered(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
-                                   MPI_COMM_WORLD, options_for(SolverKind::preconditioned_cg));
+  DistributedBemSolver plain_solver(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
+                                    MPI_COMM_WORLD, plain());
+  DistributedBemSolver filtered(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
+                                MPI_COMM_WORLD, options_for(SolverKind::preconditioned_cg));
   EXPECT_LT(filtered.solve(load).iterations, plain_solver.solve(load).iterations);
 }
 
-TEST(DistributedPolonskyKeer, ZeroLoadTouchesNothing) {
+TEST(DistributedBemSolver, ZeroLoadTouchesNothing) {
   const Surface surface = generate_surface({.nx = 32, .ny = 32, .lx = 1e-4, .ly = 1e-4, .periodic = true},
                                            {.sigma = 1e-6, .hurst = 0.7, .qr = 1e5, .qs = std::nullopt}, 2);
   const Slab slab = slab_of(surface.grid(), MPI_COMM_WORLD);
-  DistributedPolonskyKeer solver(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
-                                 MPI_COMM_WORLD, plain());
+  DistributedBemSolver solver(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
+                              MPI_COMM_WORLD, plain());
   const DistributedContactSolution& s = solver.solve(0);
   EXPECT_EQ(s.contact_points, 0);
   EXPECT_TRUE((s.pressure == 0).all());
   EXPECT_NEAR(s.separation, surface.centred().heights().maxCoeff(), 1e-15);
 }
 
-TEST(DistributedPolonskyKeer, RefusesWhatIsNotDistributedYetNamingIt) {
+TEST(DistributedBemSolver, RefusesWhatIsNotDistributedYetNamingIt) {
   const Grid grid{.nx = 16, .ny = 16, .lx = 1e-4, .ly = 1e-4, .periodic = true};
   const HeightMap local = HeightMap::Zero(slab_of(grid, MPI_COMM_WORLD).count, grid.nx);
-  PolonskyKeerOptions options = plain();
+  BemSolverOptions options = plain();
   options.hardness = 1e9;
   try {
-    DistributedPolonskyKeer solver(grid, local, kModulus, MPI_COMM_WORLD, options);
+    DistributedBemSolver solver(grid, local, kModulus, MPI_COMM_WORLD, options);
     ADD_FAILURE() << "a hardness was accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("hardness"), std::string::npos) << e.what();
@@ -131,7 +131,7 @@ TEST(DistributedPolonskyKeer, RefusesWhatIsNotDistributedYetNamingIt) {
   options = plain();
   options.single_precision = true;
   options.tolerance = 1e-6;
-  EXPECT_THROW(DistributedPolonskyKeer(grid, local, kModulus, MPI_COMM_WORLD, options), Error);
+  EXPECT_THROW(DistributedBemSolver(grid, local, kModulus, MPI_COMM_WORLD, options), Error);
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ namespace contactbench {
 
 enum class LoadPathStart { scaled, extrapolated };
 
-struct PolonskyKeerOptions {
+struct BemSolverOptions {
   Real tolerance = 1e-10;  // of the stopping criterion (docs/solvers.md "Stopping criteria ...")
   Index max_iterations = 20000;
   // The indentation hardness H [Pa] of a perfectly plastic cap p <= H (docs/solvers.md "Hardness"); none:
@@ -93,11 +93,11 @@ struct ContactSolution {
   Index plastic_points = 0;  // points at p = H (with a hardness; 0 without), counted in contact_points too
 };
 
-class PolonskyKeer {
+class BemSolver {
  public:
   // The surface's own periodicity chooses the operator (make_half_space); modulus is E* [Pa].
-  PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOptions options = {}, int threads = 1);
-  ~PolonskyKeer();
+  BemSolver(const Surface& surface, Real modulus, BemSolverOptions options = {}, int threads = 1);
+  ~BemSolver();
 
   // Solves for the mean pressure P/A0 [Pa] (>= 0; 0 gives no contact), starting from the previous solution
   // when there is one (load stepping: solve increasing loads in order).
@@ -114,7 +114,7 @@ class PolonskyKeer {
 
  private:
   Surface surface_;
-  PolonskyKeerOptions options_;
+  BemSolverOptions options_;
   Real engine_modulus_;
   int threads_;
   ContactSolution solution_;

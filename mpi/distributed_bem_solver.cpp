@@ -1,4 +1,4 @@
-#include "contactbench/mpi/distributed_polonsky_keer.hpp"
+#include "contactbench/mpi/distributed_bem_solver.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -41,9 +41,8 @@ void sum_over_ranks(double (&values)[N], MPI_Comm comm) {
 
 }  // namespace
 
-DistributedPolonskyKeer::DistributedPolonskyKeer(const Grid& grid, const HeightMap& local_heights,
-                                                 Real modulus, MPI_Comm comm, PolonskyKeerOptions options,
-                                                 int threads)
+DistributedBemSolver::DistributedBemSolver(const Grid& grid, const HeightMap& local_heights, Real modulus,
+                                           MPI_Comm comm, BemSolverOptions options, int threads)
     : grid_(grid), comm_(comm), options_(std::move(options)), operator_(grid, modulus, comm, threads) {
   if (!(options_.tolerance > 0) || options_.max_iterations < 1)
     throw Error("Polonsky-Keer: tolerance must be > 0 and max_iterations >= 1");
@@ -81,15 +80,15 @@ DistributedPolonskyKeer::DistributedPolonskyKeer(const Grid& grid, const HeightM
   height_range_ = max_over_ranks(local_max, comm) - min_over_ranks(local_min, comm);
 }
 
-DistributedPolonskyKeer::~DistributedPolonskyKeer() = default;
+DistributedBemSolver::~DistributedBemSolver() = default;
 
-std::size_t DistributedPolonskyKeer::bytes() const {
+std::size_t DistributedBemSolver::bytes() const {
   std::size_t values = h_.capacity() + g_.capacity() + t_.capacity() + u_.capacity() + z_.capacity() +
                        q_[0].capacity() + q_[1].capacity();
   return sizeof(double) * values + operator_.bytes() + (preconditioner_ ? preconditioner_->bytes() : 0);
 }
 
-void DistributedPolonskyKeer::apply(const std::vector<double>& in, std::vector<double>& out) {
+void DistributedBemSolver::apply(const std::vector<double>& in, std::vector<double>& out) {
   operator_.apply(in.data(), out.data());
 }
 
@@ -97,8 +96,8 @@ void DistributedPolonskyKeer::apply(const std::vector<double>& in, std::vector<d
 // gap on the contact set. Each rank sums about a shift, the first gap in contact it meets, and the ranks'
 // sums are combined exactly in rank order (Chan et al.) by the serial solver's own code for its threads'
 // (cg::combine_moments; the same on every rank, so that every rank takes the same decisions).
-cg::Moments DistributedPolonskyKeer::gap_pass(const std::vector<double>& q_new,
-                                              const std::vector<double>& q_old, double s_new, double s_old) {
+cg::Moments DistributedBemSolver::gap_pass(const std::vector<double>& q_new, const std::vector<double>& q_old,
+                                           double s_new, double s_old) {
   double change = 0, sum = 0, s1 = 0, s2 = 0, elastic = 0, shift = 0;
   bool has_shift = false;
   for (std::size_t i = 0; i < h_.size(); ++i) {
@@ -138,7 +137,7 @@ cg::Moments DistributedPolonskyKeer::gap_pass(const std::vector<double>& q_new,
 
 // bem/solvers/polonsky_keer_solver.cpp's iterate<kLoad = true, kHard = false>, plain or preconditioned, pass
 // by pass; the decisions between passes are the same code (bem/solvers/polonsky_keer_step.hpp).
-void DistributedPolonskyKeer::iterate(double total) {
+void DistributedBemSolver::iterate(double total) {
   const double tolerance = options_.tolerance;
   const Index max_iterations = options_.max_iterations;
   const double self_response = operator_.self_response();
@@ -253,7 +252,7 @@ void DistributedPolonskyKeer::iterate(double total) {
   separation_ = -moments.g_mean;  // the flat, from the mean gap on the contact set
 }
 
-void DistributedPolonskyKeer::write() {
+void DistributedBemSolver::write() {
   const Slab& slab = operator_.slab();
   solution_.pressure.resize(slab.count, grid_.nx);
   solution_.gap.resize(slab.count, grid_.nx);
@@ -276,11 +275,11 @@ void DistributedPolonskyKeer::write() {
   solution_.separation = separation_;
   solution_.iterations = iterations_;
   solution_.change = change_;
-  // As the serial solver: converged only with a small complementarity residual too (bem/polonsky_keer.hpp).
+  // As the serial solver: converged only with a small complementarity residual too (bem/bem_solver.hpp).
   solution_.converged = converged_ && solution_.residual <= residual_bound(options_.tolerance);
 }
 
-const DistributedContactSolution& DistributedPolonskyKeer::solve(Real mean_pressure) {
+const DistributedContactSolution& DistributedBemSolver::solve(Real mean_pressure) {
   if (!(std::isfinite(mean_pressure) && mean_pressure >= 0))
     throw Error("Polonsky-Keer: the mean pressure must be finite and >= 0 Pa, got " +
                 std::to_string(mean_pressure));

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "contact_shapes.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
-#include "contactbench/bem/polonsky_keer.hpp"
 #include "contactbench/bem/solvers/contact_solver.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/generation.hpp"
@@ -21,7 +21,7 @@
 namespace contactbench {
 namespace {
 
-class BemSolver : public EachSolver {};
+class BemSolverTest : public EachSolver {};
 
 constexpr Real pi = std::numbers::pi;
 constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* [Pa]
@@ -36,7 +36,7 @@ Surface cosine_strip(Index nx, Index ny, Real lambda, Real amplitude) {
   return Surface(grid, h);
 }
 
-TEST_P(BemSolver, HertzContactOfASphere) {
+TEST_P(BemSolverTest, HertzContactOfASphere) {
   // A sphere of radius R on a 128 x 128 non-periodic grid of 1 um pixels, loaded so that the Hertz contact
   // radius a = (3 P R/(4 E*))^(1/3) is 32 pixels.
   const Index n = 128;
@@ -45,7 +45,7 @@ TEST_P(BemSolver, HertzContactOfASphere) {
   const Real load = hertz.load_of_contact_radius(a);
   const Surface surface = sphere(n, dx, radius);
   const Grid& grid = surface.grid();
-  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000, .solver = GetParam()});
+  BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000, .solver = GetParam()});
   const ContactSolution& s = solver.solve(load / grid.nominal_area());
   ASSERT_TRUE(s.converged) << s.iterations << " iterations, change " << s.change;
   // Complementarity: the gap on the contact set is zero to far below the pixel scale.
@@ -65,7 +65,7 @@ TEST_P(BemSolver, HertzContactOfASphere) {
   EXPECT_NEAR(s.pressure.mean(), load / grid.nominal_area(), 1e-12 * load / grid.nominal_area());
 }
 
-TEST_P(BemSolver, WestergaardWavySurface) {
+TEST_P(BemSolverTest, WestergaardWavySurface) {
   // h = D cos(2 pi x / lambda), periodic: full-contact pressure p* = pi E* D/lambda; at mean pressure
   // pbar the contact half-width a satisfies pbar/p* = sin^2(pi a/lambda) and the pressure is
   // p(x) = [2 pbar cos(pi x/lambda)/sin^2(pi a/lambda)] sqrt(sin^2(pi a/lambda) - sin^2(pi x/lambda)).
@@ -74,7 +74,7 @@ TEST_P(BemSolver, WestergaardWavySurface) {
   const Surface surface = cosine_strip(nx, ny, lambda, amplitude);
   const reference::WavySurface wavy{.amplitude = amplitude, .wavelength = lambda, .modulus = kModulus};
   const Real p_star = wavy.full_contact_pressure();
-  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000, .solver = GetParam()});
+  BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000, .solver = GetParam()});
   for (const Real fraction : {0.1, 0.3, 0.6}) {  // increasing loads, warm-started
     const ContactSolution& s = solver.solve(fraction * p_star);
     ASSERT_TRUE(s.converged) << fraction;
@@ -95,11 +95,11 @@ TEST_P(BemSolver, WestergaardWavySurface) {
   }
 }
 
-TEST_P(BemSolver, RefusesANegativeOrNanLoadAndAnswersZeroLoad) {
+TEST_P(BemSolverTest, RefusesANegativeOrNanLoadAndAnswersZeroLoad) {
   const Grid grid{.nx = 8, .ny = 8, .lx = 8e-6, .ly = 8e-6, .periodic = true};
   HeightMap h = HeightMap::Zero(8, 8);
   h(3, 4) = 1e-7;
-  PolonskyKeer solver(Surface(grid, h), kModulus, {.solver = GetParam()});
+  BemSolver solver(Surface(grid, h), kModulus, {.solver = GetParam()});
   EXPECT_THROW(solver.solve(-1), Error);
   EXPECT_THROW(solver.solve(std::nan("")), Error);
   // Zero load: no contact, the flat at the highest point (exactly: no arithmetic involved).
@@ -111,7 +111,7 @@ TEST_P(BemSolver, RefusesANegativeOrNanLoadAndAnswersZeroLoad) {
   EXPECT_GE(s.gap.minCoeff(), 0);
 }
 
-TEST_P(BemSolver, BeyondFullContactThePressureFollowsTheSurface) {
+TEST_P(BemSolverTest, BeyondFullContactThePressureFollowsTheSurface) {
   // h = D cos(q x) loaded above p* = pi E* D/lambda is in full contact, and then p = pbar + p* cos(q x)
   // exactly (the fluctuating displacement must equal the surface: u(q) = 2 p(q)/(E* q)). Solver consistency:
   // the relative pressure change converges to 1e-12, so 1e-9 of pbar is a safe bound.
@@ -120,7 +120,7 @@ TEST_P(BemSolver, BeyondFullContactThePressureFollowsTheSurface) {
   const Surface surface = cosine_strip(nx, ny, lambda, amplitude);
   const reference::WavySurface wavy{.amplitude = amplitude, .wavelength = lambda, .modulus = kModulus};
   const Real pbar = 1.5 * wavy.full_contact_pressure();
-  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000, .solver = GetParam()});
+  BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000, .solver = GetParam()});
   const ContactSolution& s = solver.solve(pbar);
   ASSERT_TRUE(s.converged);
   EXPECT_EQ(s.contact_points, nx * ny);
@@ -128,12 +128,12 @@ TEST_P(BemSolver, BeyondFullContactThePressureFollowsTheSurface) {
     EXPECT_NEAR(s.pressure(0, ix), wavy.pressure(ix * lambda / static_cast<Real>(nx), pbar), 1e-9 * pbar);
 }
 
-TEST_P(BemSolver, AFlatSurfaceIsInFullContact) {
+TEST_P(BemSolverTest, AFlatSurfaceIsInFullContact) {
   // A flat surface touches everywhere at any load. Periodic, the pressure is uniform; non-periodic, a flat
   // punch of the grid's size, its pressure rises towards the edges, but the mean is the load.
   for (const bool periodic : {true, false}) {
     const Grid grid{.nx = 16, .ny = 12, .lx = 16e-6, .ly = 12e-6, .periodic = periodic};
-    PolonskyKeer solver(Surface(grid, HeightMap::Constant(12, 16, 3e-7)), kModulus, {.solver = GetParam()});
+    BemSolver solver(Surface(grid, HeightMap::Constant(12, 16, 3e-7)), kModulus, {.solver = GetParam()});
     const ContactSolution& s = solver.solve(1e8);
     ASSERT_TRUE(s.converged) << periodic;
     EXPECT_EQ(s.contact_points, 16 * 12) << periodic;
@@ -187,7 +187,7 @@ TEST(ContactStatistics, CorrectedAreaOfHertzIsCloserThanTheNodeCount) {
   const Real load = reference::HertzSphere{.radius = radius, .modulus = kModulus}.load_of_contact_radius(a);
   const Surface surface = sphere(n, dx, radius);
   const Grid& grid = surface.grid();
-  PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
+  BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 5000});
   Labeller labeller(Topology{Connectivity::four, false, false});
   const ContactStatistics s = contact_statistics(solver.solve(load / grid.nominal_area()), labeller);
   const Real exact = pi * a * a / grid.nominal_area();
@@ -197,7 +197,7 @@ TEST(ContactStatistics, CorrectedAreaOfHertzIsCloserThanTheNodeCount) {
   EXPECT_NEAR(s.area_fraction_corrected, exact, 0.01 * exact);
 }
 
-TEST_P(BemSolver, FlatPunchStiffnessIsTwiceEStarA) {
+TEST_P(BemSolverTest, FlatPunchStiffnessIsTwiceEStarA) {
   // A flat-ended cylinder of radius a (10 pixels; the rest 100 um lower, never touched): Sneddon's P = 2 E* a
   // delta. With a the radius of the pixelated disc's area, the stiffness converges at first order in dx/a
   // (measured 0.9914, 0.9949, 0.9973 at 10, 20, 40 pixels): at 10 pixels allow 1.5 %.
@@ -214,8 +214,8 @@ TEST_P(BemSolver, FlatPunchStiffnessIsTwiceEStarA) {
       disc += inside;
     }
   const Real a = std::sqrt(static_cast<Real>(disc) * dx * dx / pi), load = 1e-3 * kModulus * a * a;
-  PolonskyKeer solver(Surface(grid, h), kModulus,
-                      {.tolerance = 1e-10, .max_iterations = 20000, .solver = GetParam()});
+  BemSolver solver(Surface(grid, h), kModulus,
+                   {.tolerance = 1e-10, .max_iterations = 20000, .solver = GetParam()});
   const ContactSolution& s = solver.solve(load / grid.nominal_area());
   ASSERT_TRUE(s.converged) << s.iterations;
   EXPECT_EQ(s.contact_points, disc);  // the whole face and nothing else
@@ -244,7 +244,7 @@ TEST(SolverRegistry, NamesRoundTripAndAnUnknownNameListsTheKnownOnes) {
 
 TEST(SolverRegistry, EachEntryDescribesItselfAndItsFactoryMakesWhatItSays) {
   // Every solver registers a unique name, a description and a factory, in the order of SolverKind; what an
-  // entry says it does natively about a hardness must be what its solver does (PolonskyKeer searches the
+  // entry says it does natively about a hardness must be what its solver does (BemSolver searches the
   // flat's height for the others, bem/solvers/hardness_search.hpp).
   const Grid grid{.nx = 16, .ny = 16, .lx = 1e-5, .ly = 1e-5, .periodic = true};
   const Surface surface(grid, HeightMap::Random(16, 16) * 1e-7);
@@ -285,7 +285,7 @@ TEST(SolverRegistry, ThePreconditionedSolverNeedsFewerIterationsOnARoughSurface)
   Index iterations[3] = {0, 0, 0};
   for (const SolverKind kind :
        {SolverKind::polonsky_keer, SolverKind::preconditioned_cg, SolverKind::active_set}) {
-    PolonskyKeer solver(surface, kModulus, {.tolerance = 1e-10, .solver = kind});
+    BemSolver solver(surface, kModulus, {.tolerance = 1e-10, .solver = kind});
     const ContactSolution& s = solver.solve(0.02 * kModulus * 1e-7 * 2 * pi * 10 / 1e-4);
     ASSERT_TRUE(s.converged);
     iterations[static_cast<int>(kind)] = s.iterations;
@@ -314,7 +314,7 @@ TEST(ActiveSet, ALooseToleranceDoesNotBiasTheAreaLow) {
     const Surface surface = generate_surface(grid, psd, seed);
     const Real load = kModulus * 0.3 * spectral_moments(surface).rms_gradient() / 2;
     for (const double tolerance : {1e-4, 1e-10}) {
-      PolonskyKeer solver(surface, kModulus, {.tolerance = tolerance, .solver = SolverKind::active_set});
+      BemSolver solver(surface, kModulus, {.tolerance = tolerance, .solver = SolverKind::active_set});
       const ContactSolution& s = solver.solve(load);
       ASSERT_TRUE(s.converged);
       (tolerance == 1e-4 ? loose : tight) += s.contact_points;
@@ -324,7 +324,7 @@ TEST(ActiveSet, ALooseToleranceDoesNotBiasTheAreaLow) {
       << loose << " nodes at 1e-4 against " << tight << " at 1e-10";
 }
 
-CB_FOR_EACH_SOLVER(BemSolver);
+CB_FOR_EACH_SOLVER(BemSolverTest);
 
 }  // namespace
 }  // namespace contactbench

@@ -1,5 +1,5 @@
 // The boundary-element solver on slabs (docs/mpi.md): Polonsky & Keer's constrained conjugate gradient
-// (bem/polonsky_keer.hpp, docs/theory.md section 6) with each rank holding its slab of the heights, pressure,
+// (bem/bem_solver.hpp, docs/theory.md section 6) with each rank holding its slab of the heights, pressure,
 // gap and search direction, the half-space operator distributed (mpi/distributed_half_space.hpp), and every
 // global sum of an iteration (the load, the gap's moments on the contact set, the step's products) reduced
 // with MPI_Allreduce. The iteration is the serial one step for step (the same starts, steps, entry rule,
@@ -15,7 +15,7 @@
 
 #include <mpi.h>
 
-#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/core/grid.hpp"
 #include "contactbench/mpi/distributed_half_space.hpp"
 #include "contactbench/mpi/slab.hpp"
@@ -38,14 +38,14 @@ struct DistributedContactSolution {
   bool converged = false;
 };
 
-class DistributedPolonskyKeer {
+class DistributedBemSolver {
  public:
   // Collective. local_heights: this rank's slab (slab_of(grid, comm)) of the surface; modulus E* [Pa].
   // options: hardness, single_precision, coarse_start and an extrapolated load path unset (see above).
   // `threads`: FFTW's threads a rank, for the transforms (the element-wise passes run on one).
-  DistributedPolonskyKeer(const Grid& grid, const HeightMap& local_heights, Real modulus, MPI_Comm comm,
-                          PolonskyKeerOptions options, int threads = 1);
-  ~DistributedPolonskyKeer();
+  DistributedBemSolver(const Grid& grid, const HeightMap& local_heights, Real modulus, MPI_Comm comm,
+                       BemSolverOptions options, int threads = 1);
+  ~DistributedBemSolver();
 
   // Solves for the mean pressure P/A0 >= 0 [Pa], warm-started from the previous load's solution (scaled), as
   // the serial solver. Collective.
@@ -65,7 +65,7 @@ class DistributedPolonskyKeer {
 
   Grid grid_;
   MPI_Comm comm_;
-  PolonskyKeerOptions options_;
+  BemSolverOptions options_;
   DistributedHalfSpace operator_;
   Index local_points_;
   std::unique_ptr<DistributedConvolution> preconditioner_;  // null: plain Polonsky-Keer

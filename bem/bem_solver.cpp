@@ -1,4 +1,4 @@
-#include "contactbench/bem/polonsky_keer.hpp"
+#include "contactbench/bem/bem_solver.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -13,7 +13,7 @@
 
 namespace contactbench {
 
-PolonskyKeer::PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOptions options, int threads)
+BemSolver::BemSolver(const Surface& surface, Real modulus, BemSolverOptions options, int threads)
     : surface_(surface.centred()), options_(options), engine_modulus_(modulus), threads_(threads) {
   if (!(options_.tolerance > 0) || options_.max_iterations < 1)
     throw Error("Polonsky-Keer: tolerance must be > 0 and max_iterations >= 1");
@@ -28,12 +28,12 @@ PolonskyKeer::PolonskyKeer(const Surface& surface, Real modulus, PolonskyKeerOpt
   engine_->set_between_iterations(options_.between_iterations);
 }
 
-PolonskyKeer::~PolonskyKeer() = default;
+BemSolver::~BemSolver() = default;
 
 namespace {
 
 void warn_not_converged(const char* what, Real value, const ContactSolution& s,
-                        const PolonskyKeerOptions& options) {
+                        const BemSolverOptions& options) {
   if (!options.warning) return;
   std::ostringstream text;
   text << "Polonsky-Keer did not converge at " << what << " = " << value << " in " << s.iterations
@@ -44,13 +44,13 @@ void warn_not_converged(const char* what, Real value, const ContactSolution& s,
 }
 
 // Converged only with a small complementarity residual as well (residual_bound, polonsky_keer.hpp).
-bool residual_settled(const ContactSolution& s, const PolonskyKeerOptions& options) {
+bool residual_settled(const ContactSolution& s, const BemSolverOptions& options) {
   return s.residual <= residual_bound(options.tolerance);
 }
 
 }  // namespace
 
-const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
+const ContactSolution& BemSolver::solve(Real mean_pressure) {
   if (!(std::isfinite(mean_pressure) && mean_pressure >= 0))
     throw Error("Polonsky-Keer: the mean pressure must be finite and >= 0 Pa, got " +
                 std::to_string(mean_pressure));
@@ -100,7 +100,7 @@ const ContactSolution& PolonskyKeer::solve(Real mean_pressure) {
   return solution_;
 }
 
-const ContactSolution& PolonskyKeer::solve_for_separation(Real separation) {
+const ContactSolution& BemSolver::solve_for_separation(Real separation) {
   if (!std::isfinite(separation))
     throw Error("Polonsky-Keer: the separation must be finite, got " + std::to_string(separation));
   if (surface_.grid().periodic && !options_.hardness && !(separation > 0))
