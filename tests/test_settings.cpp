@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "contactbench/app/methods/bem_settings.hpp"
+#include "contactbench/app/methods/method.hpp"
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/scene_keys.hpp"
 #include "contactbench/app/setting_flags.hpp"
@@ -127,6 +128,14 @@ TEST(Settings, ASceneReadsAndWritesEveryKeyThroughTheDeclaration) {
                            "connectivity = 8", "precision = \"double\"", "area = \"corrected\""})
     EXPECT_NE(toml.find(line), std::string::npos) << line << " in\n" << toml;
   EXPECT_EQ(to_toml(parse_scene(toml, "again.toml")), toml);
+  // A key added by one row (load_path) reaches the solver's options.
+  const Scene extrapolated =
+      parse_scene("name = \"s\"\n" + kSmallSurfaceAndMaterial +
+                      "[loads]\nvalues = [1e-3]\n[methods.bem]\nload_path = \"extrapolated\"\n",
+                  "s.toml");
+  const MethodNeeds needs = extrapolated.methods[0].method->needs({});
+  ASSERT_TRUE(needs.bem.has_value());
+  EXPECT_EQ(needs.bem->settings.solver.load_path, LoadPathStart::extrapolated);
 }
 
 }  // namespace

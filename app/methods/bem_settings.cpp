@@ -114,6 +114,18 @@ SettingTable<BemSettings> make_table() {
           .distributed_choices = {"polonsky_keer", "preconditioned_cg"},
           .choices = solver_names()},
       [](BemSettings & s) -> auto& { return s.solver.solver; }));
+  table.push_back(bind_choice(
+      Row{.key = "load_path",
+          .kind = SettingKind::choice,
+          .accepted = "`\"scaled\"`, `\"extrapolated\"`",
+          .default_value = std::string("scaled"),
+          .doc =
+              "where each load after the first starts (loads are solved in increasing order): the previous "
+              "solution scaled to the new load, or the linear extrapolation of the last two in the load "
+              "(clipped at 0, then scaled)",
+          .distributed_choices = {"scaled"},
+          .choices = {"scaled", "extrapolated"}},
+      [](BemSettings & s) -> auto& { return s.solver.load_path; }));
   table.push_back(bind(
       Row{.key = "extrapolate",
           .kind = SettingKind::boolean,
