@@ -29,8 +29,6 @@ enum class SolverKind {
 
 // The solver a caller gets when it names none: the fastest that passes every validation (docs/solvers.md).
 inline constexpr SolverKind kDefaultSolver = SolverKind::active_set;
-// The default of a solve on several MPI ranks, where active_set has no distributed version (docs/mpi.md).
-inline constexpr SolverKind kDefaultDistributedSolver = SolverKind::preconditioned_cg;
 
 class ContactSolver;  // bem/solvers/contact_solver.hpp
 

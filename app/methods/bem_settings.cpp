@@ -14,6 +14,14 @@ namespace {
 
 using Row = Setting<BemSettings>;
 
+// "`\"a\"`, `\"b\"`": choices as the docs' table writes them.
+std::string quoted(const std::vector<std::string>& choices) {
+  std::string text;
+  for (const std::string& c : choices)
+    text += (text.empty() ? "`\"" : ", `\"") + c + "\"`";
+  return text;
+}
+
 SettingTable<BemSettings> make_table() {
   const std::string max_points = std::to_string(kMaxPointsASide);
   SettingTable<BemSettings> table;
@@ -56,9 +64,12 @@ SettingTable<BemSettings> make_table() {
           .distributed = true,
           .ok = in_range(1, std::numeric_limits<std::int32_t>::max())},
       [](BemSettings & s) -> auto& { return s.solver.max_iterations; }));
+  // Scope method: the stage holds the boundary resolved against the surface (BemStage::periodic), so that
+  // an unset periodic and its value spelled out share one solve.
   table.push_back(bind(
       Row{.key = "periodic",
           .kind = SettingKind::boolean,
+          .scope = SettingScope::method,
           .default_text = "the surface's",
           .doc = "solve the periodic or the non-periodic problem",
           .flag = {"--non-periodic", false},
@@ -104,7 +115,7 @@ SettingTable<BemSettings> make_table() {
   table.push_back(bind_choice(
       Row{.key = "solver",
           .kind = SettingKind::choice,
-          .accepted = "`\"polonsky_keer\"`, `\"preconditioned_cg\"`, `\"active_set\"`",
+          .accepted = quoted(solver_names()),  // the registry's: a new solver is accepted here at once
           .default_value = std::string(solver_name(kDefaultSolver)),
           .doc = "the BEM iteration (docs/solvers.md): Polonsky & Keer's, the same Fourier-preconditioned, "
                  "or the "
