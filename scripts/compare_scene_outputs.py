@@ -7,8 +7,9 @@ binary against the new one, with what legitimately differs masked: wall times (t
 as node counts, spots, iterations, convergence) must be equal; other numbers agree to 1e-6 relative, because
 one binary run twice already differs in the last bits of the BEM's separation, mean gap, largest pressure and
 residual (FFTW_MEASURE picks its algorithms per run and the two threads' partial sums land in either order;
-the `residual` column, a largest gap near round-off, moved by up to 3e-5 relative between runs at a tolerance
-of 1e-10, so it is compared to 1e-2). Anything else that differs is printed and the exit status is 1.
+the `residual` column, a largest gap near round-off, moved by up to 8 % between two runs of the same binary
+on the 2048^2 solves at a tolerance of 1e-10 of scenes/studies/accuracy_vs_time.toml, so it is compared to
+0.2 relative: what it can still catch is a solve that stopped elsewhere). Anything else that differs is printed and the exit status is 1.
 
 Usage: scripts/compare_scene_outputs.py OLD_BINARY NEW_BINARY [SCENE ...] [--threads N]
        (default scenes: every scenes/**/*.toml; build the old binary from the commit before the change)
@@ -36,7 +37,7 @@ def masked_csv(text):
 
 
 RELATIVE = 1e-6
-LOOSE = {"residual": 1e-2}  # columns of round-off size, by name
+LOOSE = {"residual": 0.2}  # columns of round-off size, by name
 
 
 def same_cell(a, b, relative=RELATIVE):
