@@ -152,7 +152,7 @@ TEST(HalfSpace, IsSymmetricAndPositive) {
     // Parseval over a direct DFT (periodic: sum over modes of 2/(E*|q|) |Q|^2 / N) or the double sum of
     // Love's kernels (non-periodic). Tolerance 1e-10 relative: two summation orders of 280 x 280 terms with
     // cancellation (the energy is ~0.1 of sum |q||u|), measured below 1e-13. Rejects a modulus off by 1 %
-    // or by 1/(1 - nu^2), and a kernel shifted by one node (which makes a checkerboard's energy negative).
+    // or by 1/(1 - nu^2) (energy +10 %), and a kernel shifted by one node (energy 0.3 of the right one).
     const HeightMap q = p1 - p2;
     HeightMap uq;
     half_space->apply(q, uq);
