@@ -311,9 +311,9 @@ std::vector<Real> json_numbers_after(const std::string& text, std::size_t from, 
 // 0.550 for the model and 0.600 for its node count 0.012. The reference's own error 2e-4 is 2 %, 1 %, 0.5 %
 // of its areas (at most 2 %). Tolerance for the JSON's numbers: 1e-12 relative (a few divisions in double);
 // the table prints them rounded (%.3f, %.1f %%, %.4g), so its text is compared exactly. Rejects an error
-// taken the other way round (reference over model: -9.1 %, +5.3 %, +11.1 %), an rms over all loads of the
-// signed error, kappa with the profile gbar sqrt(m2x) (0.300) or at the largest load, or a column shifted by
-// one load.
+// taken the other way round (reference over model: -9.1 %, +5.3 %, +11.1 %), a mean |e| in place of the rms
+// (8.3 %), kappa with the profile gbar sqrt(m2x) (0.300) or at the largest load (0.450 for the model), or a
+// column shifted by one load.
 TEST(SceneRun, TheComparisonEqualsAHandComputation) {
   SceneReport report = run_text("name = \"hand\"\nreference = \"\"\n" + kSmallSurfaceAndMaterial +
                                 "[loads]\nvalues = [1e-3, 2e-3, 4e-3]\n[methods.persson]\n");
