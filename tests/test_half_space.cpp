@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <numbers>
 #include <random>
 
@@ -146,7 +147,44 @@ TEST(HalfSpace, IsSymmetricAndPositive) {
     half_space->apply(p2, u2);
     const Real a = (p1 * u2).sum(), b = (p2 * u1).sum();
     EXPECT_NEAR(a, b, 1e-12 * std::abs(a)) << (periodic ? "periodic" : "non-periodic");
-    EXPECT_GT((p1 * u1).sum(), 0) << (periodic ? "periodic" : "non-periodic");
+    // Energy of a signed pressure of zero mean (a positive pressure times a positive kernel is positive
+    // whatever the kernel, so that check could not fail): <q, G q> > 0 and equal to an independent sum,
+    // Parseval over a direct DFT (periodic: sum over modes of 2/(E*|q|) |Q|^2 / N) or the double sum of
+    // Love's kernels (non-periodic). Tolerance 1e-10 relative: two summation orders of 280 x 280 terms with
+    // cancellation (the energy is ~0.1 of sum |q||u|), measured below 1e-13. Rejects a modulus off by 1 %
+    // or by 1/(1 - nu^2) (energy +10 %), and a kernel shifted by one node (energy 0.3 of the right one).
+    const HeightMap q = p1 - p2;
+    HeightMap uq;
+    half_space->apply(q, uq);
+    const Real energy = (q * uq).sum();
+    Real expected = 0;
+    const Real dx = grid.dx(), dy = grid.dy();
+    if (periodic) {
+      for (Index ky = 0; ky < grid.ny; ++ky)
+        for (Index kx = 0; kx < grid.nx; ++kx) {
+          if (kx == 0 && ky == 0) continue;
+          std::complex<Real> mode = 0;
+          for (Index iy = 0; iy < grid.ny; ++iy)
+            for (Index ix = 0; ix < grid.nx; ++ix)
+              mode +=
+                  q(iy, ix) * std::polar(1.0, -2 * pi *
+                                                  (static_cast<Real>(kx * ix) / static_cast<Real>(grid.nx) +
+                                                   static_cast<Real>(ky * iy) / static_cast<Real>(grid.ny)));
+          const Real sx = static_cast<Real>(kx <= grid.nx / 2 ? kx : kx - grid.nx);
+          const Real sy = static_cast<Real>(ky <= grid.ny / 2 ? ky : ky - grid.ny);
+          const Real wavenumber = 2 * pi * std::hypot(sx / grid.lx, sy / grid.ly);
+          expected += 2 / (kModulus * wavenumber) * std::norm(mode) / static_cast<Real>(q.size());
+        }
+    } else {
+      for (Index iy = 0; iy < grid.ny; ++iy)
+        for (Index ix = 0; ix < grid.nx; ++ix)
+          for (Index jy = 0; jy < grid.ny; ++jy)
+            for (Index jx = 0; jx < grid.nx; ++jx)
+              expected += q(iy, ix) * q(jy, jx) *
+                          love_displacement((ix - jx) * dx, (iy - jy) * dy, dx / 2, dy / 2) / kModulus;
+    }
+    EXPECT_GT(energy, 0) << (periodic ? "periodic" : "non-periodic");
+    EXPECT_NEAR(energy, expected, 1e-10 * expected) << (periodic ? "periodic" : "non-periodic");
   }
 }
 

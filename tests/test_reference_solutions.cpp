@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <utility>
 
 namespace contactbench::reference {
 namespace {
@@ -110,7 +111,14 @@ TEST(ReferenceBisinusoid, FullContactPressureAndSmallLoadAsTwoHertzContacts) {
     const Real two_contacts = 2 * pi * a * a / (wave.wavelength * wave.wavelength);
     EXPECT_NEAR(Bisinusoid::small_load_area_fraction(ratio), two_contacts, 1e-14) << ratio;
   }
-  EXPECT_NEAR(Bisinusoid::near_full_gap_fraction(1), 0, 1e-16);
+  // Near full contact, 1 - A/A0 = (3/(2 pi)) (1 - pbar/p*): the coefficient against its hand value
+  // 3/(2 pi) = 0.477464829275686 (at pbar/p* = 1 alone, 1 - 1 = 0 hid the coefficient), and linear in the
+  // load. Tolerance 4e-15 relative: one product, and 1 - 0.95 carries 1e-15 relative in double. Rejects a
+  // coefficient off by any factor (e.g. 3/(4 pi) or 3/pi) or a power of (1 - pbar/p*) other than 1.
+  for (const auto& [ratio, gap] :
+       {std::pair<Real, Real>{0.9, 0.0477464829275686}, {0.95, 0.0238732414637843}, {0.5, 0.238732414637843}})
+    EXPECT_NEAR(Bisinusoid::near_full_gap_fraction(ratio), gap, 4e-15 * gap) << ratio;
+  EXPECT_EQ(Bisinusoid::near_full_gap_fraction(1), 0);
 }
 
 }  // namespace

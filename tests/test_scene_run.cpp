@@ -276,6 +276,115 @@ method = "gw_mccool"
   EXPECT_EQ(unconverged_loads(report.methods[2].curve), (std::vector<std::size_t>{1}));
 }
 
+// The numbers after "key": in text, from position `from` on: one scalar or the elements of an array (null:
+// NaN).
+std::vector<Real> json_numbers_after(const std::string& text, std::size_t from, const std::string& key) {
+  std::size_t at = text.find("\"" + key + "\": ", from);
+  if (at == std::string::npos) return {};
+  at += key.size() + 4;
+  std::vector<Real> numbers;
+  const bool array = text[at] == '[';
+  if (array) ++at;
+  while (true) {
+    while (text[at] == ' ')
+      ++at;
+    if (text.compare(at, 4, "null") == 0) {
+      numbers.push_back(std::nan(""));
+      at += 4;
+    } else {
+      std::size_t used = 0;
+      numbers.push_back(std::stod(text.substr(at, 40), &used));
+      at += used;
+    }
+    if (!array || text[at] != ',') break;
+    ++at;
+  }
+  return numbers;
+}
+
+// The headline comparison against a hand computation: two synthetic curves with known errors, through
+// compare() and the writers of table.md and summary.json, every printed column checked against numbers
+// worked out by hand below (not by the formulas of app/comparison.cpp). Reference A/A0 = 0.010, 0.020, 0.040
+// and the model's 0.011, 0.019, 0.036 at P/(E* A0) = 1e-3, 2e-3, 4e-3: relative errors +10 %, -5 %, -10 %;
+// max |e| = 10 %; rms = sqrt((0.01 + 0.0025 + 0.01)/3) = sqrt(0.0075) = 8.660 %. gbar = sqrt(m2x + m2y) =
+// sqrt(0.0009 + 0.0016) = 0.05, so kappa = (A/A0) gbar / (P/(E* A0)) at 1e-3 is 0.500 for the reference,
+// 0.550 for the model and 0.600 for its node count 0.012. The reference's own error 2e-4 is 2 %, 1 %, 0.5 %
+// of its areas (at most 2 %). Tolerance for the JSON's numbers: 1e-12 relative (a few divisions in double);
+// the table prints them rounded (%.3f, %.1f %%, %.4g), so its text is compared exactly. Rejects an error
+// taken the other way round (reference over model: -9.1 %, +5.3 %, +11.1 %), a mean |e| in place of the rms
+// (8.3 %), kappa with the profile gbar sqrt(m2x) (0.300) or at the largest load (0.450 for the model), or a
+// column shifted by one load.
+TEST(SceneRun, TheComparisonEqualsAHandComputation) {
+  SceneReport report = run_text("name = \"hand\"\nreference = \"\"\n" + kSmallSurfaceAndMaterial +
+                                "[loads]\nvalues = [1e-3, 2e-3, 4e-3]\n[methods.persson]\n");
+  ASSERT_EQ(report.loads(), (std::vector<Real>{1e-3, 2e-3, 4e-3}));
+  const Real nan = std::nan("");
+  const std::vector<Real> none{nan, nan, nan};
+  MethodResult reference;
+  reference.label = "ref";
+  reference.method = "bem";
+  reference.compared_area = "area_fraction_corrected";
+  reference.curve.area_fraction = {0.010, 0.020, 0.040};
+  reference.curve.area_fraction_error = {2e-4, 2e-4, 2e-4};
+  reference.curve.separation = reference.curve.spots = none;
+  reference.curve.parameters = "synthetic reference";
+  reference.seconds = 2.5;
+  MethodResult model;
+  model.label = "model";
+  model.method = "plateau_hertz";
+  model.compared_area = "area_fraction_nodes";
+  model.curve.area_fraction = {0.011, 0.019, 0.036};
+  model.curve.area_fraction_nodes = {0.012, 0.019, 0.036};
+  model.curve.separation = model.curve.spots = none;
+  model.curve.parameters = "synthetic model";
+  model.seconds = 0.125;
+  report.methods = {reference, model};
+  report.scene.reference = "ref";
+  report.moments.m2x = 0.0009;
+  report.moments.m2y = 0.0016;
+
+  const Comparison comparison = compare(report);
+  std::ostringstream table_text, summary_text;
+  write_table_md(table_text, report, comparison, current_provenance(1, "test"));
+  write_summary_json(summary_text, report, comparison, current_provenance(1, "test"));
+  const std::string table = table_text.str(), summary = summary_text.str();
+
+  // table.md: the method table (time, kappa, max abs error, rms error) and A/A0 with each load's error.
+  for (const std::string& row :
+       {std::string("| ref | 2.5 | 0.500 | reference (its own error up to ± 2.0 %) |  |"),
+        std::string("| model | 0.125 | 0.550 (nodes 0.600) | 10.0 % | 8.7 % |"), std::string("gbar = 0.05."),
+        std::string("at the smallest load, 0.001 "),
+        std::string("| 0.001 | 0.01 (± 2.0 %) | 0.011 (+10.0 %) |"),
+        std::string("| 0.002 | 0.02 (± 1.0 %) | 0.019 (-5.0 %) |"),
+        std::string("| 0.004 | 0.04 (± 0.5 %) | 0.036 (-10.0 %) |")})
+    EXPECT_NE(table.find(row), std::string::npos) << row << " in\n" << table;
+
+  // summary.json: the same numbers unrounded.
+  const auto near = [](const std::vector<Real>& got, const std::vector<Real>& expected,
+                       const std::string& what) {
+    ASSERT_EQ(got.size(), expected.size()) << what;
+    for (std::size_t k = 0; k < expected.size(); ++k)
+      EXPECT_NEAR(got[k], expected[k], 1e-12 * std::abs(expected[k])) << what << " [" << k << "]";
+  };
+  near(json_numbers_after(summary, 0, "rms_gradient"), {0.05}, "rms_gradient");
+  near(json_numbers_after(summary, 0, "kappa_load"), {1e-3}, "kappa_load");
+  near(json_numbers_after(summary, 0, "reference_relative_uncertainty"), {0.02, 0.01, 0.005}, "uncertainty");
+  const std::size_t ref_at = summary.find("\"label\": \"ref\""),
+                    model_at = summary.find("\"label\": \"model\"");
+  ASSERT_NE(ref_at, std::string::npos) << summary;
+  ASSERT_NE(model_at, std::string::npos) << summary;
+  ASSERT_LT(ref_at, model_at);
+  near(json_numbers_after(summary, ref_at, "kappa"), {0.5}, "ref kappa");
+  near(json_numbers_after(summary, ref_at, "relative_error"), {0, 0, 0}, "ref relative_error");
+  near(json_numbers_after(summary, ref_at, "max_abs_relative_error"), {0}, "ref max");
+  near(json_numbers_after(summary, model_at, "kappa"), {0.55}, "model kappa");
+  near(json_numbers_after(summary, model_at, "kappa_nodes"), {0.6}, "model kappa_nodes");
+  near(json_numbers_after(summary, model_at, "area_fraction"), {0.011, 0.019, 0.036}, "model area_fraction");
+  near(json_numbers_after(summary, model_at, "relative_error"), {0.1, -0.05, -0.1}, "model relative_error");
+  near(json_numbers_after(summary, model_at, "max_abs_relative_error"), {0.1}, "model max");
+  near(json_numbers_after(summary, model_at, "rms_relative_error"), {0.08660254037844386}, "model rms");
+}
+
 // A scene with a hardness and a method that ignores it (app/interface.hpp): the method runs elastic, and
 // table.md, summary.json and the plot legend mark its row; the BEM, which models the cap, is unmarked and
 // solves capped.

@@ -397,14 +397,13 @@ TEST(SweepHardCases, QuantisedHeightsWithWidePlateaus) {
       ASSERT_EQ(exact.z, (std::vector<Real>{3, 2, 1, 0, -1, -2, -3}));
       const SweepCurve uniform = sweep(s, SweepLevels::uniform(6), t, threads);
       expect_brute_force(s, uniform, t, what(s, t, "uniform", threads) + ", integer");
-      // The same levels as the exact mode (to round-off of 3 - j): the same sets.
-      ASSERT_EQ(uniform.z.size(), 7u);
-      for (std::size_t j = 0; j < 7; ++j)
-        EXPECT_NEAR(uniform.z[j], exact.z[j], 1e-12);
-      if (uniform.z == exact.z) {  // (the usual case: 3 - j * 1 is exact)
-        EXPECT_EQ(uniform.points, exact.points);
-        EXPECT_EQ(uniform.spots, exact.spots);
-      }
+      // The same levels as the exact mode, bit for bit: max - j (max - min)/6 = 3 - j is exact in floating
+      // point for these integers, so no round-off is allowed; the same levels must give the same sets.
+      // (Before, points and spots were compared only when the levels happened to be bit-equal, so a level
+      // off by one ulp, or a uniform mode that counted different sets, passed unseen.)
+      ASSERT_EQ(uniform.z, exact.z) << what(s, t, "uniform", threads);
+      EXPECT_EQ(uniform.points, exact.points) << what(s, t, "uniform", threads);
+      EXPECT_EQ(uniform.spots, exact.spots) << what(s, t, "uniform", threads);
       const SweepCurve paper = sweep(s, SweepLevels::paper(3), t, threads);
       expect_brute_force(s, paper, t, what(s, t, "paper", threads) + ", integer");
     }

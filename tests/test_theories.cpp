@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "contactbench/core/error.hpp"
@@ -450,7 +451,16 @@ TEST(Persson, SmallLoadSlopeIsSqrt8OverPiOverGbarAndFullContactAtLargeLoad) {
   // Tolerance kSlope: erf(x)/x = (2/sqrt(pi))(1 - x^2/3 + ...), x = 1e-9.
   EXPECT_NEAR(persson_area_fraction(load, m2) / load, std::sqrt(8 / pi) / gbar,
               kSlope * std::sqrt(8 / pi) / gbar);
-  EXPECT_NEAR(std::sqrt(8 / pi), 1.596, 1e-3);
+  // Away from the slope: A/A0 = erf(p/(E* sqrt(m2))) against erf values from tables (Abramowitz & Stegun
+  // 7.1, 10 digits), so a wrong factor inside the erf (sqrt2, the areal gbar for the isotropic m2, a factor
+  // 2 in G) shows where erf is curved. Tolerance 1e-10 absolute: the tabulated digits; std::erf is exact to a
+  // few ulp. (Before: sqrt(8/pi) against 1.596, one constant against another, which nothing could change.)
+  // Rejects the argument scaled by 1 + 1e-3 (a change of ~4e-4 at x = 0.5) or by sqrt2.
+  for (const auto& [x, erf_x] : {std::pair<Real, Real>{0.25, 0.2763263902},
+                                 {0.5, 0.5204998778},
+                                 {1.0, 0.8427007929},
+                                 {2.0, 0.9953222650}})
+    EXPECT_NEAR(persson_area_fraction(x * std::sqrt(m2), m2), erf_x, 1e-10) << x;
   // erf(10) = 1 in double.
   EXPECT_EQ(persson_area_fraction(10 * std::sqrt(m2), m2), 1);
 

@@ -51,10 +51,14 @@ def test_hertz_orientation_on_a_non_square_grid():
     # Units: mean pressure [Pa] as prescribed; gap [m] zero on the contact set and positive off it.
     assert p.mean() == pytest.approx(force / (lx * ly), rel=1e-10)
     assert np.all(result.gap[p > 0] == 0) and np.all(result.gap[p == 0] > 0)
-    # Hertz: contact area pi a^2 and peak 3P/(2 pi a^2), to 10 %: an 8-pixel radius resolves the edge to about
-    # half a pixel (6 % in area) and the peak to the pixel's average over the paraboloid's curvature.
-    assert result.area_fraction_corrected * lx * ly == pytest.approx(np.pi * a**2, rel=0.10)
-    assert result.max_pressure == pytest.approx(3 * force / (2 * np.pi * a**2), rel=0.10)
+    # Hertz: contact area pi a^2 and peak 3P/(2 pi a^2). An 8-pixel radius resolves the edge to about half a
+    # pixel (up to 12 % in area by the node count; the corrected area measured +1.9 %): allow 4 %, a margin of 2.
+    # The peak is a smooth field's value, discretisation error O((dx/a)^2) (measured +1.1e-3 here, +5.4e-4 at 12
+    # pixels and +4.9e-5 at 32 in the C++ tests): allow 3e-3, a margin of about 3. (Both were 10 %, which a
+    # kernel off by 1/(1 - nu^2) passed.) Now rejected: the modulus off by 1/(1 - nu^2) (peak +6.5 %, area
+    # -4.3 %) or by 1 % (peak +0.79 %, run once). A load off by 1 % is caught by the mean pressure above.
+    assert result.area_fraction_corrected * lx * ly == pytest.approx(np.pi * a**2, rel=0.04)
+    assert result.max_pressure == pytest.approx(3 * force / (2 * np.pi * a**2), rel=3e-3)
 
 
 def test_separation_control_gives_the_load_back():
