@@ -92,12 +92,10 @@ std::string_view without_word(Effect effect) {
 }  // namespace
 
 std::string ignored_effects_note(const std::vector<Effect>& ignored) {
-  std::string words, names;
-  for (const Effect e : ignored) {
+  std::string words;
+  for (const Effect e : ignored)
     words += (words.empty() ? "" : ", ") + std::string(without_word(e));
-    names += (names.empty() ? "" : ", ") + std::string(effect_name(e));
-  }
-  return ignored.empty() ? "" : words + ": ignores " + names;
+  return ignored.empty() ? "" : words + ": ignores " + effects_text(ignored);
 }
 
 }  // namespace contactbench

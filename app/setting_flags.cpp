@@ -27,6 +27,8 @@ void SettingFlags::add_to(CLI::App& command) {
     if (spec.kind == SettingKind::number) option->check(CLI::Number);
     if (spec.kind == SettingKind::integer) option->check(CLI::TypeValidator<std::int64_t>("INTEGER"));
     if (spec.kind == SettingKind::text) option->check(refuse_empty_output_name);  // a text is a file prefix
+    // A boolean given a value (a row with a flag but no switch) is read as true or false, nothing else.
+    if (spec.kind == SettingKind::boolean) option->check(CLI::IsMember({"true", "false"}));
   }
 }
 

@@ -20,7 +20,7 @@ class SettingFlags {
  public:
   explicit SettingFlags(std::vector<SettingSpec> specs);
 
-  // Adds every flag to `command`; `defaults_text` may add to a row's help (e.g. "default: 1e-8").
+  // Adds every flag to `command`, its help the row's meaning, scene key and default.
   void add_to(CLI::App& command);
   // The given values as keys of `table` (e.g. the scene's methods.bem).
   void insert_into(toml::table& table) const;

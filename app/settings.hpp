@@ -124,10 +124,6 @@ std::function<bool(const SettingValue&)> in_range(double low, double high);
 std::string kind_text(SettingKind kind);
 // "1e-08", "true", "\"single\"": a value as a scene file writes it.
 std::string value_text(const SettingValue& value);
-// Whether `value` has the row's kind and passes its range; the reason when not.
-std::optional<std::string> value_problem(SettingKind kind, const std::vector<std::string>& choices,
-                                         const std::function<bool(const SettingValue&)>& ok,
-                                         const SettingValue& value);
 
 // The row with this key, or null.
 template <class Owner>

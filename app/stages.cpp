@@ -7,8 +7,6 @@
 
 #include "contactbench/app/stage_runner.hpp"
 #include "contactbench/core/generation.hpp"
-#include "contactbench/core/labelling.hpp"
-#include "contactbench/core/topography_io.hpp"
 #include "contactbench/theories/plateau_model.hpp"
 
 namespace contactbench {
