@@ -55,6 +55,9 @@ class ActiveSetSolver {
   ActiveSetOutcome solve(const ActiveSetProblem& problem, double tolerance, Index max_iterations, bool warm,
                          std::vector<T>& pressure, std::vector<T>& displacement_minus_heights,
                          const std::function<void()>& between);
+  // Replaces the heights the next solves press against (the adhesive solver's outer iterations; the
+  // coarse levels of the nested start follow).
+  void set_heights(const std::vector<T>& heights);
 
  private:
   struct Impl;

@@ -148,13 +148,19 @@ void ActiveSet<T>::make_coarse_level() {
   Grid coarse_grid = grid_;
   coarse_grid.nx = nx / 2;
   coarse_grid.ny = ny / 2;
-  std::vector<T> coarse_heights(static_cast<std::size_t>(coarse_grid.points()));
+  coarse_ = std::make_unique<ActiveSet<T>>(coarse_grid, coarse_heights(coarse_grid), modulus_, threads_);
+}
+
+template <class T>
+std::vector<T> ActiveSet<T>::coarse_heights(const Grid& coarse_grid) const {
+  const Index nx = grid_.nx;
+  std::vector<T> coarse(static_cast<std::size_t>(coarse_grid.points()));
   auto at = [&](Index y, Index x) { return static_cast<double>(h_[static_cast<std::size_t>(y * nx + x)]); };
   for (Index y = 0; y < coarse_grid.ny; ++y)
     for (Index x = 0; x < coarse_grid.nx; ++x)
-      coarse_heights[static_cast<std::size_t>(y * coarse_grid.nx + x)] = static_cast<T>(
+      coarse[static_cast<std::size_t>(y * coarse_grid.nx + x)] = static_cast<T>(
           0.25 * (at(2 * y, 2 * x) + at(2 * y, 2 * x + 1) + at(2 * y + 1, 2 * x) + at(2 * y + 1, 2 * x + 1)));
-  coarse_ = std::make_unique<ActiveSet<T>>(coarse_grid, std::move(coarse_heights), modulus_, threads_);
+  return coarse;
 }
 
 // The starting sets. Cold: {p - k g > 0}, k the stiffness of one pixel, g the gap of the nested start
@@ -223,5 +229,7 @@ template ActiveSetOutcome ActiveSet<float>::nested_start(const ActiveSetProblem&
                                                          const std::function<void()>& between);
 template void ActiveSet<double>::make_coarse_level();
 template void ActiveSet<float>::make_coarse_level();
+template std::vector<double> ActiveSet<double>::coarse_heights(const Grid&) const;
+template std::vector<float> ActiveSet<float>::coarse_heights(const Grid&) const;
 
 }  // namespace contactbench

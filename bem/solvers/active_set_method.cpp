@@ -24,14 +24,8 @@ ActiveSet<T>::ActiveSet(const Grid& grid, std::vector<T> heights, Real modulus, 
       in_(n_),
       plastic_(n_),
       sums_(static_cast<std::size_t>(std::max({operator_->threads(), filter_->threads(), threads}))) {
-  const auto [low, high] = std::minmax_element(h_.begin(), h_.end());
-  highest_ = static_cast<double>(*high);
-  // The round-off of a gap d - h + u: a few epsilons of T of the largest height.
-  gap_round_off_ = 8 * static_cast<double>(std::numeric_limits<T>::epsilon()) *
-                   std::max(std::abs(static_cast<double>(*low)), std::abs(highest_));
-  height_range_ = highest_ - static_cast<double>(*low);
-  if (!(height_range_ > 0)) height_range_ = 1;  // a flat surface: relative to 1 m, as ContactSolution
-  make_coarse_level();                          // the whole hierarchy, with its FFT plans, made once
+  measure_heights();
+  make_coarse_level();  // the whole hierarchy, with its FFT plans, made once
   for (int thread = 0; thread < team(); ++thread)
     window_rows_.emplace_back(grid_.nx, grid_.ny, extension_radius(), grid_.periodic);
   changes_.resize(sums_.size());
@@ -41,6 +35,26 @@ ActiveSet<T>::ActiveSet(const Grid& grid, std::vector<T> heights, Real modulus, 
   std::vector<T> unit(n_, T(0));
   unit[0] = T(1);
   operator_->apply(unit.data(), response_.data());
+}
+
+template <class T>
+void ActiveSet<T>::measure_heights() {
+  const auto [low, high] = std::minmax_element(h_.begin(), h_.end());
+  highest_ = static_cast<double>(*high);
+  // The round-off of a gap d - h + u: a few epsilons of T of the largest height.
+  gap_round_off_ = 8 * static_cast<double>(std::numeric_limits<T>::epsilon()) *
+                   std::max(std::abs(static_cast<double>(*low)), std::abs(highest_));
+  height_range_ = highest_ - static_cast<double>(*low);
+  if (!(height_range_ > 0)) height_range_ = 1;  // a flat surface: relative to 1 m, as ContactSolution
+}
+
+template <class T>
+void ActiveSet<T>::set_heights(const std::vector<T>& heights) {
+  h_ = heights;
+  measure_heights();
+  displacement_current_ = displacement_fresh_ = false;
+  weights_current_ = false;
+  if (coarse_) coarse_->set_heights(coarse_heights(coarse_->grid_));
 }
 
 template <class T>
@@ -247,6 +261,11 @@ ActiveSetOutcome ActiveSetSolver<T>::solve(const ActiveSetProblem& problem, doub
       impl_->solver.solve(problem, tolerance, max_iterations, warm, pressure, between);
   impl_->solver.displacement_minus_heights(displacement_minus_heights);
   return outcome;
+}
+
+template <class T>
+void ActiveSetSolver<T>::set_heights(const std::vector<T>& heights) {
+  impl_->solver.set_heights(heights);
 }
 
 template class ActiveSetSolver<double>;

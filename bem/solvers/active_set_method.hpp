@@ -78,6 +78,8 @@ class ActiveSet {
   ActiveSetOutcome solve(const ActiveSetProblem& problem, double tolerance, Index max_iterations, bool warm,
                          std::vector<T>& p, const std::function<void()>& between);
   void displacement_minus_heights(std::vector<T>& out);
+  // New heights of the same grid; the coarse levels follow (active_set_coarse_start.cpp).
+  void set_heights(const std::vector<T>& heights);
 
  private:
   // The largest |gap| accepted on the contact set: the tolerance times the approach of the highest point,
@@ -193,6 +195,10 @@ class ActiveSet {
   ActiveSetOutcome nested_start(const ActiveSetProblem& problem, std::vector<T>& p,
                                 const std::function<void()>& between);
   void make_coarse_level();
+  // The heights averaged over 2 x 2 blocks: the next coarser level's.
+  std::vector<T> coarse_heights(const Grid& coarse_grid) const;
+  // highest_, height_range_ and gap_round_off_ of h_.
+  void measure_heights();
 
   // u = G p, made afresh, with per-point work riding along: on_input(k) before p[k] goes into the transform
   // (it may change p[k]), on_output(k, sums) once u[k] is written. Returns the combined sums.

@@ -34,6 +34,12 @@ SolveOutcome ActiveSetContactSolver<T>::solve_separation(double separation, doub
 }
 
 template <class T>
+void ActiveSetContactSolver<T>::set_heights(const HeightMap& heights) {
+  PressureState<T>::set_heights(heights);
+  method_.set_heights(this->h_);
+}
+
+template <class T>
 void ActiveSetContactSolver<T>::impose_load(double, double) {
   throw Error("active_set: impose_load is never needed (a capped load is one solve)");
 }

@@ -22,6 +22,8 @@ class ActiveSetContactSolver final : public PressureState<T> {
   bool caps_load_control() const override { return true; }
   SolveOutcome solve_separation(double separation, double hardness, double tolerance,
                                 Index max_iterations) override;
+  // The method's own copy and its coarse levels follow.
+  void set_heights(const HeightMap& heights) override;
   // Never needed: a capped load is one solve (caps_load_control).
   void impose_load(double mean_pressure, double hardness) override;
 

@@ -27,6 +27,10 @@ class ContactSolver {
   virtual void forget() = 0;
   // Called before every iteration (BemSolverOptions::between_iterations; may be empty, may throw).
   void set_between_iterations(std::function<void()> hook) { between_iterations_ = std::move(hook); }
+  // Replaces the heights (ny x nx) the next solves press against, keeping the last pressure as the warm
+  // start: the adhesive solver (bem/adhesive_solver.hpp) presses the contact against the heights less the
+  // displacement of the attraction, which changes between its outer iterations.
+  virtual void set_heights(const HeightMap& heights) = 0;
   // Whether a solve would start from a previous solution.
   virtual bool warm() const = 0;
   // The next solve starts from this pressure [Pa] (ny x nx), as from a previous solution.

@@ -22,6 +22,13 @@ PressureState<T>::PressureState(const Surface& centred, int threads)
 }
 
 template <class T>
+void PressureState<T>::set_heights(const HeightMap& heights) {
+  for (Index i = 0; i < n_; ++i)
+    h_[static_cast<std::size_t>(i)] = static_cast<T>(heights.data()[i]);
+  height_range_ = heights.maxCoeff() - heights.minCoeff();
+}
+
+template <class T>
 void PressureState<T>::forget() {
   warm_ = false;
   loads_solved_ = 0;

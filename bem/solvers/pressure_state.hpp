@@ -23,6 +23,7 @@ class PressureState : public ContactSolver {
   void forget() override;
   bool warm() const override { return warm_; }
   void start_from(const HeightMap& pressure) override;
+  void set_heights(const HeightMap& heights) override;
   double write(ContactSolution& s) const override;
   double max_pressure() const override;
   double separation() const override { return separation_; }

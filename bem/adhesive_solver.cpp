@@ -1,0 +1,215 @@
+#include "contactbench/bem/adhesive_solver.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "contactbench/bem/half_space.hpp"
+#include "contactbench/bem/solvers/contact_solver.hpp"
+#include "contactbench/core/error.hpp"
+
+namespace contactbench {
+
+namespace {
+
+// The smallest fraction of the new attraction an exponential outer iteration takes (after halvings).
+constexpr Real kSmallestRelaxation = 1.0 / 256;
+
+}  // namespace
+
+AdhesiveBemSolver::AdhesiveBemSolver(const Surface& surface, Real modulus, const AdhesionLaw& law,
+                                     AdhesiveSolverOptions options, int threads)
+    : surface_(surface.centred()),
+      modulus_(modulus),
+      law_(law),
+      options_(std::move(options)),
+      threads_(threads) {
+  validate_adhesion_law(law_, "adhesive BEM");
+  const BemSolverOptions& contact = options_.contact;
+  if (!(contact.tolerance > 0) || contact.max_iterations < 1 || options_.max_outer_iterations < 1)
+    throw Error("adhesive BEM: tolerance must be > 0, max_iterations and max_outer_iterations >= 1");
+  if (contact.hardness)
+    throw Error(
+        "adhesive BEM: adhesion together with a hardness is not modelled (the plastic cap and the "
+        "attraction are not solved together); accepted: one of the two");
+  if (contact.single_precision && contact.tolerance < kSinglePrecisionTolerance)
+    throw Error("adhesive BEM: single precision needs a tolerance >= 1e-6");
+  engine_ = solver_entry(contact.solver).make(surface_, modulus, threads, contact.single_precision);
+  engine_->set_between_iterations(contact.between_iterations);
+  half_space_ = make_half_space(surface_.grid(), modulus, threads);
+  const HeightMap& h = surface_.heights();
+  attraction_ = HeightMap::Zero(h.rows(), h.cols());
+  lift_ = attraction_;
+  effective_heights_ = h;
+  HeightMap unit = attraction_;
+  unit(0, 0) = 1;
+  half_space_->apply(unit, lift_);
+  self_response_ = lift_(0, 0);
+  lift_.setZero();
+}
+
+AdhesiveBemSolver::~AdhesiveBemSolver() = default;
+
+void AdhesiveBemSolver::forget() {
+  warm_ = false;
+  engine_->forget();
+}
+
+const AdhesiveSolution& AdhesiveBemSolver::solve_for_separation(Real separation) {
+  if (!std::isfinite(separation))
+    throw Error("adhesive BEM: the separation must be finite, got " + std::to_string(separation));
+  return solve_with(Control::separation, separation);
+}
+
+const AdhesiveSolution& AdhesiveBemSolver::solve(Real mean_pressure) {
+  if (!std::isfinite(mean_pressure))
+    throw Error("adhesive BEM: the mean pressure must be finite, got " + std::to_string(mean_pressure));
+  return solve_with(Control::load, mean_pressure);
+}
+
+Real AdhesiveBemSolver::update_attraction(const ContactSolution& contact) {
+  const HeightMap& gap = contact.gap;
+  const Index n = gap.size();
+  if (law_.model == AdhesionModel::dugdale) {
+    Index changed = 0;
+    const Real reach = law_.reach();
+    // A point outside contact is in the zone when its gap with half of its own attraction is below δc: the
+    // same test whichever side it is on now (in, its gap holds all of its own pull, s = G_self σ0; out,
+    // none), so a point cannot stay on either side only because it was there. Decided on the gap as it is, a
+    // band of about s / (dg/dr) at the zone's edge keeps its last state, and the force carries that history:
+    // 4 % of the pull-off at λ = 1, 40 pixels across the contact (tests/test_adhesive_bem.cpp).
+    const Real half_own_pull = self_response_ * law_.stress / 2;
+    for (Index i = 0; i < n; ++i) {
+      const Real own = attraction_.data()[i] > 0 ? half_own_pull : -half_own_pull;
+      const bool in = contact.pressure.data()[i] > 0 || gap.data()[i] + own < reach;
+      const Real a = in ? law_.stress : 0;
+      changed += a != attraction_.data()[i];
+      attraction_.data()[i] = a;
+    }
+    return static_cast<Real>(changed);
+  }
+  Real change = 0;
+  const Real peak = law_.peak_stress();
+  for (Index i = 0; i < n; ++i)
+    change = std::max(change, std::abs(law_.attraction(gap.data()[i]) - attraction_.data()[i]) / peak);
+  // Under-relaxed where the plain fixed point overshoots (the change grew), relaxed again while it falls.
+  if (last_change_ > 0 && change > last_change_)
+    relaxation_ = std::max(relaxation_ / 2, kSmallestRelaxation);
+  else if (last_change_ > 0)
+    relaxation_ = std::min(relaxation_ * 1.25, 1.0);
+  last_change_ = change;
+  for (Index i = 0; i < n; ++i) {
+    Real& a = attraction_.data()[i];
+    a += relaxation_ * (law_.attraction(gap.data()[i]) - a);
+  }
+  return change;
+}
+
+const AdhesiveSolution& AdhesiveBemSolver::solve_with(Control control, Real value) {
+  const auto start = std::chrono::steady_clock::now();
+  const BemSolverOptions& options = options_.contact;
+  const HeightMap& h = surface_.heights();
+  const Real infinite = std::numeric_limits<Real>::infinity();
+  if (!warm_) {
+    attraction_.setZero();
+    engine_->forget();
+  }
+  relaxation_ = 1;
+  last_change_ = 0;
+  AdhesiveSolution& s = solution_;
+  s = AdhesiveSolution{};
+  ContactSolution contact;
+  HeightMap used;  // the attraction of the last contact solve
+  bool contact_converged = true, settled = false;
+  for (Index outer = 0; outer < options_.max_outer_iterations && !settled; ++outer) {
+    half_space_->apply(attraction_, lift_);
+    effective_heights_ = h + lift_;
+    engine_->set_heights(effective_heights_);
+    used = attraction_;
+    SolveOutcome o;
+    o.converged = true;
+    if (control == Control::load) {
+      const Real repulsive = value + attraction_.mean();
+      if (!(repulsive > 0)) {  // the attraction of this state cannot hold the load with any contact
+        s.separated = true;
+        break;
+      }
+      o = engine_->solve_load(repulsive, infinite, options.tolerance, options.max_iterations, false);
+      engine_->write(contact);
+      contact.separation = engine_->separation();
+    } else if (value >= effective_heights_.maxCoeff()) {
+      // The flat above every point of the lifted surface: no contact, p = 0 meets every condition.
+      contact.pressure = HeightMap::Zero(h.rows(), h.cols());
+      contact.gap = value - effective_heights_.array();
+      contact.separation = value;
+      contact.residual = 0;
+      engine_->forget();
+    } else {
+      o = engine_->solve_separation(value, infinite, options.tolerance, options.max_iterations);
+      engine_->write(contact);
+      contact.separation = value;
+    }
+    s.iterations += o.iterations;
+    ++s.outer_iterations;
+    contact_converged = o.converged && contact.residual <= residual_bound(options.tolerance);
+    s.attraction_change = update_attraction(contact);
+    settled = law_.model == AdhesionModel::dugdale ? s.attraction_change == 0
+                                                   : s.attraction_change <= residual_bound(options.tolerance);
+  }
+  warm_ = !s.separated;
+  if (s.outer_iterations > 0 && contact.pressure.size() > 0) {
+    s.traction = contact.pressure - used;
+    s.gap = contact.gap;
+    s.separation = contact.separation;
+    s.residual = contact.residual;
+    s.repulsive_pressure = contact.pressure.mean();
+    s.adhesive_pressure = used.mean();
+    s.mean_pressure = s.repulsive_pressure - s.adhesive_pressure;
+    s.mean_gap = contact.gap.mean();
+    describe(contact);
+  }
+  s.converged = settled && contact_converged && !s.separated;
+  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!s.converged && !s.separated && options.warning) {
+    std::ostringstream text;
+    text << "adhesive BEM did not converge at " << (control == Control::load ? "P/A0 = " : "separation = ")
+         << value << " after " << s.outer_iterations << " outer iterations (last change of the attraction "
+         << s.attraction_change << "); the result is marked converged = false";
+    options.warning(text.str());
+  }
+  return s;
+}
+
+void AdhesiveBemSolver::describe(const ContactSolution& contact) {
+  AdhesiveSolution& s = solution_;
+  const Grid& grid = surface_.grid();
+  const Index nx = grid.nx, ny = grid.ny;
+  const Real reach = law_.reach();
+  auto in_contact = [&](Index y, Index x) { return contact.pressure(y, x) > 0; };
+  for (Index y = 0; y < ny; ++y)
+    for (Index x = 0; x < nx; ++x) {
+      if (!in_contact(y, x)) {
+        s.attractive_points += contact.gap(y, x) < reach;
+        continue;
+      }
+      ++s.contact_points;
+      // A neighbour out of contact (off the grid counts as out when the surface does not repeat).
+      bool edge = false;
+      const Index ys[2] = {y - 1, y + 1}, xs[2] = {x - 1, x + 1};
+      for (int k = 0; k < 2 && !edge; ++k) {
+        Index yy = ys[k], xx = xs[k];
+        if (grid.periodic) {
+          yy = (yy + ny) % ny;
+          xx = (xx + nx) % nx;
+        }
+        edge = (yy < 0 || yy >= ny || !in_contact(yy, x)) || (xx < 0 || xx >= nx || !in_contact(y, xx));
+      }
+      s.edge_points += edge;
+    }
+  s.zone_pixels = s.edge_points > 0
+                      ? static_cast<Real>(s.attractive_points) / static_cast<Real>(s.edge_points)
+                      : std::numeric_limits<Real>::quiet_NaN();
+}
+
+}  // namespace contactbench

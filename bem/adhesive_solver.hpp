@@ -1,0 +1,106 @@
+// The adhesive boundary-element ground truth: a rough rigid surface pressed against (or pulled off) an
+// elastic half-space whose surface is also attracted by the law of core/adhesion_law.hpp (docs/theory.md
+// section 9, docs/solvers.md "Adhesion"). The traction is t = p - a(g): p >= 0 the repulsive contact pressure
+// (nonzero only where the gap g is 0), a(g) >= 0 the attraction at the gap.
+//
+// Method: a fixed point on the attraction around any non-adhesive solver of the registry. With a(x) frozen,
+// the gap g = d - h + G(p - a) = d - (h + G a) + G p is that of a non-adhesive contact with the heights
+// h + G a (the attraction lifts the elastic surface towards the rigid one) and a repulsive load of P +
+// mean(a); so each outer iteration solves that contact with the chosen solver (warm-started from the last)
+// and sets a from its gap. Maugis–Dugdale: a = σ0 where g < δc, converged when no point changes side (the
+// cohesive zone is the outer iteration's unknown, as in the Dugdale iterations of the literature, e.g.
+// Bazrafshan, de Rooij and Schipper 2017); exponential: converged when the attraction changes by less than
+// the tolerance of its peak, with under-relaxation where the plain fixed point overshoots.
+//
+// Separation control follows a path: approach (falling separations) and retract (rising ones), each solve
+// starting from the last state, so the jumps into and out of contact happen where they happen physically.
+// Load control may ask for a tensile (negative) load; when no state in contact carries it the solution says
+// the surfaces separate.
+#pragma once
+
+#include <memory>
+
+#include "contactbench/bem/bem_solver.hpp"
+#include "contactbench/core/adhesion_law.hpp"
+
+namespace contactbench {
+
+class ContactSolver;
+class HalfSpace;
+
+struct AdhesiveSolution {
+  HeightMap traction;           // t = p - a [Pa], compressive positive
+  HeightMap gap;                // [m], 0 on the repulsive contact set
+  Real mean_pressure = 0;       // P/A0 = mean(t) [Pa]: the net load, negative when tensile
+  Real repulsive_pressure = 0;  // mean(p) [Pa]
+  Real adhesive_pressure = 0;   // mean(a) [Pa], >= 0: the pull of the attraction
+  Real mean_gap = 0;            // [m]
+  Real separation = 0;          // d: the flat's height above the mean plane of the heights [m]
+  Index contact_points = 0;     // g = 0 (the repulsive contact area)
+  // Points outside contact inside the attractive zone: g < δc (Dugdale) or g < ρ (exponential).
+  Index attractive_points = 0;
+  // Points on the edge of the contact set (a contact point with a neighbour out of contact), and the width
+  // of the attractive zone there in pixels: attractive_points / edge_points. The zone must be resolved
+  // (several pixels) for the answer to mean what the law says (docs/solvers.md "Adhesion").
+  Index edge_points = 0;
+  Real zone_pixels = 0;
+  Index iterations = 0;        // of the contact solves, summed over the outer iterations
+  Index outer_iterations = 0;  // contact solves made
+  Real residual = 0;           // of the last contact solve (BemSolver::solution().residual)
+  Real attraction_change = 0;  // the last outer change: points that changed side (Dugdale), max |Δa|/peak
+  bool converged = false;
+  // Load control only: no state in contact carries the load (below the pull-off force); the fields are those
+  // of the last attempt.
+  bool separated = false;
+  double seconds = 0;
+};
+
+struct AdhesiveSolverOptions {
+  BemSolverOptions contact;  // of each contact solve (the solver, tolerance, precision)
+  // Outer iterations before the solve is marked not converged.
+  Index max_outer_iterations = 500;
+};
+
+class AdhesiveBemSolver {
+ public:
+  // The surface's own periodicity chooses the operator; modulus is E* [Pa].
+  AdhesiveBemSolver(const Surface& surface, Real modulus, const AdhesionLaw& law,
+                    AdhesiveSolverOptions options = {}, int threads = 1);
+  ~AdhesiveBemSolver();
+
+  // The flat at `separation` [m] above the mean plane of the heights (periodic: the mean gap of the
+  // non-adhesive problem's convention, BemSolver::solve_for_separation), starting from the last state.
+  const AdhesiveSolution& solve_for_separation(Real separation);
+  // The net mean pressure P/A0 [Pa], which may be negative, starting from the last state.
+  const AdhesiveSolution& solve(Real mean_pressure);
+  // The next solve starts with no attraction and no contact (a fresh approach).
+  void forget();
+
+  const AdhesiveSolution& solution() const { return solution_; }
+  const AdhesionLaw& law() const { return law_; }
+
+ private:
+  enum class Control { separation, load };
+  const AdhesiveSolution& solve_with(Control control, Real value);
+  // a from the gap (and, for Dugdale, whether each point is in contact); returns the change (points that
+  // changed side, or max |Δa| / peak) after relaxation.
+  Real update_attraction(const ContactSolution& contact);
+  void describe(const ContactSolution& contact);
+
+  Surface surface_;  // centred
+  Real modulus_;
+  AdhesionLaw law_;
+  AdhesiveSolverOptions options_;
+  int threads_;
+  std::unique_ptr<ContactSolver> engine_;
+  std::unique_ptr<HalfSpace> half_space_;
+  HeightMap attraction_, lift_, effective_heights_;
+  // The displacement of a pixel under a unit pressure on itself [m/Pa] (the Dugdale zone's rule).
+  Real self_response_ = 0;
+  Real relaxation_ = 1;  // exponential law: the fraction of the new attraction taken
+  Real last_change_ = 0;
+  bool warm_ = false;
+  AdhesiveSolution solution_;
+};
+
+}  // namespace contactbench
