@@ -235,6 +235,7 @@ class DistributedRunner final : public StageRunner {
     // (app/methods/bem_settings.cpp) it does not take.
     std::vector<std::string> missing;
     if (stage.hardness) missing.push_back("a hardness (interface.hardness)");
+    if (stage.adhesion) missing.push_back("adhesion (interface.adhesion)");
     for (const std::string& setting :
          undistributed_settings(bem_settings(), stage.settings, default_settings(bem_settings())))
       missing.push_back(setting);

@@ -11,12 +11,14 @@ std::string_view effect_name(Effect effect) {
   switch (effect) {
     case Effect::hardness:
       return "hardness";
+    case Effect::adhesion:
+      return "adhesion";
   }
   return "";
 }
 
 const std::vector<Effect>& known_effects() {
-  static const std::vector<Effect> effects{Effect::hardness};
+  static const std::vector<Effect> effects{Effect::hardness, Effect::adhesion};
   return effects;
 }
 
@@ -37,6 +39,8 @@ bool InterfaceSpec::has(Effect effect) const {
   switch (effect) {
     case Effect::hardness:
       return hardness.has_value();
+    case Effect::adhesion:
+      return adhesion.has_value();
   }
   return false;
 }
@@ -55,13 +59,44 @@ InterfaceSpec InterfaceSpec::without(const std::vector<Effect>& ignored) const {
       case Effect::hardness:
         applied.hardness.reset();
         break;
+      case Effect::adhesion:
+        applied.adhesion.reset();
+        break;
     }
   return applied;
 }
 
+namespace {
+
+constexpr std::string_view kAdhesionTables =
+    "adhesion = { model = \"dugdale\", work = <w [J/m^2]>, stress = <sigma0 [Pa]> } or { model = "
+    "\"exponential\", work = <w [J/m^2]>, range = <rho [m]> }";
+
+// interface.adhesion: the law's model and its two numbers, each checked and named on its own.
+std::optional<AdhesionLaw> read_adhesion(const Section& interface) {
+  const toml::table* table = interface.subtable("adhesion", false, kAdhesionTables);
+  if (!table) return std::nullopt;
+  const Section s(*table, "interface.adhesion", interface.problems());
+  const std::optional<std::string> model = s.choice("model", {"dugdale", "exponential"});
+  if (!model) {
+    if (!s.has("model")) s.missing("model", kAdhesionTables);
+    return std::nullopt;
+  }
+  const bool dugdale = *model == "dugdale";
+  s.reject_unknown({"model", "work", dugdale ? "stress" : "range"});
+  const std::optional<Real> work = s.number("work", true, positive("[J/m^2]"));
+  const std::optional<Real> second =
+      dugdale ? s.number("stress", true, positive("[Pa]")) : s.number("range", true, positive("[m]"));
+  if (!work || !second) return std::nullopt;
+  return dugdale ? AdhesionLaw::dugdale(*work, *second) : AdhesionLaw::exponential(*work, *second);
+}
+
+}  // namespace
+
 InterfaceSpec read_interface(const Section& root) {
   InterfaceSpec spec;
-  const toml::table* table = root.subtable("interface", false, "a table of effects: hardness = <H [Pa]>");
+  const toml::table* table = root.subtable(
+      "interface", false, "a table of effects: hardness = <H [Pa]>, " + std::string(kAdhesionTables));
   if (!table) return spec;
   const Section s(*table, "interface", root.problems());
   std::vector<std::string_view> keys;
@@ -69,6 +104,7 @@ InterfaceSpec read_interface(const Section& root) {
     keys.push_back(effect_name(e));
   s.reject_unknown(keys);
   spec.hardness = s.number("hardness", false, positive("[Pa]"));
+  spec.adhesion = read_adhesion(s);
   return spec;
 }
 
@@ -76,6 +112,15 @@ void write_interface(const InterfaceSpec& interface, SceneKeys& root) {
   if (interface.effects().empty()) return;
   SceneKeys& table = root.table("interface");
   if (interface.hardness) table.put("hardness", *interface.hardness);
+  if (const std::optional<AdhesionLaw>& law = interface.adhesion) {
+    SceneKeys& adhesion = table.table("adhesion");
+    adhesion.put("model", std::string(adhesion_model_name(law->model)));
+    adhesion.put("work", law->work);
+    if (law->model == AdhesionModel::dugdale)
+      adhesion.put("stress", law->stress);
+    else
+      adhesion.put("range", law->range);
+  }
 }
 
 namespace {
@@ -85,6 +130,8 @@ std::string_view without_word(Effect effect) {
   switch (effect) {
     case Effect::hardness:
       return "elastic";
+    case Effect::adhesion:
+      return "non-adhesive";
   }
   return "";
 }

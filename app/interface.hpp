@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "contactbench/core/adhesion_law.hpp"
 #include "contactbench/core/types.hpp"
 
 namespace contactbench {
@@ -20,6 +21,7 @@ struct SceneKeys;
 
 enum class Effect {
   hardness,  // a perfectly plastic pressure cap p <= H (docs/theory.md section 6)
+  adhesion,  // an attraction between the surfaces as a function of the gap (core/adhesion_law.hpp)
 };
 
 // The scene key of an effect ("hardness"), and every known effect in declaration order.
@@ -31,6 +33,9 @@ std::optional<Effect> effect_of(std::string_view name);
 
 struct InterfaceSpec {
   std::optional<Real> hardness;  // [Pa]: perfectly plastic pressure cap; absent: purely elastic
+  // adhesion = { model = "dugdale", work = w [J/m^2], stress = σ0 [Pa] } or { model = "exponential",
+  // work = w, range = ρ [m] }; absent: non-adhesive.
+  std::optional<AdhesionLaw> adhesion;
 
   bool has(Effect effect) const;
   std::vector<Effect> effects() const;  // those the scene calls for, in declaration order

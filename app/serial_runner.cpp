@@ -1,6 +1,7 @@
 // The stages in this process (app/stage_runner.hpp): every BEM option and the sweep as the libraries have
 // them, nothing refused.
 #include <chrono>
+#include <optional>
 #include <sstream>
 
 #include "contactbench/app/stage_runner.hpp"
@@ -29,7 +30,14 @@ class SerialRunner final : public StageRunner {
     BemSolverOptions solver_options = stage.settings.solver;
     solver_options.hardness = stage.hardness;  // absent: purely elastic
     solver_options.warning = [&](const std::string& text) { observer.warn(text); };
-    BemSolver solver(solved, estar, solver_options, context.threads);
+    // With an attraction, the adhesive solver around the same contact solver (bem/adhesive_solver.hpp).
+    std::optional<BemSolver> solver;
+    std::optional<AdhesiveBemSolver> adhesive;
+    if (stage.adhesion)
+      adhesive.emplace(solved, estar, *stage.adhesion, AdhesiveSolverOptions{.contact = solver_options},
+                       context.threads);
+    else
+      solver.emplace(solved, estar, solver_options, context.threads);
     std::map<int, Labeller> labellers;
     for (const int c : connectivities)
       labellers.emplace(c, Labeller(Topology::for_surface(c == 8 ? Connectivity::eight : Connectivity::four,
@@ -37,7 +45,14 @@ class SerialRunner final : public StageRunner {
                                     context.threads));
     SolvedLoads done;
     for (std::size_t k = 0; k < mean_pressures.size(); ++k) {
-      ContactSolution solution = solver.solve(mean_pressures[k]);
+      ContactSolution solution;
+      if (adhesive) {
+        const AdhesiveSolution& state = adhesive->solve(mean_pressures[k]);
+        solution = state.contact();
+        done.adhesive.push_back(state.adhesive());
+      } else {
+        solution = solver->solve(mean_pressures[k]);
+      }
       for (auto& [c, labeller] : labellers)
         done.statistics[c].push_back(contact_statistics(solution, labeller));
       if (!fields.empty()) {  // as each load is solved, so that a long run leaves what it has done

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "contactbench/bem/adhesive_solver.hpp"
 #include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
 #include "contactbench/core/surface.hpp"
@@ -24,8 +25,9 @@ struct StageContext;
 // Every load of a BEM stage on one grid: per load the solver's scalars (fields dropped) and the contact
 // statistics for each connectivity asked for.
 struct SolvedLoads {
-  std::vector<ContactSolution> solutions;
+  std::vector<ContactSolution> solutions;  // with an attraction: the repulsive pressure, the net load
   std::map<int, std::vector<ContactStatistics>> statistics;  // by connectivity
+  std::vector<AdhesiveLoad> adhesive;                        // with an attraction, per load
   std::size_t bytes_per_rank = 0;  // the largest memory one rank held; 0 when solved by one process
 };
 

@@ -64,13 +64,20 @@ std::string BemStage::name() const {
        << solver.tolerance;
   if (solver.single_precision) text << ", single precision";
   if (hardness) text << ", hardness " << *hardness << " Pa";
+  if (adhesion) {
+    text << ", adhesion " << adhesion_model_name(adhesion->model) << " w " << adhesion->work << " J/m^2";
+    if (adhesion->model == AdhesionModel::dugdale)
+      text << " sigma0 " << adhesion->stress << " Pa";
+    else
+      text << " rho " << adhesion->range << " m";
+  }
   if (settings.extrapolate) text << ", again on twice the points a side for the extrapolated area";
   text << ")";
   return text.str();
 }
 
 bool BemStage::operator==(const BemStage& other) const {
-  return periodic == other.periodic && hardness == other.hardness &&
+  return periodic == other.periodic && hardness == other.hardness && adhesion == other.adhesion &&
          same_settings(bem_settings(), SettingScope::solve, settings, other.settings);
 }
 
@@ -100,10 +107,12 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
   products.points = solved.grid().points();
   products.periodic = stage.periodic;
   products.hardness = stage.hardness;
+  products.adhesion = stage.adhesion;
   SolvedLoads loads = context.runner().solve_loads(stage, solved, estar, mean_pressures, connectivities,
                                                    stage.settings.fields, context);
   products.solutions = std::move(loads.solutions);
   products.statistics = std::move(loads.statistics);
+  products.adhesive = std::move(loads.adhesive);
   products.bytes_per_rank = loads.bytes_per_rank;
   if (stage.settings.extrapolate) {
     // The same surface on twice the points a side (the method's preflight refuses a non-periodic one):
@@ -115,6 +124,7 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
         context.runner().solve_loads(stage, fine, estar, mean_pressures, connectivities, "", context);
     products.fine_solutions = std::move(fine_loads.solutions);
     products.fine_statistics = std::move(fine_loads.statistics);
+    products.fine_adhesive = std::move(fine_loads.adhesive);
     products.bytes_per_rank = std::max(products.bytes_per_rank, fine_loads.bytes_per_rank);
   }
   products.seconds = seconds_since(start);

@@ -12,6 +12,7 @@
 
 #include "contactbench/app/methods/bem_settings.hpp"
 #include "contactbench/app/run_observer.hpp"
+#include "contactbench/bem/adhesive_solver.hpp"
 #include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
 #include "contactbench/bem/solver_registry.hpp"
@@ -43,8 +44,9 @@ struct SweepProducts {
 struct BemStage {
   BemSettings settings;
   bool periodic = true;
-  std::optional<Real> hardness;  // [Pa]: perfectly plastic pressure cap; absent = purely elastic
-  std::string name() const;      // e.g. "bem (active_set, periodic, tolerance 1e-08)"
+  std::optional<Real> hardness;         // [Pa]: perfectly plastic pressure cap; absent = purely elastic
+  std::optional<AdhesionLaw> adhesion;  // absent: non-adhesive (bem/adhesive_solver.hpp)
+  std::string name() const;             // e.g. "bem (active_set, periodic, tolerance 1e-08)"
   // Methods that ask for equal solves share one.
   bool operator==(const BemStage& other) const;
 };
@@ -57,8 +59,11 @@ struct BemProducts {
   Index points = 0;                                          // nodes of the grid solved on
   bool periodic = true;                                      // the boundary solved
   std::optional<Real> hardness;                              // the cap solved with [Pa]; none: elastic
+  std::optional<AdhesionLaw> adhesion;                       // the attraction solved with; none: without
+  std::vector<AdhesiveLoad> adhesive;                        // per load, with an attraction
   // With BemStage::extrapolate: the same loads solved on twice the points a side (fields dropped too).
   std::vector<ContactSolution> fine_solutions;
+  std::vector<AdhesiveLoad> fine_adhesive;
   std::map<int, std::vector<ContactStatistics>> fine_statistics;  // by connectivity
   Index fine_points = 0;
   // Run on several MPI ranks (app/distributed_stages.hpp): the largest memory one rank held for a solve

@@ -15,6 +15,9 @@ namespace {
 
 // The smallest fraction of the new attraction an exponential outer iteration takes (after halvings).
 constexpr Real kSmallestRelaxation = 1.0 / 256;
+// Dugdale: a point that changed side this often in one solve is cycling: the zone's edge crosses it. Three:
+// in, out and in again (a point that only enters or only leaves changes side once).
+constexpr unsigned char kFlipsToEdge = 3;
 
 }  // namespace
 
@@ -81,11 +84,14 @@ Real AdhesiveBemSolver::update_attraction(const ContactSolution& contact) {
     // 4 % of the pull-off at λ = 1, 40 pixels across the contact (tests/test_adhesive_bem.cpp).
     const Real half_own_pull = self_response_ * law_.stress / 2;
     for (Index i = 0; i < n; ++i) {
+      unsigned char& flipped = flips_[static_cast<std::size_t>(i)];
+      if (flipped >= kFlipsToEdge) continue;  // an edge point: half the stress, settled
       const Real own = attraction_.data()[i] > 0 ? half_own_pull : -half_own_pull;
       const bool in = contact.pressure.data()[i] > 0 || gap.data()[i] + own < reach;
       const Real a = in ? law_.stress : 0;
-      changed += a != attraction_.data()[i];
-      attraction_.data()[i] = a;
+      if (a == attraction_.data()[i]) continue;
+      ++changed;
+      attraction_.data()[i] = ++flipped >= kFlipsToEdge ? law_.stress / 2 : a;
     }
     return static_cast<Real>(changed);
   }
@@ -117,6 +123,7 @@ const AdhesiveSolution& AdhesiveBemSolver::solve_with(Control control, Real valu
   }
   relaxation_ = 1;
   last_change_ = 0;
+  flips_.assign(static_cast<std::size_t>(h.size()), 0);
   AdhesiveSolution& s = solution_;
   s = AdhesiveSolution{};
   ContactSolution contact;
@@ -160,6 +167,7 @@ const AdhesiveSolution& AdhesiveBemSolver::solve_with(Control control, Real valu
   warm_ = !s.separated;
   if (s.outer_iterations > 0 && contact.pressure.size() > 0) {
     s.traction = contact.pressure - used;
+    s.pressure = contact.pressure;
     s.gap = contact.gap;
     s.separation = contact.separation;
     s.residual = contact.residual;
@@ -178,6 +186,21 @@ const AdhesiveSolution& AdhesiveBemSolver::solve_with(Control control, Real valu
          << s.attraction_change << "); the result is marked converged = false";
     options.warning(text.str());
   }
+  return s;
+}
+
+ContactSolution AdhesiveSolution::contact() const {
+  ContactSolution s;
+  s.pressure = pressure;
+  s.gap = gap;
+  s.mean_pressure = mean_pressure;
+  s.separation = separation;
+  s.contact_points = contact_points;
+  s.iterations = iterations;
+  s.change = attraction_change;
+  s.residual = residual;
+  s.converged = converged;
+  s.seconds = seconds;
   return s;
 }
 

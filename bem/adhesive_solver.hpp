@@ -1,7 +1,7 @@
 // The adhesive boundary-element ground truth: a rough rigid surface pressed against (or pulled off) an
 // elastic half-space whose surface is also attracted by the law of core/adhesion_law.hpp (docs/theory.md
-// section 9, docs/solvers.md "Adhesion"). The traction is t = p - a(g): p >= 0 the repulsive contact pressure
-// (nonzero only where the gap g is 0), a(g) >= 0 the attraction at the gap.
+// section 10, docs/solvers.md "Adhesion"). The traction is t = p - a(g): p >= 0 the repulsive contact
+// pressure (nonzero only where the gap g is 0), a(g) >= 0 the attraction at the gap.
 //
 // Method: a fixed point on the attraction around any non-adhesive solver of the registry. With a(x) frozen,
 // the gap g = d - h + G(p - a) = d - (h + G a) + G p is that of a non-adhesive contact with the heights
@@ -28,8 +28,17 @@ namespace contactbench {
 class ContactSolver;
 class HalfSpace;
 
+// What an adhesive solve adds to the contact solution of the same load (the scene's columns).
+struct AdhesiveLoad {
+  Real adhesive_pressure = 0;  // mean(a) [Pa]
+  Index attractive_points = 0;
+  Real zone_pixels = 0;
+  Index outer_iterations = 0;
+};
+
 struct AdhesiveSolution {
   HeightMap traction;           // t = p - a [Pa], compressive positive
+  HeightMap pressure;           // p [Pa]: the repulsive part alone
   HeightMap gap;                // [m], 0 on the repulsive contact set
   Real mean_pressure = 0;       // P/A0 = mean(t) [Pa]: the net load, negative when tensile
   Real repulsive_pressure = 0;  // mean(p) [Pa]
@@ -53,6 +62,13 @@ struct AdhesiveSolution {
   // of the last attempt.
   bool separated = false;
   double seconds = 0;
+
+  // The contact solution of the same state: the repulsive pressure as its pressure (the contact set is
+  // where it is > 0), the net load as its mean pressure; and what the attraction adds.
+  ContactSolution contact() const;
+  AdhesiveLoad adhesive() const {
+    return {adhesive_pressure, attractive_points, zone_pixels, outer_iterations};
+  }
 };
 
 struct AdhesiveSolverOptions {
@@ -95,6 +111,10 @@ class AdhesiveBemSolver {
   std::unique_ptr<ContactSolver> engine_;
   std::unique_ptr<HalfSpace> half_space_;
   HeightMap attraction_, lift_, effective_heights_;
+  // Dugdale: how often each point changed side in this solve. A point that keeps changing side (two points
+  // pulling each other across the edge in turn, where the zone is barely resolved) is an edge point: the
+  // zone's edge crosses it, and it carries half the stress from then on (kFlipsToEdge, adhesive_solver.cpp).
+  std::vector<unsigned char> flips_;
   // The displacement of a pixel under a unit pressure on itself [m/Pa] (the Dugdale zone's rule).
   Real self_response_ = 0;
   Real relaxation_ = 1;  // exponential law: the fraction of the new attraction taken

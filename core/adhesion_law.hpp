@@ -1,4 +1,4 @@
-// The attraction between the surfaces as a function of their local gap g (docs/theory.md section 9): the
+// The attraction between the surfaces as a function of their local gap g (docs/theory.md section 10): the
 // traction an adhesive interface adds to the repulsive contact pressure, pulling the surfaces together. Two
 // laws, both with the work of adhesion w = Δγ [J/m^2] as the integral of the attraction over the gap:
 // - Maugis–Dugdale: a constant stress σ0 while g < δc = w/σ0, nothing beyond (Maugis 1992);

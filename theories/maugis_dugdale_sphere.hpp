@@ -1,6 +1,6 @@
 // One adhesive sphere: Maugis' solution (D. Maugis, J. Colloid Interface Sci. 150, 243, 1992) of a paraboloid
 // of radius R on an elastic half-space of contact modulus E* with a Dugdale attraction σ0 over a gap δc =
-// w/σ0 (docs/theory.md section 9), in the dimensionless form of Johnson and Greenwood (J. Colloid Interface
+// w/σ0 (docs/theory.md section 10), in the dimensionless form of Johnson and Greenwood (J. Colloid Interface
 // Sci. 192, 326, 1997) with K = 4E*/3:
 //   ā = a (K/(π w R^2))^(1/3),  P̄ = P/(π w R),  δ̄ = δ (K^2/(π^2 w^2 R))^(1/3),  λ = 2σ0 (R/(π w K^2))^(1/3),
 // m = c/a the outer radius of the attractive annulus over the contact radius, fixed by

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <sstream>
 
 #include "contactbench/app/methods/bem_settings.hpp"
 #include "contactbench/app/methods/method.hpp"
@@ -30,10 +31,43 @@ namespace {
 // inside the residual the default tolerance accepts (100 x 1e-8); far beyond it, it is lost.
 constexpr Real kFullContactResolution = 1e6;
 
+// The width of the attractive zone, in pixels at the contact edge, from which the adhesive BEM meets Maugis'
+// sphere to 3 % (tests/test_adhesive_bem.cpp: 8-13 pixels at λ = 1, 128^2; the radius is 1.3 % off there).
+constexpr Real kResolvedZonePixels = 5;
+
+// With an attraction: per load the pull of the attraction (mean a / E*, in the loads' unit: the repulsive
+// load is the load plus it), the attractive zone outside contact (its nodes / all), the zone's width in
+// pixels at the contact edge (bem/adhesive_solver.hpp: below a few pixels the law is not resolved) and the
+// outer iterations.
+void add_adhesive_columns(const BemProducts& products, Real estar, MethodCurve& curve) {
+  std::vector<Real> pull, zone, width, outer;
+  for (const AdhesiveLoad& load : products.adhesive) {
+    pull.push_back(load.adhesive_pressure / estar);
+    zone.push_back(static_cast<Real>(load.attractive_points) / static_cast<Real>(products.points));
+    width.push_back(load.zone_pixels);
+    outer.push_back(static_cast<Real>(load.outer_iterations));
+  }
+  curve.columns.emplace_back("adhesive_load", pull);
+  curve.columns.emplace_back("attractive_fraction", zone);
+  curve.columns.emplace_back("zone_pixels", width);
+  curve.columns.emplace_back("outer_iterations", outer);
+  // Whether the law is resolved: the narrowest zone of the curve against the width where the adhesive BEM
+  // meets Maugis' sphere to 3 % (tests/test_adhesive_bem.cpp).
+  const auto narrowest = std::min_element(width.begin(), width.end());
+  if (narrowest != width.end() && *narrowest < kResolvedZonePixels) {
+    std::ostringstream text;
+    text << "; the attractive zone at the contact edge is down to " << *narrowest
+         << " pixels wide, below the " << kResolvedZonePixels
+         << " that resolve the attraction's law (docs/solvers.md \"Adhesion\"): its range is not resolved "
+            "on this grid, and the answer is the grid's as much as the law's";
+    curve.parameters += text.str();
+  }
+}
+
 class BemMethod final : public Method {
  public:
   std::string_view name() const override { return "bem"; }
-  std::vector<Effect> models() const override { return {Effect::hardness}; }
+  std::vector<Effect> models() const override { return {Effect::hardness, Effect::adhesion}; }
   bool is_ground_truth() const override { return true; }
   std::string compared_area() const override {
     if (settings_.node_area)
@@ -77,6 +111,7 @@ class BemMethod final : public Method {
     copy_settings(bem_settings(), SettingScope::solve, settings_, stage.settings);
     stage.periodic = settings_.periodic.value_or(context.surface_periodic);
     stage.hardness = context.interface.hardness;  // absent, or ignored: purely elastic
+    stage.adhesion = context.interface.adhesion;  // absent, or ignored: non-adhesive
     return {
         .moments = false, .sweep = std::nullopt, .bem = stage, .bem_connectivity = settings_.connectivity};
   }
@@ -111,6 +146,12 @@ class BemMethod final : public Method {
                       "extrapolate = false, or refine to at most " + std::to_string(kMaxPointsASide / 2));
     }
     check_memory(check);
+    if (check.interface.hardness && check.interface.adhesion)
+      check.problems.add(0, "interface.adhesion",
+                         "the BEM does not solve adhesion and a hardness together (the plastic cap and the "
+                         "attraction are two fixed points it does not couple)",
+                         "one of the two, or ignore = [\"hardness\"] or [\"adhesion\"] in [methods." +
+                             std::string(name()) + "]");
     if (const std::optional<Real> hardness = check.interface.hardness) {
       // A mean pressure at or above H is full plastic contact: nothing to solve (bem/bem_solver.hpp).
       std::vector<std::string> refused;
@@ -161,7 +202,10 @@ class BemMethod final : public Method {
     if (settings_.node_area) curve.area_fraction = nodes;
     curve.area_fraction_nodes = nodes;
     curve.accepts_unconverged = settings_.allow_unconverged;
-    BemStage stage{.settings = settings_, .periodic = products.periodic, .hardness = products.hardness};
+    BemStage stage{.settings = settings_,
+                   .periodic = products.periodic,
+                   .hardness = products.hardness,
+                   .adhesion = products.adhesion};
     curve.parameters =
         "BEM " + stage.name().substr(4) +
         (settings_.extrapolate ? std::string(", perimeter-corrected area in area_fraction_corrected")
@@ -173,6 +217,7 @@ class BemMethod final : public Method {
                           std::to_string(products.points) + " and " + std::to_string(products.fine_points) +
                           " nodes, error estimate |extrapolated - corrected area of the finer grid| "
                           "(docs/theory.md section 9); spots and separation of the finer grid";
+    if (products.adhesion) add_adhesive_columns(products, in.scene.material.estar, curve);
     return curve;
   }
 
