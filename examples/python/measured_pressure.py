@@ -17,7 +17,7 @@ LOAD = 0.01  # P/(E* A0)
 path = pathlib.Path(__file__).resolve().parents[2] / "data" / "measured" / "matrix-3.txt"
 surface = cb.read_topography(path)  # sizes and units from the file's header; not periodic
 print(surface, f"Sq = {surface.rms_height:.3e} m")
-result = cb.BemSolver(surface, MODULUS, threads=2).solve(LOAD * MODULUS)
+result = cb.BemSolver(surface, MODULUS, threads=2).solve(LOAD)
 pressure = result.pressure  # [Pa], shape (ny, nx): rows are y, as the heights
 print(f"A/A0 = {result.area_fraction_corrected:.4f} (nodes {result.area_fraction:.4f}), {result.spots} spots, "
       f"max p = {result.max_pressure:.3e} Pa, {result.iterations} iterations, converged {result.converged}, "

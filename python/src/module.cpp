@@ -1,7 +1,8 @@
-// The Python module `contactbench` (issue 16): the C++ libraries as they are, no second implementation.
+// The compiled part `_contactbench` of the Python package `contactbench` (issue 16): the C++ libraries as
+// they are, no second implementation. python/contactbench/__init__.py imports it and re-exports its names.
 #include "bindings.hpp"
 
-PYBIND11_MODULE(contactbench, m) {
+PYBIND11_MODULE(_contactbench, m) {
   m.doc() =
       "contactbench: rough-surface contact, cheap models against a boundary-element ground truth.\n\n"
       "SI units everywhere: lengths [m], pressures and moduli [Pa], wavevectors [1/m]. Loads named `load(s)` "
