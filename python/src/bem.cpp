@@ -269,12 +269,12 @@ void register_bem(py::module_& m) {
               if (!(std::isfinite(loads[k]) && loads[k] >= 0 && (k == 0 || loads[k] >= loads[k - 1])))
                 throw Error("loads: every load P/(E* A0) must be finite, >= 0 and ascending; load " +
                             std::to_string(k) + " is " + formats::format_real(loads[k]));
-            py::list results;
+            std::vector<BemResult> results;
             for (const Real load : loads) {
-              results.append(unlocked([&] { return s.solve(load * s.modulus()); }));
+              results.push_back(unlocked([&] { return s.solve(load * s.modulus()); }));
               check_signals();  // and between loads
             }
-            return results;
+            return results;  // a list of BemResult
           },
           py::arg("loads"),
           "Solves each load P/(E* A0) (ascending), like `contactbench bem --loads`: a list of BemResult. "
