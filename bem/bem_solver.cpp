@@ -10,6 +10,7 @@
 #include "contactbench/bem/solvers/hardness_search.hpp"
 #include "contactbench/bem/solvers/load_stepping.hpp"
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/formats/text_values.hpp"
 
 namespace contactbench {
 
@@ -19,11 +20,12 @@ BemSolver::BemSolver(const Surface& surface, Real modulus, BemSolverOptions opti
     throw Error("Polonsky-Keer: tolerance must be > 0 and max_iterations >= 1");
   if (options_.hardness && !(std::isfinite(*options_.hardness) && *options_.hardness > 0))
     throw Error("Polonsky-Keer: the hardness must be finite and > 0 Pa, got " +
-                std::to_string(*options_.hardness));
+                formats::format_real(*options_.hardness));
   if (options_.single_precision && options_.tolerance < kSinglePrecisionTolerance)
     throw Error("Polonsky-Keer: single precision cannot reach a relative pressure change of " +
-                std::to_string(options_.tolerance) + " (float resolves about 1e-7); use a tolerance >= " +
-                std::to_string(kSinglePrecisionTolerance) + " or double precision");
+                formats::format_real(options_.tolerance) +
+                " (float resolves about 1e-7); use a tolerance >= " +
+                formats::format_real(kSinglePrecisionTolerance) + " or double precision");
   engine_ = solver_entry(options_.solver).make(surface_, modulus, threads, options_.single_precision);
   engine_->set_between_iterations(options_.between_iterations);
 }
@@ -53,10 +55,10 @@ bool residual_settled(const ContactSolution& s, const BemSolverOptions& options)
 const ContactSolution& BemSolver::solve(Real mean_pressure) {
   if (!(std::isfinite(mean_pressure) && mean_pressure >= 0))
     throw Error("Polonsky-Keer: the mean pressure must be finite and >= 0 Pa, got " +
-                std::to_string(mean_pressure));
+                formats::format_real(mean_pressure));
   if (options_.hardness && mean_pressure >= *options_.hardness)
-    throw Error("Polonsky-Keer: the mean pressure " + std::to_string(mean_pressure) +
-                " Pa is at or above the hardness " + std::to_string(*options_.hardness) +
+    throw Error("Polonsky-Keer: the mean pressure " + formats::format_real(mean_pressure) +
+                " Pa is at or above the hardness " + formats::format_real(*options_.hardness) +
                 " Pa: that is full plastic contact (p = H everywhere, the flat's height undetermined), "
                 "which has no elastic solution to compute");
   const auto start = std::chrono::steady_clock::now();
@@ -102,12 +104,12 @@ const ContactSolution& BemSolver::solve(Real mean_pressure) {
 
 const ContactSolution& BemSolver::solve_for_separation(Real separation) {
   if (!std::isfinite(separation))
-    throw Error("Polonsky-Keer: the separation must be finite, got " + std::to_string(separation));
+    throw Error("Polonsky-Keer: the separation must be finite, got " + formats::format_real(separation));
   if (surface_.grid().periodic && !options_.hardness && !(separation > 0))
     throw Error(
         "Polonsky-Keer: on a periodic surface the separation is the mean gap and must be > 0 m (a "
         "mean gap of zero or less needs an infinite load), got " +
-        std::to_string(separation));
+        formats::format_real(separation));
   const auto start = std::chrono::steady_clock::now();
   const HeightMap& h = surface_.heights();
   if (separation >= h.maxCoeff()) {

@@ -6,6 +6,7 @@
 #include "contactbench/bem/love_kernel.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/fft.hpp"
+#include "contactbench/core/formats/text_values.hpp"
 #include "contactbench/core/spectrum.hpp"
 
 namespace contactbench {
@@ -24,7 +25,7 @@ void check_shape(const Grid& grid, const HeightMap& pressure) {
 void check_operator(const Grid& grid, Real modulus) {
   validate(grid, "half-space grid");
   if (!(std::isfinite(modulus) && modulus > 0))
-    throw Error("half-space: the modulus E* must be finite and > 0 Pa, got " + std::to_string(modulus));
+    throw Error("half-space: the modulus E* must be finite and > 0 Pa, got " + formats::format_real(modulus));
 }
 
 // 2/(E* |q|) with the FFT pair's normalisation 1/(nx ny) folded in; 0 at q = 0.

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/formats/text_values.hpp"
 
 namespace contactbench {
 
@@ -13,8 +14,8 @@ void validate(const Grid& grid, const char* what) {
     throw Error(name + ": needs at least one point along x and y, got " + std::to_string(grid.nx) + " x " +
                 std::to_string(grid.ny));
   if (!(std::isfinite(grid.lx) && grid.lx > 0) || !(std::isfinite(grid.ly) && grid.ly > 0))
-    throw Error(name + ": lateral sizes must be finite and > 0 m, got lx = " + std::to_string(grid.lx) +
-                ", ly = " + std::to_string(grid.ly));
+    throw Error(name + ": lateral sizes must be finite and > 0 m, got lx = " + formats::format_real(grid.lx) +
+                ", ly = " + formats::format_real(grid.ly));
 }
 
 Surface::Surface(Grid grid, HeightMap heights) : grid_(grid), heights_(std::move(heights)) {

@@ -1,7 +1,7 @@
-# ctest's python_install: cmake --install into a fresh prefix, then import contactbench from <prefix>/MODULE_DIR.
+# ctest's python_install: cmake --install into a fresh prefix, then import the package contactbench from <prefix>/MODULE_DIR.
 set(prefix "${BUILD_DIR}/python-install-check")
 file(REMOVE_RECURSE "${prefix}")
-execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}" --component runtime
+execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}" --component python
                 RESULT_VARIABLE status OUTPUT_QUIET)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "cmake --install failed (${status})")

@@ -15,6 +15,7 @@ cmake --build --preset "$preset" -j "$(nproc)"
 ctest --preset "$preset" -j "$(nproc)"
 
 if [[ "${CB_CI:-}" == "1" ]]; then
+  scripts/test-wheel.sh  # a wheel built from the tree, installed into a fresh venv, python/tests run against it
   if [[ "${CB_CI_ASAN:-}" == "1" && "$preset" != "asan" ]]; then
     echo "test.sh: CI: the suite under AddressSanitizer + UBSan"
     cmake --preset asan

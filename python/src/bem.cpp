@@ -16,6 +16,7 @@
 #include "contactbench/bem/contact_statistics.hpp"
 #include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/formats/text_values.hpp"
 
 namespace contactbench::python {
 
@@ -73,7 +74,7 @@ class PythonBemSolver {
                                         settings.periodic.value_or(surface.grid().periodic)),
                   checked_threads(threads)) {
     if (!(std::isfinite(modulus) && modulus > 0))
-      throw Error("modulus: E* must be finite and > 0 Pa, got " + std::to_string(modulus));
+      throw Error("modulus: E* must be finite and > 0 Pa, got " + formats::format_real(modulus));
     options_ = settings.solver;
     options_.hardness = hardness;
     // Ctrl-C between iterations: a microsecond's check of Python's signal flag per iteration.
@@ -117,14 +118,33 @@ BemResult unlocked(Call&& call) {
   return call();
 }
 
-// The signature and its keywords, from the declaration: each with its default and meaning.
+// The Python type of a setting's values, for the typed signature line that help() and the type stubs read.
+std::string python_type(SettingKind kind) {
+  switch (kind) {
+    case SettingKind::boolean:
+      return "bool";
+    case SettingKind::integer:
+      return "int";
+    case SettingKind::number:
+      return "float";
+    case SettingKind::choice:
+    case SettingKind::text:
+      return "str";
+  }
+  return "object";
+}
+
+// The signature and its keywords, from the declaration: each with its default and meaning. The first line is
+// the typed signature (None stands for the declared default), which python/make_stubs.py copies into the
+// stubs.
 std::string bem_keywords_doc() {
-  std::string text = "BemSolver(surface, modulus, *, hardness=None, threads=1";
+  std::string text =
+      "BemSolver(surface: Surface, modulus: float, *, hardness: Optional[float] = None, threads: int = 1";
   std::string lines;
   for (const Setting<BemSettings>& row : bem_settings()) {
     if (!row.python) continue;
     const SettingSpec spec = spec_of(row);
-    text += ", " + row.key + "=...";
+    text += ", " + row.key + ": Optional[" + python_type(row.kind) + "] = None";
     lines += "  " + row.key + ": " + row.doc + (row.unit.empty() ? "" : " [" + row.unit + "]") +
              "; default " + spec.default_text + "; accepted " +
              (row.accepted.empty() ? kind_text(row.kind) : row.accepted) + "\n";
@@ -133,6 +153,20 @@ std::string bem_keywords_doc() {
          ")\n  modulus: E* [Pa]; hardness: the interface's perfectly plastic cap H [Pa] (None: elastic); "
          "threads: for the FFTs.\n" +
          lines;
+}
+
+// One load in one unit: `load` P/(E* A0) (also by position), or `mean_pressure` P/A0 [Pa] by keyword only;
+// exactly one of them, finite and >= 0. Returns the mean pressure [Pa] the C++ solver takes.
+Real mean_pressure_of(std::optional<Real> load, std::optional<Real> mean_pressure, Real modulus) {
+  if (load.has_value() == mean_pressure.has_value())
+    throw Error(
+        "solve: give exactly one of load (P/(E* A0), also by position) and mean_pressure= (P/A0 [Pa]), got " +
+        std::string(load ? "both" : "neither"));
+  const Real value = load ? *load : *mean_pressure;
+  if (!(std::isfinite(value) && value >= 0))
+    throw Error(std::string(load ? "load: P/(E* A0)" : "mean_pressure: P/A0 [Pa]") +
+                " must be finite and >= 0, got " + formats::format_real(value));
+  return load ? *load * modulus : *mean_pressure;
 }
 
 }  // namespace
@@ -212,12 +246,14 @@ void register_bem(py::module_& m) {
            py::arg("threads") = 1)
       .def(
           "solve",
-          [](PythonBemSolver& s, Real mean_pressure) {
-            return unlocked([&] { return s.solve(mean_pressure); });
+          [](PythonBemSolver& s, std::optional<Real> load, std::optional<Real> mean_pressure) {
+            const Real pressure = mean_pressure_of(load, mean_pressure, s.modulus());
+            return unlocked([&] { return s.solve(pressure); });
           },
-          py::arg("mean_pressure"),
-          "Solves for the mean pressure P/A0 [Pa] (>= 0), warm-started from the previous solve. Releases the "
-          "GIL; Ctrl-C stops it between iterations (KeyboardInterrupt).")
+          py::arg("load") = py::none(), py::kw_only(), py::arg("mean_pressure") = py::none(),
+          "Solves one load, warm-started from the previous solve: load = P/(E* A0) [-] (by position or "
+          "keyword, as in solve_loads, scenes and the CLI), or mean_pressure = P/A0 [Pa] (by keyword only); "
+          "exactly one. Releases the GIL; Ctrl-C stops it between iterations (KeyboardInterrupt).")
       .def(
           "solve_for_separation",
           [](PythonBemSolver& s, Real separation) {
@@ -232,13 +268,13 @@ void register_bem(py::module_& m) {
             for (std::size_t k = 0; k < loads.size(); ++k)
               if (!(std::isfinite(loads[k]) && loads[k] >= 0 && (k == 0 || loads[k] >= loads[k - 1])))
                 throw Error("loads: every load P/(E* A0) must be finite, >= 0 and ascending; load " +
-                            std::to_string(k) + " is " + std::to_string(loads[k]));
-            py::list results;
+                            std::to_string(k) + " is " + formats::format_real(loads[k]));
+            std::vector<BemResult> results;
             for (const Real load : loads) {
-              results.append(unlocked([&] { return s.solve(load * s.modulus()); }));
+              results.push_back(unlocked([&] { return s.solve(load * s.modulus()); }));
               check_signals();  // and between loads
             }
-            return results;
+            return results;  // a list of BemResult
           },
           py::arg("loads"),
           "Solves each load P/(E* A0) (ascending), like `contactbench bem --loads`: a list of BemResult. "

@@ -20,6 +20,19 @@ namespace contactbench::python {
 
 namespace {
 
+// A method's curve and result as Python sees them: copies (a few numbers per load) that also hold the scene's
+// loads, so that a MethodCurve has `load` like every LoadAreaCurve; the C++ report holds the loads once.
+struct ReportCurve {
+  MethodCurve curve;
+  std::vector<Real> load;
+};
+
+struct ReportMethod {
+  MethodResult result;
+  std::vector<Real> load;
+  ReportCurve curve() const { return {result.curve, load}; }
+};
+
 SceneReport run(const Scene& scene, int threads, bool progress) {
   checked_threads(threads);
   const RunObserver observer = terminal_observer("contactbench (python)");
@@ -62,40 +75,58 @@ void register_scene(py::module_& m) {
       .def("to_toml", &to_toml, "the scene with defaults filled in, as TOML that read_scene accepts again")
       .def("to_json", &to_json, "the same as one JSON object");
 
-  py::class_<MethodCurve>(m, "MethodCurve",
-                          "A method's curve at the scene's loads (the loads are the report's, held once).")
+  py::class_<ReportCurve>(
+      m, "MethodCurve",
+      "A method's curve at the scene's loads: load, area_fraction, separation, spots like a "
+      "LoadAreaCurve, and the method's own columns. Arrays are read-only views.")
+      .def_property_readonly(
+          "load", [](const py::object& self) { return view_of(self.cast<const ReportCurve&>().load, self); },
+          "P/(E* A0) [-], ascending: the scene's loads (SceneReport.loads)")
       .def_property_readonly(
           "area_fraction",
-          [](const py::object& self) { return view_of(self.cast<const MethodCurve&>().area_fraction, self); },
+          [](const py::object& self) {
+            return view_of(self.cast<const ReportCurve&>().curve.area_fraction, self);
+          },
           "A/A0 as compared (MethodResult.compared_area says which area)")
       .def_property_readonly(
           "separation",
-          [](const py::object& self) { return view_of(self.cast<const MethodCurve&>().separation, self); },
+          [](const py::object& self) {
+            return view_of(self.cast<const ReportCurve&>().curve.separation, self);
+          },
           "[m] from the mean plane of the heights; NaN where the method has none")
       .def_property_readonly(
           "spots",
-          [](const py::object& self) { return view_of(self.cast<const MethodCurve&>().spots, self); },
+          [](const py::object& self) { return view_of(self.cast<const ReportCurve&>().curve.spots, self); },
           "contact spots; NaN where the method counts none")
-      .def_readonly("parameters", &MethodCurve::parameters, "the method as run")
+      .def_property_readonly(
+          "parameters", [](const ReportCurve& c) { return c.curve.parameters; }, "the method as run")
       .def_property_readonly(
           "columns",
           [](const py::object& self) {
             py::dict columns;
-            for (const auto& [name, values] : self.cast<const MethodCurve&>().columns)
+            for (const auto& [name, values] : self.cast<const ReportCurve&>().curve.columns)
               columns[py::str(name)] = view_of(values, self);
             return columns;
           },
-          "the method's own columns (e.g. iterations, area_fraction_nodes for the BEM): name -> array");
-
-  py::class_<MethodResult>(m, "MethodResult", "One method's result in a scene report.")
-      .def_readonly("label", &MethodResult::label)
-      .def_readonly("method", &MethodResult::method, "the registry name: bem, plateau, gw_mccool, ...")
-      .def_readonly("compared_area", &MethodResult::compared_area, "which area curve.area_fraction is")
-      .def_readonly("curve", &MethodResult::curve, "MethodCurve at the scene's loads (SceneReport.loads)")
-      .def_property_readonly(
-          "columns", [](const py::object& self) { return self.attr("curve").attr("columns"); },
           "the method's own columns (e.g. iterations, area_fraction_nodes for the BEM): name -> array")
-      .def_readonly("seconds", &MethodResult::seconds, "wall time of the stages the method needed [s]");
+      .def("__len__", [](const ReportCurve& c) { return c.load.size(); });
+
+  py::class_<ReportMethod>(m, "MethodResult", "One method's result in a scene report.")
+      .def_property_readonly(
+          "label", [](const ReportMethod& r) { return r.result.label; }, "the method's label in the scene")
+      .def_property_readonly(
+          "method", [](const ReportMethod& r) { return r.result.method; },
+          "the registry name: bem, plateau, gw_mccool, ...")
+      .def_property_readonly(
+          "compared_area", [](const ReportMethod& r) { return r.result.compared_area; },
+          "which area curve.area_fraction is")
+      .def_property_readonly("curve", &ReportMethod::curve, "MethodCurve at the scene's loads")
+      .def_property_readonly(
+          "columns", [](const py::object& self) { return py::dict(self.attr("curve").attr("columns")); },
+          "the method's own columns (e.g. iterations, area_fraction_nodes for the BEM): name -> array")
+      .def_property_readonly(
+          "seconds", [](const ReportMethod& r) { return r.result.seconds; },
+          "wall time of the stages the method needed [s]");
 
   py::class_<SceneReport>(m, "SceneReport", "What running a scene produced (app/scene_run.hpp).")
       .def_readonly("scene", &SceneReport::scene)
@@ -112,14 +143,21 @@ void register_scene(py::module_& m) {
             return stages;
           },
           "every stage that ran, in order: a list of (name, seconds [s])")
-      .def_readonly("methods", &SceneReport::methods, "MethodResult per method, in the scene's order")
+      .def_property_readonly(
+          "methods",
+          [](const SceneReport& r) {
+            std::vector<ReportMethod> methods;
+            for (const MethodResult& method : r.methods)
+              methods.push_back({method, r.loads()});
+            return methods;
+          },
+          "MethodResult per method, in the scene's order")
       .def_property_readonly(
           "curves",
-          [](const py::object& self) {
+          [](const SceneReport& r) {
             py::dict curves;
-            const py::list methods = self.attr("methods");
-            for (const py::handle method : methods)
-              curves[method.attr("label")] = method.attr("curve");
+            for (const MethodResult& method : r.methods)
+              curves[py::str(method.label)] = ReportMethod{method, r.loads()}.curve();
             return curves;
           },
           "label -> MethodCurve")

@@ -3,8 +3,10 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <variant>
 
 #include "bindings.hpp"
 #include "contactbench/core/error.hpp"
@@ -36,6 +38,16 @@ Surface generate(const Grid& grid, const SelfAffinePsd& psd, std::uint64_t seed,
   const Index ny = refine_y.value_or(refine.value_or(grid.ny));
   py::gil_scoped_release unlocked;
   return synthesize(grid, hhat, nx, ny, threads);
+}
+
+// A channel as the readers take it (core/topography_io.hpp): a name, or a 0-based index written as text;
+// Python callers may pass the index as an int.
+std::string channel_text(const std::variant<std::int64_t, std::string>& channel) {
+  if (const auto* name = std::get_if<std::string>(&channel)) return *name;
+  const std::int64_t index = std::get<std::int64_t>(channel);
+  if (index < 0)
+    throw Error("channel: accepted values are a name or a 0-based index >= 0, got " + std::to_string(index));
+  return std::to_string(index);
 }
 
 }  // namespace
@@ -113,6 +125,10 @@ void register_surface(py::module_& m) {
           "does the surface repeat with periods lx, ly?")
       .def_property_readonly("mean_height", &Surface::mean_height, "mean height [m]")
       .def_property_readonly("rms_height", &Surface::rms_height, "Sq: rms height about the mean [m]")
+      .def_property_readonly(
+          "rms_gradient", [](const Surface& s) { return spectral_moments(s, 1).rms_gradient(); },
+          "areal rms gradient gbar = sqrt(m2x + m2y) [-] of the spectral moments (Hann window when not "
+          "periodic), the gbar of kappa and of the theories; the same as moments().rms_gradient")
       .def("centred", &Surface::centred, "the same heights with the mean removed")
       .def("with_periodic", &Surface::with_periodic, py::arg("periodic"),
            "the same heights, declared periodic or not")
@@ -139,13 +155,13 @@ void register_surface(py::module_& m) {
   m.def(
       "read_topography",
       [](const std::filesystem::path& path, std::optional<Real> lx, std::optional<Real> ly,
-         std::optional<bool> periodic, std::optional<std::string> channel, const std::string& fill,
-         const std::string& level) {
+         std::optional<bool> periodic, std::optional<std::variant<std::int64_t, std::string>> channel,
+         const std::string& fill, const std::string& level) {
         TopographyReadOptions options;
         options.lx = lx;
         options.ly = ly;
         options.periodic = periodic;
-        options.channel = std::move(channel);
+        if (channel) options.channel = channel_text(*channel);
         const auto fill_method = parse_fill_method(fill);
         if (!fill_method)
           throw Error("fill: expected \"none\", \"harmonic\" or \"mean\", got \"" + fill + "\"");
@@ -164,8 +180,9 @@ void register_surface(py::module_& m) {
       "plain matrices in metres), detected from its content. lx, ly [m] are required for a plain matrix or "
       "an "
       "npy array and must agree with a file that states its sizes. periodic defaults to False for measured "
-      "data and to the stored flag for the project's format. channel: a name or a 0-based index as text "
-      "(default: the first height channel). fill: \"none\" (refuse invalid points), \"harmonic\" or "
+      "data and to the stored flag for the project's format. channel: a name (str) or a 0-based index (int "
+      "or its text; default: the first height channel). fill: \"none\" (refuse invalid points), \"harmonic\" "
+      "or "
       "\"mean\". level: \"none\", \"mean\" or \"plane\". Heights come back in metres (no mean removed "
       "unless levelled). A bad file raises contactbench.InputError naming the file and line.");
   m.def(

@@ -26,3 +26,15 @@ def cli():
 @pytest.fixture
 def source_dir():
     return SOURCE_DIR
+
+
+@pytest.fixture(scope="session")
+def make_stubs():
+    """python/make_stubs.py as a module, loaded by its path: putting python/ on sys.path would shadow the
+    package under test with its sources."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("make_stubs", SOURCE_DIR / "python" / "make_stubs.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module

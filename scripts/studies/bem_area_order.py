@@ -34,7 +34,7 @@ def hertz_rows():
         x = (np.arange(n) - n // 2) * dx
         h = -(x[None, :] ** 2 + x[:, None] ** 2) / (2 * radius)
         s = cb.Surface(np.ascontiguousarray(h), lx=n * dx, periodic=False)
-        r = cb.BemSolver(s, E_STAR, tolerance=1e-12, threads=THREADS).solve(load / (n * dx) ** 2)
+        r = cb.BemSolver(s, E_STAR, tolerance=1e-12, threads=THREADS).solve(mean_pressure=load / (n * dx) ** 2)
         area0 = (n * dx) ** 2
         rows.append((f"a/dx = {per_radius}", dx / a, r.area_fraction * area0 / exact - 1,
                      r.area_fraction_corrected * area0 / exact - 1))
@@ -62,7 +62,7 @@ def westergaard_rows(refined):
             s = cb.refine(base, n)
         else:
             s = cb.Surface(wave(n, wavelength, amplitude), lx=wavelength, periodic=True)
-        r = cb.BemSolver(s, E_STAR, tolerance=1e-12, threads=THREADS).solve(ratio * p_star)
+        r = cb.BemSolver(s, E_STAR, tolerance=1e-12, threads=THREADS).solve(mean_pressure=ratio * p_star)
         rows.append((f"{n} points a wavelength", 1 / n, r.area_fraction / exact - 1,
                      r.area_fraction_corrected / exact - 1))
     return rows
@@ -90,7 +90,7 @@ def hertz_bump_rows(coarse, radii):
         nodes, corr = [], []
         for a in radii:
             load = 4 * E_STAR * a**3 / (3 * radius)
-            r = solver.solve(load / length**2)
+            r = solver.solve(mean_pressure=load / length**2)
             exact = math.pi * a * a / length**2
             nodes.append(r.area_fraction / exact - 1)
             corr.append(r.area_fraction_corrected / exact - 1)
@@ -138,7 +138,7 @@ for n in (16, 32, 64, 128, 256):
     solver = cb.BemSolver(s, E_STAR, tolerance=1e-12, threads=THREADS)
     nodes, corr = [], []
     for ratio in ratios:
-        r = solver.solve(ratio * p_star)
+        r = solver.solve(mean_pressure=ratio * p_star)
         nodes.append(r.area_fraction / westergaard_exact(ratio) - 1)
         corr.append(r.area_fraction_corrected / westergaard_exact(ratio) - 1)
     nodes, corr = np.array(nodes), np.array(corr)

@@ -44,7 +44,7 @@ def case_surface(kind, n, threads):
 def solve(surface, periodic, load, solver, tolerance, threads, single):
     bem = cb.BemSolver(surface, E_STAR, tolerance=tolerance, max_iterations=100000, solver=solver,
                        periodic=periodic, precision="single" if single else "double", threads=threads)
-    result = bem.solve(load * E_STAR)
+    result = bem.solve(load)
     return result, np.array(result.pressure)
 
 

@@ -1,15 +1,17 @@
-#!/usr/bin/python3
-"""A measured surface (an AFM topography exported by Gwyddion, data/measured/matrix-3.txt: 256 x 256 over
-10 um, not periodic) pressed by a rigid flat: the BEM's pressure field, drawn to measured_pressure.png when
-matplotlib is installed, and its statistics printed either way.
+#!/usr/bin/env python3
+"""Tutorial step 4: a measured surface under load. An AFM topography exported by Gwyddion
+(data/measured/matrix-3.txt: 256 x 256 over 10 um, not periodic) pressed by a rigid flat: the BEM's contact
+statistics, and the heights and pressure field drawn to measured_pressure.png in --out.
 
-Run from the source folder:
-  PYTHONPATH=build/release/python /usr/bin/python3 examples/python/measured_pressure.py"""
+  python3 examples/python/4_measured_pressure.py [--out FOLDER] [--threads N]"""
 import pathlib
 
 import numpy as np
 
 import contactbench as cb
+from tutorial import arguments, pyplot
+
+args = arguments(__doc__.splitlines()[0])
 
 MODULUS = 100e9 / (1 - 0.3**2)  # E* [Pa]
 LOAD = 0.01  # P/(E* A0)
@@ -17,20 +19,15 @@ LOAD = 0.01  # P/(E* A0)
 path = pathlib.Path(__file__).resolve().parents[2] / "data" / "measured" / "matrix-3.txt"
 surface = cb.read_topography(path)  # sizes and units from the file's header; not periodic
 print(surface, f"Sq = {surface.rms_height:.3e} m")
-result = cb.BemSolver(surface, MODULUS, threads=2).solve(LOAD * MODULUS)
+result = cb.BemSolver(surface, MODULUS, threads=args.threads).solve(LOAD)  # P/(E* A0)
 pressure = result.pressure  # [Pa], shape (ny, nx): rows are y, as the heights
 print(f"A/A0 = {result.area_fraction_corrected:.4f} (nodes {result.area_fraction:.4f}), {result.spots} spots, "
       f"max p = {result.max_pressure:.3e} Pa, {result.iterations} iterations, converged {result.converged}, "
       f"{result.seconds:.2f} s")
 assert pressure.shape == surface.heights.shape and np.isclose(pressure.mean(), LOAD * MODULUS, rtol=1e-8)
 
-try:
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-except ImportError:
-    print("matplotlib is not installed (Debian: apt-get install python3-matplotlib): no plot")
-else:
+plt = pyplot()
+if plt:
     extent = [0, surface.lx * 1e6, 0, surface.ly * 1e6]  # [um]; origin="lower" puts row 0 (y = 0) at the bottom
     figure, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
     image = left.imshow(surface.heights * 1e9, origin="lower", extent=extent, cmap="viridis")
@@ -43,5 +40,5 @@ else:
     for axes, title in [(left, "heights"), (right, f"pressure at P/(E* A0) = {LOAD}")]:
         axes.set(xlabel="x [um]", ylabel="y [um]", title=title)
     figure.tight_layout()
-    figure.savefig("measured_pressure.png", dpi=120, bbox_inches="tight")
-    print("wrote measured_pressure.png")
+    figure.savefig(args.out / "measured_pressure.png", dpi=120, bbox_inches="tight")
+    print(f"wrote {args.out / 'measured_pressure.png'}")

@@ -1,17 +1,20 @@
-#!/usr/bin/python3
-"""The paper's surface A: every method's A/A0 against the BEM's at a few loads, as a table, and the load-area
-plot (load_area_surface_a.png) when matplotlib is installed (Debian: python3-matplotlib).
+#!/usr/bin/env python3
+"""Tutorial step 3: the cheap models against the ground truth. On the paper's surface A, the multi-plateaus
+model and the analytic theories (GW-McCool, BGT, the BGT linear law, Persson) at a few loads, each A/A0 with
+its error against the BEM's, and the load-area plot load_area_surface_a.png into --out.
 
-Run from the build tree:  PYTHONPATH=build/release/python /usr/bin/python3 examples/python/surface_a_comparison.py
-(about 10 s on one thread; the BEM dominates)."""
+  python3 examples/python/3_compare_theories.py [--out FOLDER] [--threads N]   (a few seconds; the BEM dominates)"""
 import math
 
 import contactbench as cb
+from tutorial import arguments, pyplot
+
+args = arguments(__doc__.splitlines()[0])
 
 MODULUS = 100e9 / (1 - 0.3**2)  # E* [Pa] of the paper's material: E = 100 GPa, nu = 0.3
 LOADS = [1e-3, 3e-3, 1e-2, 3e-2]  # P/(E* A0)
 
-surface = cb.surface_a(seed=1)  # 256 x 256 over 200 um, periodic
+surface = cb.surface_a(seed=1, threads=args.threads)  # 256 x 256 over 200 um, periodic
 moments = surface.moments()
 sweep = cb.sweep(surface)  # every distinct height: the plateau model's integral is exact
 curves = {
@@ -21,7 +24,7 @@ curves = {
     "bgt_linear": cb.bgt_linear_curve(moments, LOADS),
     "persson": cb.persson_curve(moments, LOADS),
 }
-bem = [r.area_fraction_corrected for r in cb.BemSolver(surface, MODULUS).solve_loads(LOADS)]
+bem = [r.area_fraction_corrected for r in cb.BemSolver(surface, MODULUS, threads=args.threads).solve_loads(LOADS)]
 
 print("A/A0 of surface A (BEM: perimeter-corrected node count)")
 print(f"{'P/(E* A0)':>10} {'bem':>9}" + "".join(f" {name:>12}" for name in curves))
@@ -30,19 +33,14 @@ for k, load in enumerate(LOADS):
     print(f"{load:>10.0e} {bem[k]:>9.5f}" + cells)
 print("(each model's A/A0 and its relative error against the BEM)")
 
-try:
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-except ImportError:
-    print("matplotlib is not installed (Debian: apt-get install python3-matplotlib): no plot")
-else:
+plt = pyplot()
+if plt:
     figure, axes = plt.subplots(figsize=(6, 4.5))
     axes.plot(LOADS, bem, "ko", label="bem")
     for name, curve in curves.items():
         axes.plot(curve.load, curve.area_fraction, label=name)
     axes.set(xscale="log", yscale="log", xlabel="P / (E* A0)", ylabel="A / A0", title="surface A")
     axes.legend()
-    figure.savefig("load_area_surface_a.png", dpi=120, bbox_inches="tight")
-    print("wrote load_area_surface_a.png")
+    figure.savefig(args.out / "load_area_surface_a.png", dpi=120, bbox_inches="tight")
+    print(f"wrote {args.out / 'load_area_surface_a.png'}")
 assert all(math.isfinite(a) for a in bem)

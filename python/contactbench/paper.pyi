@@ -1,0 +1,13 @@
+"""Type stubs of contactbench.paper, written by python/make_stubs.py from the module's own signatures."""
+# Generated: edit the bindings (python/src/) and rerun python/make_stubs.py, never this file.
+import os
+from typing import Any, Dict, List, Optional, Tuple, Union
+
+import numpy
+
+from . import Grid, SelfAffinePsd
+
+def grid() -> Grid: ...
+def surface_a() -> SelfAffinePsd: ...
+def surface_b() -> SelfAffinePsd: ...
+def surface_b_printed_qs() -> SelfAffinePsd: ...
