@@ -175,7 +175,7 @@ const AdhesiveSolution& AdhesiveBemSolver::solve_with(Control control, Real valu
     s.adhesive_pressure = used.mean();
     s.mean_pressure = s.repulsive_pressure - s.adhesive_pressure;
     s.mean_gap = contact.gap.mean();
-    describe(contact);
+    describe(contact, used);
   }
   s.converged = settled && contact_converged && !s.separated;
   s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -204,7 +204,7 @@ ContactSolution AdhesiveSolution::contact() const {
   return s;
 }
 
-void AdhesiveBemSolver::describe(const ContactSolution& contact) {
+void AdhesiveBemSolver::describe(const ContactSolution& contact, const HeightMap& attraction) {
   AdhesiveSolution& s = solution_;
   const Grid& grid = surface_.grid();
   const Index nx = grid.nx, ny = grid.ny;
@@ -213,7 +213,8 @@ void AdhesiveBemSolver::describe(const ContactSolution& contact) {
   for (Index y = 0; y < ny; ++y)
     for (Index x = 0; x < nx; ++x) {
       if (!in_contact(y, x)) {
-        s.attractive_points += contact.gap(y, x) < reach;
+        s.attractive_points +=
+            law_.model == AdhesionModel::dugdale ? attraction(y, x) > 0 : contact.gap(y, x) < reach;
         continue;
       }
       ++s.contact_points;

@@ -46,7 +46,8 @@ struct AdhesiveSolution {
   Real mean_gap = 0;            // [m]
   Real separation = 0;          // d: the flat's height above the mean plane of the heights [m]
   Index contact_points = 0;     // g = 0 (the repulsive contact area)
-  // Points outside contact inside the attractive zone: g < δc (Dugdale) or g < ρ (exponential).
+  // Points outside contact inside the attractive zone: pulled (Dugdale: the zone's rule, adhesive_solver.cpp)
+  // or at g < ρ (exponential).
   Index attractive_points = 0;
   // Points on the edge of the contact set (a contact point with a neighbour out of contact), and the width
   // of the attractive zone there in pixels: attractive_points / edge_points. The zone must be resolved
@@ -101,7 +102,7 @@ class AdhesiveBemSolver {
   // a from the gap (and, for Dugdale, whether each point is in contact); returns the change (points that
   // changed side, or max |Δa| / peak) after relaxation.
   Real update_attraction(const ContactSolution& contact);
-  void describe(const ContactSolution& contact);
+  void describe(const ContactSolution& contact, const HeightMap& attraction);
 
   Surface surface_;  // centred
   Real modulus_;

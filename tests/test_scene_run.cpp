@@ -414,6 +414,43 @@ ignore = ["hardness"]
   EXPECT_NE(plot.str().find("title 'persson (elastic: ignores hardness)'"), std::string::npos) << plot.str();
 }
 
+// Adhesion on the scene: the BEM solves it and says what it adds per load; a BEM that ignores it runs without
+// and is marked. At the same net load the attraction pulls more of the surface into contact (the repulsive
+// load is the load plus the pull), so the adhesive area must exceed the non-adhesive one at every load: with
+// the pull's sign reversed it would fall short, and with the attraction dropped it would equal it.
+TEST(SceneRun, AdhesionAddsItsPullAndGrowsTheArea) {
+  const SceneReport report = run_text("name = \"sticky\"\n" + kSmallSurface + R"(
+[interface]
+adhesion = { model = "dugdale", work = 1.0, stress = 1e8 }
+[methods.bem]
+[methods.bem_plain]
+method = "bem"
+ignore = ["adhesion"]
+)");
+  ASSERT_EQ(report.methods.size(), 2u);
+  EXPECT_EQ(report.methods[0].note, "");
+  EXPECT_EQ(report.methods[1].note, "non-adhesive: ignores adhesion");
+  const MethodCurve& sticky = report.methods[0].curve;
+  const MethodCurve& plain = report.methods[1].curve;
+  EXPECT_NE(sticky.parameters.find("adhesion dugdale w 1 J/m^2 sigma0 1e+08 Pa"), std::string::npos)
+      << sticky.parameters;
+  const auto column = [&](const std::string& name) {
+    for (const auto& [key, values] : sticky.columns)
+      if (key == name) return values;
+    ADD_FAILURE() << "no column " << name;
+    return std::vector<Real>{};
+  };
+  const std::vector<Real> pull = column("adhesive_load"), zone = column("attractive_fraction");
+  ASSERT_EQ(pull.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_GT(sticky.area_fraction[k], plain.area_fraction[k]) << "load " << k;
+    // The pull is σ0 over the contact and the zone at most: (A/A0 + zone) σ0 / E*, up to the node count.
+    EXPECT_GT(pull[k], 0);
+    EXPECT_LE(pull[k], (sticky.area_fraction_nodes[k] + zone[k]) * 1e8 / (100e9 / (1 - 0.09)) * (1 + 1e-12));
+    EXPECT_TRUE(sticky.converged[k]);
+  }
+}
+
 // A plateau method keeps its sweep level by level only when asked (write_levels = true: with exact levels
 // it is a row per distinct height), and the scene as understood says so only then, so that every scene
 // without the key reads and writes as before.
