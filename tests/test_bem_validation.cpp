@@ -394,8 +394,10 @@ TEST_P(BemValidation, ASpikePressedIntoTheFlatConverges) {
   // Past the touching load the flat around the spike comes into contact too: a contact set of hundreds of
   // nodes at one height, around one node above them. The problem is a strictly convex quadratic programme
   // (G is positive definite on the contact set), so its solution is unique; the solver must find it.
-  // (Measured on the current solver: at 1.5 and 3 times the touching load the cold-started iteration
-  // cycles, relative change ~1.3 for 20000 iterations, periodic and not; at 10 times it converges.)
+  // (An earlier solver cycled here: at 1.5 and 3 times the touching load the cold-started iteration kept a
+  // relative change of ~1.3 for 20000 iterations, periodic and not. Every solver now converges, within the
+  // 2000 iterations allowed: measured 44 to 286 iterations for polonsky_keer, 11 to 21 for preconditioned_cg,
+  // 14 to 26 for active_set, with 415 to 980 contact nodes.)
   for (const bool periodic : {true, false})
     for (const Real factor : {1.5, 3.0, 10.0}) {
       const Surface surface = spike_on_a_flat(periodic);
@@ -413,9 +415,10 @@ TEST_P(BemValidation, AWarmStartFromOneContactNodeStillFindsThePenetration) {
   // Load stepping: a load on the spike alone, then a load 10 times the touching one. The answer must not
   // depend on the start: the same contact set and pressure as a cold start (which converges at this load).
   // The pressures agree to the solver's tolerance, 1e-12 per iteration: tolerance::solver_consistency.
-  // (Measured on the current solver: the warm start stops after 0 iterations, "converged", with one contact
-  // node and the flat 2e-7 m inside the surface: with one contact node the conjugate-gradient step is zero
-  // and the solver declares convergence without looking for nodes that penetrate.)
+  // (An earlier solver failed this: its warm start stopped after 0 iterations, "converged", with one contact
+  // node and the flat 2e-7 m inside the surface, because with one contact node the conjugate-gradient step
+  // is zero and it declared convergence without looking for nodes that penetrate. Every solver now passes:
+  // measured 12 to 63 iterations warm against 11 to 60 cold, 980 and 929 contact nodes either way.)
   for (const bool periodic : {true, false}) {
     const Surface surface = spike_on_a_flat(periodic);
     const Real touching = kSpikeHeight / spike_compliance(surface);
