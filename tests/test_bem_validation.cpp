@@ -754,6 +754,49 @@ TEST_P(BemValidation, HertzOnARectangularGridEqualsTheSquareOne) {
               on_square.surface().heights().maxCoeff() - s.separation, 1e-9 * a * a / radius);
 }
 
+// The negative controls the comments above promise, run: the same checks with one input wrong must fail.
+// (tests/test_bem_solver.cpp runs those of the single-contact validations: Hertz, Westergaard, flat punch.)
+
+TEST(BemValidationControls, TheRectangularHertzPeakRejectsAWrongModulusOrLoad) {
+  // HertzOnARectangularGridEqualsTheSquareOne's bound: the peak within 1e-3 of Hertz's at 12 pixels
+  // (measured +5.4e-4). The peak goes like P^(1/3) E*^(2/3): a modulus off by 1 % moves it by 6.7e-3, a load
+  // off by 1 % by 3.3e-3, E instead of E* by 6 %; each must leave the bound.
+  const Real dx = 1e-6, radius = 1e-3, a = 12 * dx;
+  const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
+  const Real load = hertz.load_of_contact_radius(a), p0 = hertz.peak_pressure(load);
+  const Surface rectangle = sphere_cap(96, 48, dx, radius);
+  const auto peak_error = [&](Real modulus, Real load_factor) {
+    BemSolver solver(rectangle, modulus, {.tolerance = 1e-12});
+    const ContactSolution& s = solver.solve(load_factor * load / rectangle.grid().nominal_area());
+    EXPECT_TRUE(s.converged);
+    return std::abs(s.pressure.maxCoeff() / p0 - 1);
+  };
+  EXPECT_LT(peak_error(kModulus, 1), 1e-3);
+  EXPECT_GT(peak_error(1.01 * kModulus, 1), 1e-3);
+  EXPECT_GT(peak_error(0.99 * kModulus, 1), 1e-3);
+  EXPECT_GT(peak_error(kModulus * (1 - 0.3 * 0.3), 1), 1e-3);
+  EXPECT_GT(peak_error(kModulus, 1.01), 1e-3);
+  EXPECT_GT(peak_error(kModulus, 0.99), 1e-3);
+}
+
+TEST(BemValidationControls, TheContactFractionOf1e4RejectsALoadOrStiffnessOffBy25Percent) {
+  // AContactFractionOf1e4OnARandomSurface's band of 4 to 6 nodes (measured 5): a load (or, what acts the same
+  // at a given p/E*, a stiffness) 25 % high or half as large must leave it (the comment there says 7 and 2
+  // nodes were measured).
+  const Surface surface = surface_a(256, 11);
+  const Real load = 3e-5 * kModulus * rms_gradient(surface);
+  const auto nodes = [&](Real factor) {
+    BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000});
+    const ContactSolution& s = solver.solve(factor * load);
+    EXPECT_TRUE(s.converged);
+    return s.contact_points;
+  };
+  const Index right = nodes(1), high = nodes(1.25), half = nodes(0.5);
+  EXPECT_TRUE(right >= 4 && right <= 6) << right;
+  EXPECT_FALSE(high >= 4 && high <= 6) << high;
+  EXPECT_FALSE(half >= 4 && half <= 6) << half;
+}
+
 CB_FOR_EACH_SOLVER(BemValidation);
 
 }  // namespace
