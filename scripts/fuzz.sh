@@ -5,10 +5,15 @@
 # test suite replays it (tests/test_fuzz_regressions.cpp). Writes results/fuzz.md (executions, crashes, leaks)
 # when asked to record.
 # Usage: scripts/fuzz.sh [SECONDS per target, default 60] [--record]
+# libFuzzer's random seed is fixed (CB_FUZZ_SEED, default 41; printed), so a repeated run on the same commit
+# makes the same mutations in the same order (how many it gets through in SECONDS depends on the machine) and
+# finds a problem again; set CB_FUZZ_SEED to explore other paths (0: libFuzzer picks one, printed in the log).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 record=${2:-}
+seed=${CB_FUZZ_SEED:-41}
+echo "fuzz: libFuzzer seed $seed (CB_FUZZ_SEED overrides it)"
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$(nproc)" --target fuzz_topography fuzz_scene >/dev/null
 
@@ -27,7 +32,9 @@ printf '1e-9 2e-9 3e-9\n4e-9 5e-9 6e-9\n' >"$work/corpus_topography/plain.txt"
 cp fuzz/seeds/*.x3p fuzz/seeds/*.npy "$work/corpus_topography/"
 cp scenes/paper/*.toml scenes/studies/*.toml "$work/corpus_scene/"
 for target in topography scene; do
-  [[ -d fuzz/regressions/$target ]] && cp fuzz/regressions/$target/* "$work/corpus_$target/" 2>/dev/null || true
+  # The inputs, not their manifest of expected outcomes (tests/test_fuzz_regressions.cpp).
+  [[ -d fuzz/regressions/$target ]] && find "fuzz/regressions/$target" -maxdepth 1 -type f ! -name EXPECTED \
+    -exec cp {} "$work/corpus_$target/" \; || true
 done
 
 status=0
@@ -51,7 +58,7 @@ for target in topography scene; do
   log="$work/$target.log"
   set +e
   # Bounded: 2 GiB of memory, 1 GiB for one allocation, 10 s for one input; inputs up to 64 KiB.
-  "build/fuzz/fuzz/fuzz_$target" "$work/corpus_$target" -max_total_time="$seconds" -rss_limit_mb=2048 \
+  "build/fuzz/fuzz/fuzz_$target" "$work/corpus_$target" -max_total_time="$seconds" -seed="$seed" -rss_limit_mb=2048 \
     -malloc_limit_mb=1024 -timeout=10 -max_len=65536 -print_final_stats=1 \
     -artifact_prefix="$work/artifacts_$target/" >"$log" 2>&1
   code=$?
@@ -63,7 +70,8 @@ for target in topography scene; do
     status=1
     mkdir -p "fuzz/regressions/$target"
     cp "$work/artifacts_$target"/* "fuzz/regressions/$target/" 2>/dev/null || true
-    echo "fuzz: $target found a problem (exit $code); inputs kept in fuzz/regressions/$target/, log $log" >&2
+    echo "fuzz: $target found a problem (exit $code, seed $seed); inputs kept in fuzz/regressions/$target/," \
+      "log $log; state each one's outcome in fuzz/regressions/$target/EXPECTED (the test suite says what to add)" >&2
     grep -m5 -E 'ERROR|SUMMARY|terminate' "$log" >&2 || true
   fi
   # libFuzzer's last status line: edges covered and the corpus it grew from the seeds.

@@ -167,8 +167,12 @@ TEST_F(HostileInput, MagnitudesOutOfDoubleRangeAreRefusedAndLargeOnesAreRight) {
   EXPECT_EQ(tall[0].at("converged"), "1");
 }
 
-// A BEM request larger than the machine: refused before any work, with its estimate, in well under a second
-// (the solve it would start grows for minutes until the kernel kills it).
+// A BEM request larger than the machine: refused before any work, with its estimate (the solve it would start
+// grows for minutes until the kernel kills it). "Before any work" is checked by what the refusal says (the
+// preflight's estimate) and leaves (no output folder); the time is only a backstop against a solve that
+// started: the refusal takes about 0.05 s (release) and a few tenths under ASan, but a sanitizer build on a
+// loaded 2-core machine can be ten times slower than that, so the bound is 30 s (it was 1 s), far below the
+// minutes the solve would take.
 TEST_F(HostileInput, AnOversizedBemIsRefusedBeforeAnyWork) {
   const fs::path scene = folder_ / "big.toml";
   std::ofstream(scene) << "name = \"big\"\n[surface]\nfile = " << surface_file("s.txt")
@@ -182,7 +186,7 @@ TEST_F(HostileInput, AnOversizedBemIsRefusedBeforeAnyWork) {
             std::string::npos)
       << refused.err;
   EXPECT_NE(refused.err.find("GiB available"), std::string::npos) << refused.err;
-  EXPECT_LT(seconds, 1.0);
+  EXPECT_LT(seconds, 30.0);
   EXPECT_FALSE(fs::exists(folder_ / "out"));
 }
 
