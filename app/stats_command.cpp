@@ -1,11 +1,13 @@
 // contactbench stats: a topography's sizes and spectral statistics as one JSON object (docs/theory.md section
 // 1).
 #include <iostream>
+#include <optional>
 #include <string>
 
 #include "contactbench/app/cli.hpp"
 #include "contactbench/app/json_writer.hpp"
 #include "contactbench/app/topography_options.hpp"
+#include "contactbench/core/error.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/topography_io.hpp"
 
@@ -29,6 +31,9 @@ JsonObject conventions(Window window) {
   c.add("sq", "root-mean-square height about the mean, after the levelling named in 'level'");
   c.add("level",
         "none: heights as stored; mean: mean removed; plane: least-squares plane removed (docs/formats.md)");
+  c.add("unit",
+        "the unit the file's heights were written in (stated by the file, given with --unit, or m); every "
+        "value here is in SI");
   c.add("window", window == Window::hann
                       ? "hann: the surface is not periodic, so it was Hann-windowed before the transform"
                       : "none: the surface is periodic, the lattice sums are exact");
@@ -38,9 +43,20 @@ JsonObject conventions(Window window) {
 void run_stats(const StatsOptions& o) {
   const TopographyReading reading = o.topography.read_with_report();
   const Surface& surface = reading.surface;
-  check_summable_heights(surface);  // moments of 1e300 m heights would be printed as null
-  const FourierCoefficients coefficients = fourier_coefficients(surface, o.threads);
-  const SpectralMoments m = spectral_moments(coefficients);
+  // Moments of 1e300 m heights would be printed as null; a failure here is the file's, so it names the file.
+  std::optional<FourierCoefficients> transformed;
+  std::optional<SpectralMoments> moments;
+  try {
+    check_summable_heights(surface);
+    transformed = fourier_coefficients(surface, o.threads);
+    moments = spectral_moments(*transformed);
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& error) {
+    throw InputError(o.topography.file, 0, error.what());
+  }
+  const FourierCoefficients& coefficients = *transformed;
+  const SpectralMoments& m = *moments;
   const Grid& g = surface.grid();
 
   JsonObject json;
@@ -50,6 +66,7 @@ void run_stats(const StatsOptions& o) {
       .add("invalid_points_filled", reading.invalid_points)
       .add("fill", to_string(reading.fill))
       .add("level", to_string(reading.level))
+      .add("unit", reading.unit)
       .add("nx", g.nx)
       .add("ny", g.ny)
       .add("lx", g.lx)
@@ -75,7 +92,8 @@ void run_stats(const StatsOptions& o) {
 void add_stats_command(CLI::App& parent) {
   auto options = std::make_shared<StatsOptions>();
   CLI::App* command = parent.add_subcommand(
-      "stats", "Print a topography's sizes, Sq and spectral moments as one JSON object (SI units).");
+      "stats", "Print a topography's sizes, Sq and spectral moments as one JSON object (SI units). Reads " +
+                   readable_formats_help() + ".");
   options->topography.add_to(*command, "moments without a window");
   add_threads_option(*command, options->threads);
   command->callback([options] { run_stats(*options); });

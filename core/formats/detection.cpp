@@ -48,6 +48,7 @@ TopographyFormat text_format_of(const fs::path& path, std::span<const Line> line
   if (first.starts_with(project_prefix)) return TopographyFormat::project;
   if (first.starts_with("h=")) return TopographyFormat::interferometer;
   if (first.starts_with('#')) return TopographyFormat::gwyddion;
+  if (looks_like_point_list(path, lines)) return TopographyFormat::xyz_points;
   return TopographyFormat::plain_matrix;
 }
 
