@@ -8,6 +8,8 @@
 #include "contactbench/app/json_writer.hpp"
 #include "contactbench/app/topography_options.hpp"
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/formats/line_scan.hpp"
+#include "contactbench/core/profile_statistics.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/topography_io.hpp"
 
@@ -40,7 +42,50 @@ JsonObject conventions(Window window) {
   return c;
 }
 
+// A line scan: the statistics of its profile, no spectrum of a surface (docs/formats.md "line scans").
+void run_profile_stats(const StatsOptions& o) {
+  TopographyReadOptions options;
+  options.unit = o.topography.unit;
+  const formats::LineScan scan = formats::read_line_scan(o.topography.file, options);
+  ProfileStatistics p;
+  try {
+    p = profile_statistics(scan.x, scan.heights);
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& error) {
+    throw InputError(o.topography.file, 0, error.what());
+  }
+  JsonObject conventions;
+  conventions.add("units", "SI: lengths, mean and rq in m, m0 in m^2, m2 dimensionless, m4 in m^-2");
+  conventions.add(
+      "profile",
+      "a line scan: one profile h(x), linear between its points; mean, rq, rms_slope and the "
+      "moments m0 = rq^2, m2 = rms_slope^2 are integrals along x of that profile; rq_points is the "
+      "plain rms of the samples; m4 and alpha only for uniform sampling (second differences)");
+  JsonObject json;
+  json.add("file", o.topography.file)
+      .add("format", "line_scan")
+      .add("source", scan.source)
+      .add("unit", scan.unit)
+      .add("points", p.points)
+      .add("length", p.length)
+      .add("uniform", p.uniform)
+      .add("mean", p.mean)
+      .add("rq", p.rq)
+      .add("rq_points", p.rq_points)
+      .add("rms_slope", p.rms_slope)
+      .add("m0", p.m0())
+      .add("m2", p.m2());
+  if (p.rms_curvature) {
+    const Real m4 = *p.rms_curvature * *p.rms_curvature;
+    json.add("m4", m4).add("alpha", p.m0() * m4 / (p.m2() * p.m2()));
+  }
+  json.add("conventions", conventions);
+  std::cout << json.str() << '\n';
+}
+
 void run_stats(const StatsOptions& o) {
+  if (detect_topography_format(o.topography.file) == TopographyFormat::line_scan) return run_profile_stats(o);
   const TopographyReading reading = o.topography.read_with_report();
   const Surface& surface = reading.surface;
   // Moments of 1e300 m heights would be printed as null; a failure here is the file's, so it names the file.

@@ -7,9 +7,11 @@ namespace contactbench {
 std::string readable_formats_help() {
   // docs/formats.md has the table; detection is by content, so the extensions are what instruments write.
   return ".x3p (ISO 25178-72), .sdf (ISO 25178-71), .npy (NumPy), .dat (Zygo MetroPro), .di/.spm "
-         "(Bruker Nanoscope), .plu (Sensofar), .sur (Digital Surf), .opd (Wyko), .nc (NetCDF classic), and "
+         "(Bruker Nanoscope), .plu (Sensofar), .sur (Digital Surf), .opd (Wyko), .nc (NetCDF classic), .gwy "
+         "(Gwyddion), and "
          "text: the project's format, an interferometer export, a Gwyddion text export, a plain matrix "
-         "(blank-, comma- or semicolon-separated), an x y z point list on a regular grid";
+         "(blank-, comma- or semicolon-separated), an x y z point list on a regular grid, a line scan (x h "
+         "text, Dektak CSV: stats only)";
 }
 
 void TopographyOptions::add_to(CLI::App& command, const std::string& periodic_effect) {

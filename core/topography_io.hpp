@@ -26,12 +26,17 @@ enum class TopographyFormat {
   digital_surf,    // Digital Surf .sur
   wyko,            // Wyko .opd
   netcdf,          // NetCDF .nc as ContactMechanics and Tamaas write it
+  gwy,             // Gwyddion's native .gwy (GwyContainer of GwyDataFields); read and written
+  alicona,         // Alicona Imaging .al3d
+  nanosurf,        // Nanosurf .nid
+  agilent_mi,      // Agilent / Keysight PicoView .mi
   project,         // "# contactbench surface v1" header, written by write_surface, lossless
   interferometer,  // "h=NY w=NX", "pixel size=... UNIT", "data unit=...", "height conversion factor (->
                    // m)=..."
   gwyddion,  // Gwyddion text export: "# Channel:", "# Width: L UNIT", "# Height: L UNIT", "# Value units:"
   plain_matrix,  // whitespace-separated heights in metres, rows along y; sizes from the caller
   xyz_points,    // lines of x y z on a regular grid, no unit; lateral sizes from the coordinates
+  line_scan,  // a 1-D profile (x h text, Dektak CSV): not a surface; `stats` reads it (formats/line_scan.hpp)
 };
 
 std::string_view to_string(TopographyFormat format);
@@ -101,9 +106,9 @@ std::string writable_topography_extensions();
 // a name that promises another format (out.sur) must not receive text that no reader of that format opens.
 void check_writable_topography(const std::filesystem::path& path);
 
-// Writes by the path's extension: .x3p (ISO 25178-72, float64), .npy (float64) or .txt (the project's
-// format); any other extension is refused (check_writable_topography). Each reads back bit for bit (the sizes
-// of .x3p go through the increment lx / nx and back).
+// Writes by the path's extension: .x3p (ISO 25178-72, float64), .npy (float64), .gwy (Gwyddion) or .txt
+// (the project's format); any other extension is refused (check_writable_topography). Each reads back bit for
+// bit (the sizes of .x3p go through the increment lx / nx and back).
 void write_topography(const std::filesystem::path& path, const Surface& surface);
 
 }  // namespace contactbench

@@ -69,10 +69,23 @@ TEST_F(MeasurementFiles, ConvertRefusesAnExtensionItCannotWriteBeforeReading) {
   for (const std::string name : {"out.sur", "out.dat", "out.di", "out", "out.csv"}) {
     const fs::path output = folder_ / name;
     const CommandResult result = run("convert " + input.string() + " " + output.string());
-    expect_refusal(result, output, ".x3p (ISO 25178-72, float64), .npy (NumPy float64), .txt");
+    expect_refusal(result, output,
+                   ".x3p (ISO 25178-72, float64), .npy (NumPy float64), .gwy (Gwyddion, float64), .txt");
     EXPECT_FALSE(fs::exists(output)) << name;
   }
   EXPECT_EQ(md5_of(input), before);
+}
+
+TEST_F(MeasurementFiles, ConvertWritesGwyddionThatReadsBackTheSameHeights) {
+  const fs::path input = samples / "metropro-1.dat";
+  const fs::path output = folder_ / "m.gwy";
+  ASSERT_EQ(run("convert " + input.string() + " " + output.string()).status, 0);
+  const CommandResult original = run("stats " + input.string());
+  const CommandResult copy = run("stats " + output.string());
+  ASSERT_EQ(copy.status, 0) << copy.err;
+  // The same doubles: the same shortest decimals, printed by the same code.
+  for (const char* key : {"nx", "ny", "lx", "ly", "mean", "sq", "m2x"})
+    EXPECT_EQ(json_number(copy.out, key), json_number(original.out, key)) << key;
 }
 
 TEST_F(MeasurementFiles, PointListIsReadOnItsGrid) {
@@ -191,6 +204,59 @@ TEST_F(MeasurementFiles, SceneUnitKeyScalesAMatrix) {
   // The summary's resolved scene records the unit.
   const std::string summary = slurp(folder_ / "r2" / "summary.json");
   EXPECT_NE(summary.find("\"unit\": \"nm\""), std::string::npos) << summary;
+}
+
+TEST_F(MeasurementFiles, LineScansGiveProfileStatisticsToTheirReferenceValues) {
+  // data/formats/README.md: the piecewise-linear rq and rms slope SurfaceTopography's tests assert, and the
+  // per-point rms; the references carry 7 or 8 digits, so they are compared to half a unit of their last one.
+  struct Case {
+    const char* file;
+    const char* unit;
+    const char* source;
+    double points, length, rq, rq_points, rms_slope;
+    double tolerance, slope_tolerance;  // half a unit of the reference's last digit, relative
+  };
+  for (const Case& c :
+       {Case{"csv-1.csv", " --unit um", "x h text", 8, 0.2703e-6, 0.03957452e-6, 0.04722499e-6, 0, 1.3e-7, 0},
+        Case{"xy-1.txt", " --unit um", "x h text", 132, 187.190431e-6, 3.0585577e-6, 3.1268354e-6, 0.43824152,
+             1.7e-8, 1.2e-8},
+        Case{"dektak-1.csv", "", "dektak", 9600, 1.4998e-3, 4.763596e-6, 0, 0.015448, 1.1e-7, 3.3e-5}}) {
+    const fs::path input = samples / c.file;
+    const std::string before = md5_of(input);
+    const CommandResult result = run("stats " + input.string() + c.unit);
+    ASSERT_EQ(result.status, 0) << c.file << result.err;
+    EXPECT_NE(result.out.find(std::string("\"source\": \"") + c.source + "\""), std::string::npos)
+        << result.out;
+    EXPECT_EQ(json_number(result.out, "points"), c.points) << c.file;
+    EXPECT_NEAR(json_number(result.out, "length"), c.length, 1e-12 * c.length) << c.file;
+    EXPECT_NEAR(json_number(result.out, "rq"), c.rq, c.tolerance * c.rq) << c.file;
+    if (c.rq_points > 0) {
+      EXPECT_NEAR(json_number(result.out, "rq_points"), c.rq_points, c.tolerance * c.rq_points) << c.file;
+    }
+    if (c.rms_slope > 0) {
+      EXPECT_NEAR(json_number(result.out, "rms_slope"), c.rms_slope, c.slope_tolerance * c.rms_slope)
+          << c.file;
+    }
+    EXPECT_EQ(md5_of(input), before) << c.file;
+  }
+  // Dektak names its units (um) in the column header: another unit is refused.
+  const fs::path dektak = samples / "dektak-1.csv";
+  expect_refusal(run("stats " + dektak.string() + " --unit nm"), dektak, "states the heights' unit ('um')");
+}
+
+TEST_F(MeasurementFiles, MethodsAndConvertRefuseALineScanSayingWhy) {
+  const fs::path input = samples / "xy-1.txt";
+  const std::string why = "is a line scan (a profile along one line), not a surface";
+  expect_refusal(run("convert " + input.string() + " " + (folder_ / "out.txt").string() + " --unit um"),
+                 input, why);
+  const fs::path scene =
+      write("scan.toml", "name = \"scan\"\n[surface]\nfile = \"" + input.string() +
+                             "\"\nunit = \"um\"\n[material]\nE = 100e9\nnu = 0.3\n[loads]\n"
+                             "values = [1e-3]\n[methods.persson]\n");
+  const CommandResult result =
+      run("run " + scene.string() + " --out " + (folder_ / "r").string() + " --no-plots --quiet");
+  EXPECT_EQ(result.status, 1) << result.err;
+  EXPECT_NE(result.err.find(why), std::string::npos) << result.err;
 }
 
 TEST_F(MeasurementFiles, HelpListsEveryFormat) {
