@@ -1,11 +1,15 @@
 // contactbench stats: a topography's sizes and spectral statistics as one JSON object (docs/theory.md section
 // 1).
 #include <iostream>
+#include <optional>
 #include <string>
 
 #include "contactbench/app/cli.hpp"
 #include "contactbench/app/json_writer.hpp"
 #include "contactbench/app/topography_options.hpp"
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/formats/line_scan.hpp"
+#include "contactbench/core/profile_statistics.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/topography_io.hpp"
 
@@ -29,18 +33,75 @@ JsonObject conventions(Window window) {
   c.add("sq", "root-mean-square height about the mean, after the levelling named in 'level'");
   c.add("level",
         "none: heights as stored; mean: mean removed; plane: least-squares plane removed (docs/formats.md)");
+  c.add("unit",
+        "the unit the file's heights were written in (stated by the file, given with --unit, or m); every "
+        "value here is in SI");
   c.add("window", window == Window::hann
                       ? "hann: the surface is not periodic, so it was Hann-windowed before the transform"
                       : "none: the surface is periodic, the lattice sums are exact");
   return c;
 }
 
+// A line scan: the statistics of its profile, no spectrum of a surface (docs/formats.md "line scans").
+void run_profile_stats(const StatsOptions& o) {
+  TopographyReadOptions options;
+  options.unit = o.topography.unit;
+  const formats::LineScan scan = formats::read_line_scan(o.topography.file, options);
+  ProfileStatistics p;
+  try {
+    p = profile_statistics(scan.x, scan.heights);
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& error) {
+    throw InputError(o.topography.file, 0, error.what());
+  }
+  JsonObject conventions;
+  conventions.add("units", "SI: lengths, mean and rq in m, m0 in m^2, m2 dimensionless, m4 in m^-2");
+  conventions.add(
+      "profile",
+      "a line scan: one profile h(x), linear between its points; mean, rq, rms_slope and the "
+      "moments m0 = rq^2, m2 = rms_slope^2 are integrals along x of that profile; rq_points is the "
+      "plain rms of the samples; m4 and alpha only for uniform sampling (second differences)");
+  JsonObject json;
+  json.add("file", o.topography.file)
+      .add("format", "line_scan")
+      .add("source", scan.source)
+      .add("unit", scan.unit)
+      .add("points", p.points)
+      .add("length", p.length)
+      .add("uniform", p.uniform)
+      .add("mean", p.mean)
+      .add("rq", p.rq)
+      .add("rq_points", p.rq_points)
+      .add("rms_slope", p.rms_slope)
+      .add("m0", p.m0())
+      .add("m2", p.m2());
+  if (p.rms_curvature) {
+    const Real m4 = *p.rms_curvature * *p.rms_curvature;
+    json.add("m4", m4).add("alpha", p.m0() * m4 / (p.m2() * p.m2()));
+  }
+  json.add("conventions", conventions);
+  std::cout << json.str() << '\n';
+}
+
 void run_stats(const StatsOptions& o) {
+  if (detect_topography_format(o.topography.file) == TopographyFormat::line_scan) return run_profile_stats(o);
   const TopographyReading reading = o.topography.read_with_report();
   const Surface& surface = reading.surface;
-  check_summable_heights(surface);  // moments of 1e300 m heights would be printed as null
-  const FourierCoefficients coefficients = fourier_coefficients(surface, o.threads);
-  const SpectralMoments m = spectral_moments(coefficients);
+  // Moments of 1e300 m heights would be printed as null; a failure here is the file's, so it names the file.
+  std::optional<FourierCoefficients> transformed;
+  std::optional<SpectralMoments> moments;
+  try {
+    check_summable_heights(surface);
+    transformed = fourier_coefficients(surface, o.threads);
+    moments = spectral_moments(*transformed);
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& error) {
+    throw InputError(o.topography.file, 0, error.what());
+  }
+  const FourierCoefficients& coefficients = *transformed;
+  const SpectralMoments& m = *moments;
   const Grid& g = surface.grid();
 
   JsonObject json;
@@ -50,6 +111,7 @@ void run_stats(const StatsOptions& o) {
       .add("invalid_points_filled", reading.invalid_points)
       .add("fill", to_string(reading.fill))
       .add("level", to_string(reading.level))
+      .add("unit", reading.unit)
       .add("nx", g.nx)
       .add("ny", g.ny)
       .add("lx", g.lx)
@@ -75,7 +137,8 @@ void run_stats(const StatsOptions& o) {
 void add_stats_command(CLI::App& parent) {
   auto options = std::make_shared<StatsOptions>();
   CLI::App* command = parent.add_subcommand(
-      "stats", "Print a topography's sizes, Sq and spectral moments as one JSON object (SI units).");
+      "stats", "Print a topography's sizes, Sq and spectral moments as one JSON object (SI units). Reads " +
+                   readable_formats_help() + ".");
   options->topography.add_to(*command, "moments without a window");
   add_threads_option(*command, options->threads);
   command->callback([options] { run_stats(*options); });

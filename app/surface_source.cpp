@@ -11,6 +11,7 @@
 #include "contactbench/app/section.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/grid.hpp"
+#include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/topography_io.hpp"
 
 namespace contactbench {
@@ -99,6 +100,7 @@ std::optional<FileSurfaceSpec> parse_file(const Section& s, const fs::path& fold
   }
   if (const auto fill = s.choice("fill", {"none", "harmonic", "mean"})) spec.fill = *parse_fill_method(*fill);
   if (const auto level = s.choice("level", {"none", "mean", "plane"})) spec.level = *parse_levelling(*level);
+  if (const auto unit = s.choice("unit", {"m", "mm", "um", "nm", "pm"})) spec.unit = *unit;
   if (file) {
     spec.path = fs::absolute(folder / *file).lexically_normal();
     std::error_code ec;
@@ -114,6 +116,12 @@ std::optional<FileSurfaceSpec> parse_file(const Section& s, const fs::path& fold
                                 " is a " +
                                 (format == TopographyFormat::npy ? "NumPy array" : "plain matrix") +
                                 ", which carries no lateral size)");
+        if (spec.unit && format_carries_unit(format))
+          s.problem("unit",
+                    spec.path.filename().string() + " is a " + std::string(to_string(format)) +
+                        " file, which states its own unit",
+                    "no unit key (it is only for files that state none: npy, plain or CSV matrices, x y z "
+                    "point lists)");
       } catch (const Error& error) {
         s.problem("file", error.what(), "a topography file contactbench reads");
       }
@@ -130,7 +138,7 @@ std::optional<SurfaceSpec> read_surface_keys(const Section& root, const fs::path
   const toml::table* table = root.subtable("surface", true, "a table [surface] with generate or file");
   if (!table) return std::nullopt;
   const Section s(*table, "surface", problems);
-  s.reject_unknown({"generate", "file", "size", "periodic", "channel", "fill", "level"});
+  s.reject_unknown({"generate", "file", "size", "periodic", "channel", "fill", "level", "unit"});
   const bool generated = s.has("generate"), from_file = s.has("file");
   if (generated && from_file) {
     s.problem("file", "generate and file are mutually exclusive", "generate = { ... } or file = \"...\"");
@@ -142,7 +150,7 @@ std::optional<SurfaceSpec> read_surface_keys(const Section& root, const fs::path
     return std::nullopt;
   }
   if (generated) {
-    for (std::string_view key : {"size", "periodic", "channel", "fill", "level"})
+    for (std::string_view key : {"size", "periodic", "channel", "fill", "level", "unit"})
       if (s.has(key))
         s.problem(
             key,
@@ -193,6 +201,7 @@ void write_surface_keys(const SurfaceSpec& surface, SceneKeys& root) {
     // Always written, defaults included, so that a report records how the measured heights were treated.
     table.put("fill", std::string(to_string(f.fill)));
     table.put("level", std::string(to_string(f.level)));
+    if (f.unit) table.put("unit", *f.unit);
   }
 }
 
@@ -216,8 +225,19 @@ Surface make_surface(const SurfaceSpec& spec, int threads) {
   options.channel = file.channel;
   options.fill = file.fill;
   options.level = file.level;
+  options.unit = file.unit;
   // Levelling "plane" removes the tilt as well; the mean is removed in any case.
-  return read_topography(file.path, options).centred();
+  Surface surface = read_topography(file.path, options).centred();
+  // The moments stage and every method would refuse heights beyond what sums hold; that is the file's fault,
+  // so the refusal names it.
+  try {
+    check_summable_heights(surface);
+  } catch (const InputError&) {
+    throw;
+  } catch (const Error& error) {
+    throw InputError(file.path, 0, error.what());
+  }
+  return surface;
 }
 
 }  // namespace contactbench

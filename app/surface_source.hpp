@@ -41,6 +41,8 @@ struct FileSurfaceSpec {
   std::optional<std::string> channel;
   FillMethod fill = FillMethod::none;
   Levelling level = Levelling::none;
+  // unit = "nm": the unit of a file that states none (matrices, .npy, x y z lists); docs/formats.md.
+  std::optional<std::string> unit;
 };
 
 struct SurfaceSpec {

@@ -4,14 +4,23 @@
 
 namespace contactbench {
 
+std::string readable_formats_help() {
+  // docs/formats.md has the table; detection is by content, so the extensions are what instruments write.
+  return ".x3p (ISO 25178-72), .sdf (ISO 25178-71), .npy (NumPy), .dat (Zygo MetroPro), .di/.spm "
+         "(Bruker Nanoscope), .plu (Sensofar), .sur (Digital Surf), .opd (Wyko), .nc (NetCDF classic), .gwy "
+         "(Gwyddion), and "
+         "text: the project's format, an interferometer export, a Gwyddion text export, a plain matrix "
+         "(blank-, comma- or semicolon-separated), an x y z point list on a regular grid, a line scan (x h "
+         "text, Dektak CSV: stats only)";
+}
+
 void TopographyOptions::add_to(CLI::App& command, const std::string& periodic_effect) {
   command
       .add_option("FILE", file,
-                  "topography: the project's format, an interferometer or Gwyddion text export, or a plain "
-                  "matrix of heights in metres (then --size is needed)")
+                  "topography file, detected by content: " + readable_formats_help() +
+                      ". Matrices and .npy carry no size (give --size) and no unit (give --unit unless "
+                      "they are metres)")
       ->required();
-  // The formats are those of docs/formats.md: .x3p, .sdf, .npy, .dat (MetroPro), .di, .plu, .sur, .opd, .nc
-  // and the text exports.
   command.add_option("--size", size, "lateral size along x [m] (for files that carry none)");
   command.add_option("--size-y", size_y, "lateral size along y [m] (default: square pixels)");
   command.add_flag("--periodic", periodic, "treat the surface as periodic (" + periodic_effect + ")");
@@ -24,6 +33,11 @@ void TopographyOptions::add_to(CLI::App& command, const std::string& periodic_ef
       ->check(CLI::IsMember({"none", "harmonic", "mean"}));
   command.add_option("--level", level, "levelling after reading: none, mean or plane (least squares)")
       ->check(CLI::IsMember({"none", "mean", "plane"}));
+  command
+      .add_option("--unit", unit,
+                  "unit of the numbers of a file that states none (matrices, .npy, x y z lists): m, mm, um, "
+                  "nm or pm; without it they are metres, and Sq above 1 mm or below 1 pm is refused")
+      ->check(CLI::IsMember({"m", "mm", "um", "nm", "pm"}));
 }
 
 TopographyReading TopographyOptions::read_with_report() const {
@@ -34,6 +48,7 @@ TopographyReading TopographyOptions::read_with_report() const {
   options.channel = channel;
   options.fill = parse_fill_method(fill).value_or(FillMethod::none);  // CLI11 has checked the value
   options.level = parse_levelling(level).value_or(Levelling::none);
+  options.unit = unit;
   return read_topography_reading(file, options);
 }
 

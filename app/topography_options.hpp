@@ -1,5 +1,5 @@
-// The command-line options that name a topography file and what the file may not say (sizes, periodicity),
-// shared by every command that reads a surface.
+// The command-line options that name a topography file and what the file may not say (sizes, periodicity,
+// the unit), shared by every command that reads a surface.
 #pragma once
 
 #include <optional>
@@ -20,8 +20,9 @@ struct TopographyOptions {
   std::optional<std::string> channel;  // name or 0-based index (docs/formats.md)
   std::string fill = "none";           // none | harmonic | mean
   std::string level = "none";          // none | mean | plane
+  std::optional<std::string> unit;     // height unit of a file that states none (m, mm, um, nm, pm)
 
-  // Registers FILE, --size, --size-y, --periodic, --channel, --fill and --level on `command`;
+  // Registers FILE, --size, --size-y, --periodic, --channel, --fill, --level and --unit on `command`;
   // `periodic_effect` completes the help of --periodic with what periodicity changes for this command.
   void add_to(CLI::App& command, const std::string& periodic_effect);
   // Reads the file with these options (Error naming the file and line on bad content).
@@ -29,5 +30,8 @@ struct TopographyOptions {
   // The same, with the format, channel, filled points and levelling that were applied.
   TopographyReading read_with_report() const;
 };
+
+// Every format FILE may be in, for help texts: "x3p (ISO 25178-72), sdf (ISO 25178-71), ...".
+std::string readable_formats_help();
 
 }  // namespace contactbench

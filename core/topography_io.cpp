@@ -46,6 +46,14 @@ std::string_view to_string(TopographyFormat format) {
       return "wyko";
     case TopographyFormat::netcdf:
       return "netcdf";
+    case TopographyFormat::gwy:
+      return "gwy";
+    case TopographyFormat::alicona:
+      return "alicona";
+    case TopographyFormat::nanosurf:
+      return "nanosurf";
+    case TopographyFormat::agilent_mi:
+      return "agilent_mi";
     case TopographyFormat::project:
       return "project";
     case TopographyFormat::interferometer:
@@ -54,12 +62,21 @@ std::string_view to_string(TopographyFormat format) {
       return "gwyddion";
     case TopographyFormat::plain_matrix:
       return "plain_matrix";
+    case TopographyFormat::xyz_points:
+      return "xyz_points";
+    case TopographyFormat::line_scan:
+      return "line_scan";
   }
   throw Error("unknown topography format " + std::to_string(static_cast<int>(format)));
 }
 
 bool format_carries_sizes(TopographyFormat format) {
   return format != TopographyFormat::npy && format != TopographyFormat::plain_matrix;
+}
+
+bool format_carries_unit(TopographyFormat format) {
+  return format != TopographyFormat::npy && format != TopographyFormat::plain_matrix &&
+         format != TopographyFormat::xyz_points && format != TopographyFormat::line_scan;
 }
 
 TopographyFormat detect_topography_format(const std::filesystem::path& path) {
@@ -85,6 +102,22 @@ TopographyReading read_topography_reading(const std::filesystem::path& path,
   formats::check_is_text(path, content);
   const std::vector<formats::Line> lines = formats::non_blank_lines(content);
   const TopographyFormat format = formats::text_format_of(path, lines);
+  if (format == TopographyFormat::line_scan)
+    throw InputError(
+        path, 0,
+        "is a line scan (a profile along one line), not a surface: `contactbench stats` gives its "
+        "profile statistics, but contact areas, spots and the elastic coupling need heights over "
+        "an area (a 2-D file)");
+  if (format == TopographyFormat::plain_matrix)
+    return formats::reading_from_channels(path, formats::read_plain_matrix(path, lines), format, options);
+  if (format == TopographyFormat::xyz_points)
+    return formats::reading_from_channels(path, formats::read_xyz_points(path, lines), format, options);
+  if (options.unit)
+    throw InputError(
+        path, 0,
+        "a " + std::string(to_string(format)) +
+            " file states its own unit; a unit (--unit, unit = \"...\") is only for files that state "
+            "none (npy, plain or CSV matrices, x y z point lists)");
   // Text formats hold one channel, called "height" (index 0).
   if (options.channel && *options.channel != "height" && *options.channel != "0")
     throw InputError(path, 0, "unknown channel '" + *options.channel + "'; the file's channels: 0 'height'");
@@ -94,10 +127,8 @@ TopographyReading read_topography_reading(const std::filesystem::path& path,
         return formats::read_project(path, lines, options);
       case TopographyFormat::interferometer:
         return formats::read_interferometer(path, lines, options);
-      case TopographyFormat::gwyddion:
-        return formats::read_gwyddion(path, lines, options);
       default:
-        return formats::read_plain_matrix(path, lines, options);
+        return formats::read_gwyddion(path, lines, options);
     }
   }();
   if (options.level != Levelling::none) {
@@ -112,10 +143,26 @@ Surface read_topography(const std::filesystem::path& path, const TopographyReadO
   return read_topography_reading(path, options).surface;
 }
 
+std::string writable_topography_extensions() {
+  return ".x3p (ISO 25178-72, float64), .npy (NumPy float64), .gwy (Gwyddion, float64), .txt (the project's "
+         "text format)";
+}
+
+void check_writable_topography(const std::filesystem::path& path) {
+  const std::string extension = formats::lower_extension(path);
+  if (extension != ".x3p" && extension != ".npy" && extension != ".gwy" && extension != ".txt")
+    throw Error(
+        path.string() + ": cannot write " +
+        (extension.empty() ? std::string("a file without an extension") : "'" + extension + "' files") +
+        "; the extension picks the format, and the writable ones are " + writable_topography_extensions());
+}
+
 void write_topography(const std::filesystem::path& path, const Surface& surface) {
+  check_writable_topography(path);
   const std::string extension = formats::lower_extension(path);
   if (extension == ".x3p") return formats::write_x3p(path, surface);
   if (extension == ".npy") return formats::write_npy(path, surface);
+  if (extension == ".gwy") return formats::write_gwy(path, surface);
   write_surface(path, surface);
 }
 

@@ -26,16 +26,25 @@ enum class TopographyFormat {
   digital_surf,    // Digital Surf .sur
   wyko,            // Wyko .opd
   netcdf,          // NetCDF .nc as ContactMechanics and Tamaas write it
+  gwy,             // Gwyddion's native .gwy (GwyContainer of GwyDataFields); read and written
+  alicona,         // Alicona Imaging .al3d
+  nanosurf,        // Nanosurf .nid
+  agilent_mi,      // Agilent / Keysight PicoView .mi
   project,         // "# contactbench surface v1" header, written by write_surface, lossless
   interferometer,  // "h=NY w=NX", "pixel size=... UNIT", "data unit=...", "height conversion factor (->
                    // m)=..."
   gwyddion,  // Gwyddion text export: "# Channel:", "# Width: L UNIT", "# Height: L UNIT", "# Value units:"
   plain_matrix,  // whitespace-separated heights in metres, rows along y; sizes from the caller
+  xyz_points,    // lines of x y z on a regular grid, no unit; lateral sizes from the coordinates
+  line_scan,  // a 1-D profile (x h text, Dektak CSV): not a surface; `stats` reads it (formats/line_scan.hpp)
 };
 
 std::string_view to_string(TopographyFormat format);
 // Whether files of this format carry their lateral sizes (npy and plain matrices do not: --size is needed).
 bool format_carries_sizes(TopographyFormat format);
+// Whether files of this format state the unit of their heights (npy, plain matrices and point lists do not:
+// their numbers are metres unless the caller names a unit, and implausible Sq is refused without one).
+bool format_carries_unit(TopographyFormat format);
 
 struct TopographyReadOptions {
   // Lateral sizes [m]. Required for a plain matrix (ly defaults to lx * ny / nx: square pixels).
@@ -52,6 +61,10 @@ struct TopographyReadOptions {
   FillMethod fill = FillMethod::none;
   // Levelling after reading. Default none: the heights exactly as the file stores them.
   Levelling level = Levelling::none;
+  // The length unit of a file that states none (m, mm, um, nm, pm): heights (and a point list's
+  // coordinates) are multiplied by it. Absent: metres, and Sq above 1 mm or below 1 pm is refused. A file
+  // that states its own unit is refused with one given.
+  std::optional<std::string> unit;
 };
 
 // A surface with what was done to get it, for reports.
@@ -63,6 +76,7 @@ struct TopographyReading {
   Index invalid_points = 0;           // how many were filled
   FillMethod fill = FillMethod::none;
   Levelling level = Levelling::none;
+  std::string unit = "m";  // the unit the file's heights were read in (given or stated), for reports
 };
 
 TopographyReading read_topography_reading(const std::filesystem::path& path,
@@ -85,8 +99,16 @@ TopographyFormat detect_topography_format(const std::filesystem::path& path);
 // Written to a temporary file and renamed.
 void write_surface(const std::filesystem::path& path, const Surface& surface);
 
-// Writes by the path's extension: .x3p (ISO 25178-72, float64), .npy (float64) or anything else the project's
-// format. Each reads back bit for bit (the sizes of .x3p go through the increment lx / nx and back).
+// The extensions write_topography writes, with what each holds: ".x3p (ISO 25178-72, float64), ...".
+std::string writable_topography_extensions();
+
+// Throws Error naming the path and the writable extensions when write_topography cannot write its extension:
+// a name that promises another format (out.sur) must not receive text that no reader of that format opens.
+void check_writable_topography(const std::filesystem::path& path);
+
+// Writes by the path's extension: .x3p (ISO 25178-72, float64), .npy (float64), .gwy (Gwyddion) or .txt
+// (the project's format); any other extension is refused (check_writable_topography). Each reads back bit for
+// bit (the sizes of .x3p go through the increment lx / nx and back).
 void write_topography(const std::filesystem::path& path, const Surface& surface);
 
 }  // namespace contactbench

@@ -191,7 +191,12 @@ TEST(FormatSamples, SdfAsciiNonSquare) {
 TEST(FormatSamples, NpyNeedsTheCallersSize) {
   const fs::path file = samples / "example-2d.npy";
   expect_refused(file, "no lateral size");
-  const Surface s = read_topography(file, with_size(2.0));
+  // The array states no unit and its Sq, 2.7 taken as metres, is implausible: refused unless the unit is
+  // said.
+  expect_refused(file, "Sq 2.71 m, outside the plausible 1 pm to 1 mm", with_size(2.0));
+  TopographyReadOptions options = with_size(2.0);
+  options.unit = "m";
+  const Surface s = read_topography(file, options);
   EXPECT_EQ(s.heights()(0, 0), 0.1);
   EXPECT_EQ(s.heights()(0, 1), 1.0);
   EXPECT_EQ(s.heights()(1, 0), 4.0);
@@ -348,7 +353,9 @@ TEST_F(FormatFiles, NpyReadsBothByteOrdersBothMemoryOrdersAndFloat32) {
       write("f4_be.npy", npy_file(">f4", false, 2, 3, encoded(c_order_float, true))),
   };
   for (const fs::path& file : files) {
-    const Surface s = read_topography(file, with_size(3.0));
+    TopographyReadOptions options = with_size(3.0);
+    options.unit = "m";  // Sq 1.7 needs the unit said
+    const Surface s = read_topography(file, options);
     ASSERT_EQ(s.nx(), 3) << file;
     ASSERT_EQ(s.ny(), 2) << file;
     for (Index y = 0; y < 2; ++y)
@@ -408,6 +415,42 @@ TEST_F(FormatFiles, X3pEveryDataTypeWithIncrementOffsetAndValidMask) {
     const Surface filled = read_topography(file, with_fill(FillMethod::mean));
     EXPECT_DOUBLE_EQ(filled.heights()(1, 1), 1e-6 + 1e-9 * (1 + 2 + 3 + 4 + 6) / 5.0) << type;
   }
+}
+
+TEST_F(FormatFiles, X3pZeroOrNonFiniteZIncrementIsRefusedNamingTheField) {
+  // A zero increment made every height 0 (a flat surface, exit 0); NaN or Inf would make them all invalid.
+  const std::string data = encoded(std::vector<std::int32_t>{1, 2, 3, 4, 5, 6}, false);
+  for (const std::string increment : {"0", "0.0", "NaN", "inf", "-INF"}) {
+    const std::string xml = x3p_main_xml("L", 3, 2, "<Increment>" + increment + "</Increment>", "");
+    const fs::path file = write_zip("zero.x3p", {{"main.xml", xml}, {"bindata/data.bin", data}});
+    const std::string before = formats::md5_hex(read_bytes(file));
+    expect_refused(file, "<Record1/Axes/CZ/Increment>", {});
+    EXPECT_EQ(formats::md5_hex(read_bytes(file)), before) << increment;
+  }
+}
+
+TEST_F(FormatFiles, X3pDeclaringMoreThanMemoryIsRefusedBeforeInflating) {
+  // 65535 x 65535 float64 points: 32 GiB of data plus 32 B a point of reading (about 160 GiB), far beyond
+  // any test machine; the estimate refuses at once, with generate's message, before the member is touched.
+  const std::string xml = x3p_main_xml("D", 65535, 65535, "", "");
+  const fs::path file =
+      write_zip("huge.x3p", {{"main.xml", xml}, {"bindata/data.bin", std::string(64, '\0')}});
+  expect_refused(file, "reading x3p data of type D of 65535 x 65535 points needs about 160.0 GiB of memory");
+}
+
+TEST_F(FormatFiles, NpyInfIsAnInvalidPointAsNan) {
+  // docs/formats.md "invalid points": NaN and Inf alike, in every format.
+  const double inf = std::numeric_limits<double>::infinity();
+  const fs::path file = write(
+      "inf.npy", npy_file("<f8", false, 2, 3, encoded(std::vector<double>{1, 2, -inf, 4, inf, 6}, false)));
+  TopographyReadOptions options = with_size(3.0);
+  options.unit = "m";
+  expect_refused(file, "2 of 6 points of channel 'array' are invalid", options);
+  options.fill = FillMethod::mean;
+  const Surface filled = read_topography(file, options);
+  // The mean of 1, 2, 4, 6: exact in binary.
+  EXPECT_EQ(filled.heights()(0, 2), 3.25);
+  EXPECT_EQ(filled.heights()(1, 1), 3.25);
 }
 
 TEST_F(FormatFiles, SdfBinaryWithInt16AndTheMissingPointValue) {

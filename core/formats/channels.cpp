@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/formats/height_unit.hpp"
 #include "contactbench/core/formats/lateral_sizes.hpp"
 
 namespace contactbench::formats {
@@ -59,6 +61,29 @@ TopographyReading reading_from_channels(const fs::path& path, RawTopography raw,
   const std::size_t index = select_channel(path, raw, options.channel);
   Channel& channel = raw.channels[index];
 
+  // Inf is an invalid point as NaN is (docs/formats.md "invalid points"), whatever the format.
+  for (Real& value : channel.values)
+    if (!std::isfinite(value)) value = std::numeric_limits<Real>::quiet_NaN();
+  std::string unit = channel.unit;
+  if (!format_carries_unit(format)) {
+    if (options.unit) {
+      const Real per_metre = given_units_per_metre(path, *options.unit);
+      for (Real& value : channel.values)
+        value /= per_metre;
+      // A point list's coordinates are in the same unit as its heights.
+      if (channel.lx) *channel.lx /= per_metre;
+      if (channel.ly) *channel.ly /= per_metre;
+      unit = *options.unit;
+    } else {
+      unit = "m";
+    }
+  } else if (options.unit) {
+    throw InputError(path, 0,
+                     "a " + std::string(to_string(format)) + " file states its own unit ('" + channel.unit +
+                         "'); a unit (--unit, unit = \"...\") is only for files that state none (npy, plain "
+                         "or CSV matrices, x y z point lists)");
+  }
+
   Real lx = 0;
   Real ly = 0;
   if (channel.lx && channel.ly) {
@@ -79,8 +104,16 @@ TopographyReading reading_from_channels(const fs::path& path, RawTopography raw,
     check_lateral_size(path, 0, "ly", ly);
   }
 
+  // After the sizes, so that a missing --size is named first; before anything is filled.
+  if (!format_carries_unit(format) && !options.unit)
+    check_plausible_as_metres(path, channel.values, std::string(to_string(format)));
+
   const auto invalid = static_cast<Index>(
       std::count_if(channel.values.begin(), channel.values.end(), [](Real v) { return std::isnan(v); }));
+  if (invalid == static_cast<Index>(channel.values.size()))
+    throw InputError(path, 0,
+                     "all " + std::to_string(invalid) + " points of channel '" + channel.name +
+                         "' are invalid (not measured): there is no surface to read");
   if (invalid > 0 && options.fill == FillMethod::none)
     throw InputError(path, 0,
                      std::to_string(invalid) + " of " + std::to_string(channel.values.size()) +
@@ -111,7 +144,8 @@ TopographyReading reading_from_channels(const fs::path& path, RawTopography raw,
                            std::move(names),
                            invalid,
                            options.fill,
-                           options.level};
+                           options.level,
+                           unit};
 }
 
 }  // namespace contactbench::formats

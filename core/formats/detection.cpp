@@ -1,6 +1,7 @@
 #include "contactbench/core/formats/detection.hpp"
 
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/formats/line_scan.hpp"
 #include "contactbench/core/formats/readers.hpp"
 #include "contactbench/core/formats/text_readers.hpp"
 
@@ -10,7 +11,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::array<BinaryFormat, 9> binary_formats = {{
+constexpr std::array<BinaryFormat, 13> binary_formats = {{
     {TopographyFormat::x3p, {".x3p", "", ""}, looks_like_zip, read_x3p},
     {TopographyFormat::sdf, {".sdf", "", ""}, looks_like_sdf, read_sdf},
     {TopographyFormat::npy, {".npy", "", ""}, looks_like_npy, read_npy},
@@ -19,6 +20,10 @@ constexpr std::array<BinaryFormat, 9> binary_formats = {{
     {TopographyFormat::digital_surf, {".sur", "", ""}, looks_like_digital_surf, read_digital_surf},
     {TopographyFormat::wyko, {".opd", "", ""}, looks_like_wyko, read_wyko},
     {TopographyFormat::netcdf, {".nc", "", ""}, looks_like_netcdf, read_netcdf},
+    {TopographyFormat::gwy, {".gwy", "", ""}, looks_like_gwy, read_gwy},
+    {TopographyFormat::alicona, {".al3d", "", ""}, looks_like_alicona, read_alicona},
+    {TopographyFormat::nanosurf, {".nid", "", ""}, looks_like_nanosurf, read_nanosurf},
+    {TopographyFormat::agilent_mi, {".mi", "", ""}, looks_like_agilent_mi, read_agilent_mi},
     // Last: .plu has no magic, only a self-consistent header.
     {TopographyFormat::sensofar, {".plu", "", ""}, looks_like_sensofar, read_sensofar},
 }};
@@ -48,6 +53,8 @@ TopographyFormat text_format_of(const fs::path& path, std::span<const Line> line
   if (first.starts_with(project_prefix)) return TopographyFormat::project;
   if (first.starts_with("h=")) return TopographyFormat::interferometer;
   if (first.starts_with('#')) return TopographyFormat::gwyddion;
+  if (looks_like_line_scan(lines)) return TopographyFormat::line_scan;
+  if (looks_like_point_list(path, lines)) return TopographyFormat::xyz_points;
   return TopographyFormat::plain_matrix;
 }
 

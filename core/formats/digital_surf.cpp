@@ -12,6 +12,7 @@
 #include <string>
 
 #include "contactbench/core/formats/binary_view.hpp"
+#include "contactbench/core/formats/declared_memory.hpp"
 #include "contactbench/core/formats/readers.hpp"
 
 namespace contactbench::formats {
@@ -88,7 +89,7 @@ RawTopography read_digital_surf(const std::filesystem::path& path, std::string_v
   Channel channel = make_channel("height", true, view.text(212, 16, "z unit"), nx, ny);
   channel.lx = static_cast<Real>(dx) * x_unit * nx;
   channel.ly = static_cast<Real>(dy) * y_unit * ny;
-  channel.values.resize(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
+  allocate_values(path, channel);
   const Real scale = static_cast<Real>(dz) * z_unit;
   for (std::size_t k = 0; k < channel.values.size(); ++k) {
     const char* source = data.data() + k * item;

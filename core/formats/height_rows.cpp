@@ -1,6 +1,8 @@
 #include "contactbench/core/formats/height_rows.hpp"
 
 #include <cmath>
+#include <limits>
+#include <string>
 #include <system_error>
 #include <utility>
 
@@ -14,15 +16,29 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// One height token times the unit scale; throws naming the line for anything that is not a finite number.
-Real parse_height(const fs::path& path, long line, std::string_view token, Real scale) {
+// One height token times the unit scale; throws naming the line for anything that is not a number, and for
+// NaN or Inf unless they mark invalid points.
+Real parse_height(const fs::path& path, long line, std::string_view written, Real scale,
+                  const RowSyntax& syntax) {
+  std::string decimal_point;
+  std::string_view token = written;
+  if (syntax.decimal_comma && token.find(',') != std::string_view::npos) {
+    decimal_point = std::string(token);
+    for (char& c : decimal_point)
+      if (c == ',') c = '.';
+    token = decimal_point;
+  }
+  if (token.empty()) throw InputError(path, line, "an empty value between two separators");
   Real value = 0;
   const char* last = token.data() + token.size();
   const auto [end, error] = parse_real_prefix(token.data(), last, value);
   if (error == std::errc::result_out_of_range && end == last)
-    throw InputError(path, line, quoted(token) + " is out of the range of a double");
-  if (error != std::errc() || end != last) throw InputError(path, line, quoted(token) + " is not a number");
-  if (!std::isfinite(value)) throw InputError(path, line, quoted(token) + " is not finite (NaN or Inf)");
+    throw InputError(path, line, quoted(written) + " is out of the range of a double");
+  if (error != std::errc() || end != last) throw InputError(path, line, quoted(written) + " is not a number");
+  if (!std::isfinite(value)) {
+    if (syntax.non_finite_invalid) return std::numeric_limits<Real>::quiet_NaN();
+    throw InputError(path, line, quoted(written) + " is not finite (NaN or Inf)");
+  }
   const Real height = value * scale;
   if (!std::isfinite(height))
     throw InputError(path, line,
@@ -30,10 +46,38 @@ Real parse_height(const fs::path& path, long line, std::string_view token, Real 
   return height;
 }
 
+// The values of one row: split at blanks, or at the separator with the blanks around each value dropped (an
+// empty value between two separators is refused by parse_height).
+template <typename Visit>
+void for_each_value(std::string_view text, const RowSyntax& syntax, Visit&& visit) {
+  if (syntax.separator == ' ') return for_each_token(text, is_blank, visit);
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t end = text.find(syntax.separator, start);
+    visit(trim(text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start),
+               is_blank));
+    if (end == std::string_view::npos) return;
+    start = end + 1;
+  }
+}
+
 }  // namespace
 
+RowSyntax matrix_syntax(std::string_view first_line) {
+  RowSyntax syntax;
+  syntax.non_finite_invalid = true;
+  if (first_line.find(';') != std::string_view::npos) {
+    syntax.separator = ';';
+    syntax.decimal_comma = true;
+  } else if (first_line.find(',') != std::string_view::npos) {
+    syntax.separator = ',';
+  }
+  return syntax;
+}
+
 DataBlock parse_data(const fs::path& path, std::span<const Line> lines, Real scale,
-                     const std::optional<PromisedShape>& promised, std::string_view context) {
+                     const std::optional<PromisedShape>& promised, std::string_view context,
+                     const RowSyntax& syntax) {
   if (lines.empty()) throw InputError(path, 0, "no data rows" + std::string(context));
   DataBlock block;
   long first_row_line = 0;
@@ -41,8 +85,8 @@ DataBlock parse_data(const fs::path& path, std::span<const Line> lines, Real sca
     if (promised && block.rows == promised->rows)
       throw InputError(path, line.number, "more data rows than the header's " + promised->rows_name);
     const std::size_t before = block.values.size();
-    for_each_token(line.text, is_blank, [&](std::string_view token) {
-      block.values.push_back(parse_height(path, line.number, token, scale));
+    for_each_value(line.text, syntax, [&](std::string_view token) {
+      block.values.push_back(parse_height(path, line.number, token, scale, syntax));
     });
     const auto count = static_cast<Index>(block.values.size() - before);
     if (promised && count != promised->cols)

@@ -30,10 +30,24 @@ struct DataBlock {
   Index cols = 0;
 };
 
+// How the rows are written. The formats with a header state every height, so NaN and Inf there are refused;
+// matrices and point lists (which go through channels, docs/formats.md "invalid points") mark invalid points
+// with them.
+struct RowSyntax {
+  char separator = ' ';        // ' ': blanks (spaces, tabs); ',' or ';': that character, blanks around it
+  bool decimal_comma = false;  // "1,5" is 1.5 (semicolon-separated files of locales that write so)
+  bool non_finite_invalid = false;
+};
+
+// The separator of a matrix or point list, from its first line: ';' if it has one, else ',' if it has one,
+// else blanks; with ';' a comma inside a value is a decimal comma.
+RowSyntax matrix_syntax(std::string_view first_line);
+
 // Parses every line as a row of heights times `scale`: same count on every row, and the header's counts if it
 // gave any. `context` ends the message for an empty block (" after the header").
 DataBlock parse_data(const std::filesystem::path& path, std::span<const Line> lines, Real scale,
-                     const std::optional<PromisedShape>& promised, std::string_view context);
+                     const std::optional<PromisedShape>& promised, std::string_view context,
+                     const RowSyntax& syntax = {});
 
 Surface make_surface(DataBlock block, Real lx, Real ly, bool periodic);
 

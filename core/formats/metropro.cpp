@@ -9,6 +9,7 @@
 #include <string>
 
 #include "contactbench/core/formats/binary_view.hpp"
+#include "contactbench/core/formats/declared_memory.hpp"
 #include "contactbench/core/formats/readers.hpp"
 
 namespace contactbench::formats {
@@ -79,7 +80,7 @@ RawTopography read_metropro(const std::filesystem::path& path, std::string_view 
   Channel channel = make_channel("phase height", true, "m", nx, ny);
   channel.lx = static_cast<Real>(lateral_resolution) * nx;
   channel.ly = static_cast<Real>(lateral_resolution) * ny;
-  channel.values.resize(static_cast<std::size_t>(nx) * ny);
+  allocate_values(path, channel);
   for (std::size_t k = 0; k < channel.values.size(); ++k) {
     const auto counts = BinaryView::decode<std::int32_t>(data.data() + 4 * k, big);
     channel.values[k] =

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "contactbench/core/formats/binary_view.hpp"
+#include "contactbench/core/formats/declared_memory.hpp"
 #include "contactbench/core/formats/readers.hpp"
 #include "contactbench/core/formats/text_tokens.hpp"
 
@@ -222,9 +223,14 @@ RawTopography read_nanoscope(const fs::path& path, std::string_view bytes) {
         }
       }
     }
+    if (metres_per_count && !(std::isfinite(*metres_per_count) && *metres_per_count != 0))
+      throw InputError(
+          path, 0,
+          "channel '" + channel.name + "': its height scale (@2:Z scale times the sensitivity) is " +
+              std::to_string(*metres_per_count) + " m per count; it must be finite and non-zero");
     if (metres_per_count) {
       channel.is_height = true;
-      channel.values.resize(static_cast<std::size_t>(nx * ny));
+      allocate_values(path, channel);
       const char* data = bytes.data() + offset;
       for (long long line = 0; line < ny; ++line)
         for (long long x = 0; x < nx; ++x) {

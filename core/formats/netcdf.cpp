@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "contactbench/core/formats/binary_view.hpp"
+#include "contactbench/core/formats/declared_memory.hpp"
 #include "contactbench/core/formats/readers.hpp"
 
 namespace contactbench::formats {
@@ -289,7 +290,7 @@ RawTopography read_netcdf(const fs::path& path, std::string_view bytes) {
       make_channel("heights", true, unit_name.value_or("m"), static_cast<Index>(nx), static_cast<Index>(ny));
   channel.lx = lx;
   channel.ly = ly;
-  channel.values.resize(static_cast<std::size_t>(nx * ny));
+  allocate_values(path, channel);
   for (std::uint64_t ix = 0; ix < nx; ++ix)
     for (std::uint64_t iy = 0; iy < ny; ++iy) {
       const double value = decode_number(data.data() + (ix * ny + iy) * *item, h.type);

@@ -11,6 +11,7 @@
 
 #include "contactbench/core/atomic_file.hpp"
 #include "contactbench/core/formats/binary_view.hpp"
+#include "contactbench/core/formats/declared_memory.hpp"
 #include "contactbench/core/formats/readers.hpp"
 
 namespace contactbench::formats {
@@ -131,7 +132,7 @@ RawTopography read_npy(const std::filesystem::path& path, std::string_view bytes
                  ".npy data (" + std::to_string(ny) + " x " + std::to_string(nx) + ")");
 
   Channel channel = make_channel("array", true, "m (assumed)", nx, ny);
-  channel.values.resize(count);
+  allocate_values(path, channel);
   const bool column_major = fortran == "True";
   for (Index row = 0; row < ny; ++row)
     for (Index column = 0; column < nx; ++column) {

@@ -19,6 +19,10 @@ RawTopography read_sensofar(const std::filesystem::path& path, std::string_view 
 RawTopography read_digital_surf(const std::filesystem::path& path, std::string_view bytes);
 RawTopography read_wyko(const std::filesystem::path& path, std::string_view bytes);
 RawTopography read_netcdf(const std::filesystem::path& path, std::string_view bytes);
+RawTopography read_gwy(const std::filesystem::path& path, std::string_view bytes);
+RawTopography read_alicona(const std::filesystem::path& path, std::string_view bytes);
+RawTopography read_nanosurf(const std::filesystem::path& path, std::string_view bytes);
+RawTopography read_agilent_mi(const std::filesystem::path& path, std::string_view bytes);
 
 // Content signatures, each looking only at the first bytes.
 bool looks_like_zip(std::string_view bytes);
@@ -30,6 +34,10 @@ bool looks_like_sensofar(std::string_view bytes);
 bool looks_like_digital_surf(std::string_view bytes);
 bool looks_like_wyko(std::string_view bytes);
 bool looks_like_netcdf(std::string_view bytes);
+bool looks_like_gwy(std::string_view bytes);
+bool looks_like_alicona(std::string_view bytes);
+bool looks_like_nanosurf(std::string_view bytes);
+bool looks_like_agilent_mi(std::string_view bytes);
 
 // ISO 25178-72 with float64 heights, grid increments from the surface's sizes, and MD5 checksums of the data
 // and of main.xml: read_x3p returns the same doubles.
@@ -37,5 +45,8 @@ void write_x3p(const std::filesystem::path& path, const Surface& surface);
 // NumPy .npy version 1.0, little-endian float64 in C order, shape (ny, nx): read_npy returns the same
 // doubles.
 void write_npy(const std::filesystem::path& path, const Surface& surface);
+// Gwyddion .gwy: a GwyContainer with the GwyDataField "/0/data" (float64 heights in m, sizes in m): read_gwy
+// returns the same doubles and sizes.
+void write_gwy(const std::filesystem::path& path, const Surface& surface);
 
 }  // namespace contactbench::formats

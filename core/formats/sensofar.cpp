@@ -9,6 +9,7 @@
 #include <string>
 
 #include "contactbench/core/formats/binary_view.hpp"
+#include "contactbench/core/formats/declared_memory.hpp"
 #include "contactbench/core/formats/readers.hpp"
 
 namespace contactbench::formats {
@@ -60,7 +61,7 @@ RawTopography read_sensofar(const std::filesystem::path& path, std::string_view 
     Channel channel = make_channel(name, true, "um", nx, ny);
     channel.lx = static_cast<Real>(nx) * dx_um * 1e-6;
     channel.ly = static_cast<Real>(ny) * dy_um * 1e-6;
-    channel.values.resize(static_cast<std::size_t>(nx) * ny);
+    allocate_values(path, channel);
     for (std::size_t k = 0; k < channel.values.size(); ++k) {
       const auto value = BinaryView::decode<float>(data.data() + 4 * k, little);
       channel.values[k] = value == undefined_marker || !std::isfinite(value)

@@ -7,6 +7,7 @@
 #include <span>
 #include <string_view>
 
+#include "contactbench/core/formats/raw_topography.hpp"
 #include "contactbench/core/formats/text_lines.hpp"
 #include "contactbench/core/surface.hpp"
 #include "contactbench/core/topography_io.hpp"
@@ -24,7 +25,13 @@ Surface read_interferometer(const std::filesystem::path& path, std::span<const L
                             const TopographyReadOptions& options);
 Surface read_gwyddion(const std::filesystem::path& path, std::span<const Line> lines,
                       const TopographyReadOptions& options);
-Surface read_plain_matrix(const std::filesystem::path& path, std::span<const Line> lines,
-                          const TopographyReadOptions& options);
+// The formats without a header (no sizes, no unit) return their one channel, "height", for the channels'
+// sizes, unit, invalid points and levelling (channels.hpp).
+RawTopography read_plain_matrix(const std::filesystem::path& path, std::span<const Line> lines);
+RawTopography read_xyz_points(const std::filesystem::path& path, std::span<const Line> lines);
+
+// Whether the lines are an x y z point list: three values a line, at least four lines, and x and y each
+// taking at least two values whose combinations number the lines (a grid); or a .xyz file.
+bool looks_like_point_list(const std::filesystem::path& path, std::span<const Line> lines);
 
 }  // namespace contactbench::formats

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "contactbench/core/formats/binary_view.hpp"
+#include "contactbench/core/formats/declared_memory.hpp"
 #include "contactbench/core/formats/readers.hpp"
 
 namespace contactbench::formats {
@@ -118,7 +119,7 @@ RawTopography read_wyko(const std::filesystem::path& path, std::string_view byte
     Channel channel = make_channel(data.name, true, "m", nx, ny);
     channel.lx = static_cast<Real>(nx) * pixel_mm * 1e-3;
     channel.ly = static_cast<Real>(ny) * pixel_mm * aspect * 1e-3;
-    channel.values.resize(static_cast<std::size_t>(nx * ny));
+    allocate_values(path, channel);
     for (Index x = 0; x < nx; ++x)
       for (Index stored = 0; stored < ny; ++stored) {
         const char* source = view.bytes().data() + data.data_offset +

@@ -18,6 +18,7 @@
 #include <pugixml.hpp>
 
 #include "contactbench/core/formats/binary_view.hpp"
+#include "contactbench/core/formats/declared_memory.hpp"
 #include "contactbench/core/formats/md5.hpp"
 #include "contactbench/core/formats/readers.hpp"
 
@@ -212,9 +213,17 @@ RawTopography read_x3p(const fs::path& path, std::string_view bytes) {
   Real z_increment = 1;
   Real z_offset = 0;
   if (cz.child("Increment"))
-    z_increment = parse_number(path, required_text(path, cz, "Increment", "Record1/Axes/CZ"), "CZ/Increment");
+    z_increment = parse_number(path, required_text(path, cz, "Increment", "Record1/Axes/CZ"),
+                               "Record1/Axes/CZ/Increment");
   if (cz.child("Offset"))
-    z_offset = parse_number(path, required_text(path, cz, "Offset", "Record1/Axes/CZ"), "CZ/Offset");
+    z_offset =
+        parse_number(path, required_text(path, cz, "Offset", "Record1/Axes/CZ"), "Record1/Axes/CZ/Offset");
+  // A zero increment would turn any data into a flat surface without a word.
+  if (z_increment == 0)
+    throw InputError(
+        path, 0,
+        "main.xml <Record1/Axes/CZ/Increment> is 0: every height would be 0; the z increment must "
+        "be a finite number other than 0 (absent means 1)");
 
   const pugi::xml_node matrix = record3.child("MatrixDimension");
   const Index nx = parse_size(path, required_text(path, matrix, "SizeX", "Record3/MatrixDimension"), "SizeX");
@@ -226,6 +235,9 @@ RawTopography read_x3p(const fs::path& path, std::string_view bytes) {
   if (count > (std::uint64_t{1} << 32))
     throw InputError(path, 0,
                      "x3p matrix " + std::to_string(nx) + " x " + std::to_string(ny) + " is too large");
+
+  // Before anything is inflated: the deflated data may expand about 1000-fold.
+  check_declared_memory(path, nx, ny, item_size, "x3p data of type " + type);
 
   const pugi::xml_node link = record3.child("DataLink");
   if (!link)
@@ -269,7 +281,7 @@ RawTopography read_x3p(const fs::path& path, std::string_view bytes) {
   Channel channel = make_channel("height", true, "m", nx, ny);
   channel.lx = dx * static_cast<Real>(nx);
   channel.ly = dy * static_cast<Real>(ny);
-  channel.values.resize(count);
+  allocate_values(path, channel);
   for (std::uint64_t k = 0; k < count; ++k) {
     const char* source = data.data() + k * item_size;
     Real raw = 0;
