@@ -1,10 +1,12 @@
 #include "contactbench/bem/bem_solver.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "contactbench/bem/solvers/contact_solver.hpp"
 #include "contactbench/bem/solvers/hardness_search.hpp"
@@ -26,11 +28,33 @@ BemSolver::BemSolver(const Surface& surface, Real modulus, BemSolverOptions opti
                 formats::format_real(options_.tolerance) +
                 " (float resolves about 1e-7); use a tolerance >= " +
                 formats::format_real(kSinglePrecisionTolerance) + " or double precision");
+  if (options_.single_precision) check_single_precision_range(surface_, modulus);
   engine_ = solver_entry(options_.solver).make(surface_, modulus, threads, options_.single_precision);
   engine_->set_between_iterations(options_.between_iterations);
 }
 
 BemSolver::~BemSolver() = default;
+
+void check_single_precision_range(const Surface& surface, Real modulus) {
+  const HeightMap& h = surface.heights();
+  const Real height_range = h.maxCoeff() - h.minCoeff();
+  const Real pixel = std::min(surface.grid().dx(), surface.grid().dy());
+  // What the float iteration holds: heights and gaps, pressures of order E* h / dx, and the kernel's
+  // displacement per pressure, of order dx / E*.
+  const std::pair<const char*, Real> scales[] = {
+      {"the height range [m]", height_range},
+      {"the pixel [m]", pixel},
+      {"the pressure scale E* x height range / pixel [Pa]", modulus * height_range / pixel},
+      {"the compliance scale pixel / E* [m/Pa]", pixel / modulus}};
+  for (const auto& [what, value] : scales)
+    if (value > 0 && !(value >= kSinglePrecisionSmallest && value <= kSinglePrecisionLargest))
+      throw Error("Polonsky-Keer: single precision cannot hold " + std::string(what) + " = " +
+                  formats::format_real(value) +
+                  " (accepted in float: " + formats::format_real(kSinglePrecisionSmallest) + " to " +
+                  formats::format_real(kSinglePrecisionLargest) +
+                  ", eight decades inside its range); use double "
+                  "precision, or express the surface in other units");
+}
 
 namespace {
 

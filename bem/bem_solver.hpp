@@ -65,6 +65,15 @@ struct BemSolverOptions {
 // round-off of the sums of an iteration.
 inline constexpr Real kSinglePrecisionTolerance = 1e-6;
 
+// The magnitudes single precision accepts (float holds 1.2e-38 to 3.4e38; sums of squares and products of
+// the scales below need room): outside, heights of 1e-99 m became 0 in float and the solve reported
+// "converged" with no contact (tests/test_hard_cases.cpp).
+inline constexpr Real kSinglePrecisionSmallest = 1e-30;
+inline constexpr Real kSinglePrecisionLargest = 1e30;
+// Throws Error naming the quantity unless the heights' range, the pixel, the pressure scale E* h / dx and the
+// compliance dx / E* of a single-precision solve of `surface` (E* = modulus) lie in that range.
+void check_single_precision_range(const Surface& surface, Real modulus);
+
 // The complementarity residual a converged solve may keep: `residual` (the largest |gap| on the contact set
 // over the height range) at most kResidualPerTolerance x the tolerance. The pressure-change criteria can be
 // met far from the solution (one iteration from a bad start, a tolerance of 0.5, heights or moduli at the

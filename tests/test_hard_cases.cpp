@@ -190,14 +190,14 @@ std::string scaled_answer_problems(SolverKind kind, bool periodic, bool single, 
   const Real load = 0.01 * kModulus * 32;
   const ContactSolution reference = unit_solver.solve(load);
   const Real pressure_scale = scale.height / scale.lateral;
-  BemSolver solver(unit_problem(periodic, scale.height, scale.lateral), kModulus, options);
   std::ostringstream out;
+  ContactSolution s;
   try {
-    solver.solve(load * pressure_scale * load_error);
+    BemSolver solver(unit_problem(periodic, scale.height, scale.lateral), kModulus, options);
+    s = solver.solve(load * pressure_scale * load_error);
   } catch (const std::exception& e) {
     return std::string("threw: ") + e.what();
   }
-  const ContactSolution& s = solver.solution();
   if (!reference.converged) out << "the unit problem did not converge; ";
   if (!s.converged) out << "not converged (" << s.iterations << " iterations); ";
   if (!(s.pressure.allFinite() && std::isfinite(s.separation))) out << "not finite; ";
@@ -213,11 +213,10 @@ std::string scaled_answer_problems(SolverKind kind, bool periodic, bool single, 
   return out.str();
 }
 
-// Known wrong on this commit (reported with issue 41; not fixed here): single precision at every extreme
-// scale (float holds 1e-38 to 3e38: heights of 1e-99 m become 0 and the solve reports "converged" with no
-// contact; sides of 1e90 m overflow), and active_set in double at heights of 1e-99 m on sides of 1e-90 m
-// (20000 iterations, not converged, no contact). Run by the DISABLED_ test below, which fails until they are
-// fixed; then this list empties and the DISABLED_ test goes.
+// Not solved on this commit: active_set in double at heights of 1e-99 m on sides of 1e-90 m (20000
+// iterations, no contact); it is marked not converged, never passed off as an answer (the test after next).
+// Single precision at every extreme scale is refused before any work (float holds 1e-38 to 3e38: heights of
+// 1e-99 m became 0 and the solve reported "converged" with no contact; sides of 1e90 m overflowed).
 bool known_wrong(SolverKind kind, bool single, Scale scale) {
   return single || (kind == SolverKind::active_set && scale.height == 1e-99 && scale.lateral == 1e-90);
 }
@@ -233,14 +232,18 @@ TEST_P(BemHardCases, ExtremeScalesGiveTheScaledAnswerOfAUnitProblem) {
       }
 }
 
-TEST_P(BemHardCases, DISABLED_ExtremeScalesKnownWrongOnThisCommit) {
+// Where the scaled answer is not reached, it is not passed off: single precision is refused naming the
+// quantity float cannot hold; active_set's case above ends marked not converged.
+TEST_P(BemHardCases, ExtremeScalesOutOfReachAreRefusedOrMarked) {
   for (const bool periodic : {true, false})
     for (const bool single : {false, true})
       for (const Scale scale : kExtremeScales) {
         if (!known_wrong(GetParam(), single, scale)) continue;
-        EXPECT_EQ(scaled_answer_problems(GetParam(), periodic, single, scale), "")
-            << (periodic ? "periodic" : "non-periodic") << (single ? ", float" : ", double") << ", heights x "
-            << scale.height << ", sides x " << scale.lateral;
+        const std::string problems = scaled_answer_problems(GetParam(), periodic, single, scale);
+        const std::string expected = single ? "single precision cannot hold" : "not converged";
+        EXPECT_NE(problems.find(expected), std::string::npos)
+            << problems << (periodic ? " periodic" : " non-periodic") << (single ? ", float" : ", double")
+            << ", heights x " << scale.height << ", sides x " << scale.lateral;
       }
 }
 
