@@ -126,6 +126,23 @@ TEST(Levelling, QuadraticRemovesAnyPolynomialOfDegreeTwoAndPlaneDoesNot) {
   EXPECT_GT(plane.abs().maxCoeff(), 1e-7);
 }
 
+TEST(HarmonicFill, MoreInvalidPointsThanItsBoundAreRefusedAtOnce) {
+  // 600 x 600 points, all invalid but one row: 359400 to fill, beyond the bound of 262144; refused before any
+  // matrix is built (this test takes milliseconds; the solve would take tens of seconds).
+  std::vector<double> values(600 * 600, nan);
+  for (int x = 0; x < 600; ++x)
+    values[static_cast<std::size_t>(x)] = 1e-9;
+  try {
+    fill_invalid_points(values, 600, 600, FillMethod::harmonic);
+    ADD_FAILURE() << "filled more points than the bound";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("harmonic fill of 359400 invalid points refused"),
+              std::string::npos)
+        << error.what();
+    EXPECT_NE(std::string(error.what()).find("--crop measured"), std::string::npos) << error.what();
+  }
+}
+
 class RegionFiles : public testing::FolderTest {
  protected:
   RegionFiles() : FolderTest("contactbench_regions_") {}

@@ -73,6 +73,12 @@ void fill_invalid_points(std::vector<Real>& values, Index nx, Index ny, FillMeth
       if (std::isnan(value)) value = mean;
     return;
   }
+  if (unknowns > kMaxHarmonicFillPoints)
+    throw Error(
+        "harmonic fill of " + std::to_string(unknowns) + " invalid points refused: more than the " +
+        std::to_string(kMaxHarmonicFillPoints) +
+        " its direct solve fills in about two seconds; read the measured part (--crop measured, crop = "
+        "\"measured\"), or fill with the mean (--fill mean)");
   // Harmonic: the discrete Laplace equation on the invalid points with the valid neighbours as boundary
   // values, sum over the four (in-grid) neighbours q of (h_p - h_q) = 0. Every connected patch of invalid
   // points touches a valid point (not all points are invalid), so the matrix is symmetric positive definite.
