@@ -290,6 +290,20 @@ TEST_F(MeasurementFiles, CropAndRowAlignmentAreRecordedByStatsAndScenes) {
   EXPECT_EQ(md5_of(input), before);
 }
 
+TEST_F(MeasurementFiles, SweepAndBemPassTheReadingOptionsOn) {
+  // sur-3.sur is refused for its unmeasured points unless cropped (or filled): the option must reach the
+  // scene these commands build, not be dropped.
+  const fs::path input = samples / "sur-3.sur";
+  const CommandResult refused = run("sweep " + input.string() + " --levels 8");
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_NE(refused.err.find("233009 of 262144 points"), std::string::npos) << refused.err;
+  const CommandResult cropped = run("sweep " + input.string() + " --levels 8 --crop measured --level plane");
+  EXPECT_EQ(cropped.status, 0) << cropped.err;
+  const CommandResult channel = run("bem " + (samples / "di-3.di").string() + " --channel Nope --loads 1e-3");
+  EXPECT_EQ(channel.status, 1);
+  EXPECT_NE(channel.err.find("unknown channel 'Nope'"), std::string::npos) << channel.err;
+}
+
 TEST_F(MeasurementFiles, HelpListsEveryFormat) {
   for (const std::string command : {"stats", "convert"}) {
     const CommandResult help = run(command + " --help");
