@@ -26,7 +26,8 @@ void run_convert(const ConvertOptions& o) {
   write_topography(o.output, reading.surface);
   std::cerr << "convert: " << o.topography.file << " (" << to_string(reading.format) << ", channel '"
             << reading.channel << "', " << reading.invalid_points << " invalid points filled by "
-            << to_string(reading.fill) << ", level " << to_string(reading.level) << ") -> " << o.output
+            << to_string(reading.fill) << ", crop " << reading.crop << ", rows aligned by "
+            << to_string(reading.align_rows) << ", level " << to_string(reading.level) << ") -> " << o.output
             << '\n';
 }
 

@@ -15,6 +15,13 @@ toml::table surface_keys(const TopographyOptions& o) {
     surface.insert("size", *o.size);
   else if (o.size_y)
     throw Error("--size-y: give --size too (the scene's size is lx alone or [lx, ly])");
+  // The reading options every command takes (docs/formats.md), passed on rather than silently dropped.
+  if (o.channel) surface.insert("channel", *o.channel);
+  surface.insert("fill", o.fill);
+  surface.insert("level", o.level);
+  surface.insert("align_rows", o.align_rows);
+  if (o.unit) surface.insert("unit", *o.unit);
+  if (o.crop) surface.insert("crop", *o.crop);
   return surface;
 }
 

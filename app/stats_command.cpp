@@ -32,7 +32,12 @@ JsonObject conventions(Window window) {
   c.add("rms_gradient", "areal sqrt(<|grad h|^2>) = sqrt(m2x + m2y)");
   c.add("sq", "root-mean-square height about the mean, after the levelling named in 'level'");
   c.add("level",
-        "none: heights as stored; mean: mean removed; plane: least-squares plane removed (docs/formats.md)");
+        "none: heights as stored; mean: mean removed; plane, quadratic: least-squares polynomial of degree "
+        "1, 2 "
+        "removed (docs/formats.md)");
+  c.add("crop", "the region read (before filling), and the columns and rows it kept; none: the whole grid");
+  c.add("align_rows",
+        "what each scan line (row) lost after filling, before level: none, mean, median, linear");
   c.add("unit",
         "the unit the file's heights were written in (stated by the file, given with --unit, or m); every "
         "value here is in SI");
@@ -112,6 +117,8 @@ void run_stats(const StatsOptions& o) {
       .add("fill", to_string(reading.fill))
       .add("level", to_string(reading.level))
       .add("unit", reading.unit)
+      .add("crop", reading.crop)
+      .add("align_rows", to_string(reading.align_rows))
       .add("nx", g.nx)
       .add("ny", g.ny)
       .add("lx", g.lx)

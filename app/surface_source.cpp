@@ -99,7 +99,18 @@ std::optional<FileSurfaceSpec> parse_file(const Section& s, const fs::path& fold
     }
   }
   if (const auto fill = s.choice("fill", {"none", "harmonic", "mean"})) spec.fill = *parse_fill_method(*fill);
-  if (const auto level = s.choice("level", {"none", "mean", "plane"})) spec.level = *parse_levelling(*level);
+  if (const auto level = s.choice("level", {"none", "mean", "plane", "quadratic"}))
+    spec.level = *parse_levelling(*level);
+  if (const auto align = s.choice("align_rows", {"none", "mean", "median", "linear"}))
+    spec.align_rows = *parse_row_alignment(*align);
+  if (s.has("crop")) {
+    if (const auto text = s.string("crop", false, kCropAccepted)) {
+      // "none", as a resolved scene writes it back: the whole grid.
+      spec.crop = parse_crop(*text);
+      if (!spec.crop && *text != "none")
+        s.problem("crop", "not a region: \"" + *text + "\"", std::string(kCropAccepted) + ", or none");
+    }
+  }
   if (const auto unit = s.choice("unit", {"m", "mm", "um", "nm", "pm"})) spec.unit = *unit;
   if (file) {
     spec.path = fs::absolute(folder / *file).lexically_normal();
@@ -138,7 +149,8 @@ std::optional<SurfaceSpec> read_surface_keys(const Section& root, const fs::path
   const toml::table* table = root.subtable("surface", true, "a table [surface] with generate or file");
   if (!table) return std::nullopt;
   const Section s(*table, "surface", problems);
-  s.reject_unknown({"generate", "file", "size", "periodic", "channel", "fill", "level", "unit"});
+  s.reject_unknown(
+      {"generate", "file", "size", "periodic", "channel", "fill", "level", "unit", "crop", "align_rows"});
   const bool generated = s.has("generate"), from_file = s.has("file");
   if (generated && from_file) {
     s.problem("file", "generate and file are mutually exclusive", "generate = { ... } or file = \"...\"");
@@ -150,7 +162,8 @@ std::optional<SurfaceSpec> read_surface_keys(const Section& root, const fs::path
     return std::nullopt;
   }
   if (generated) {
-    for (std::string_view key : {"size", "periodic", "channel", "fill", "level", "unit"})
+    for (std::string_view key :
+         {"size", "periodic", "channel", "fill", "level", "unit", "crop", "align_rows"})
       if (s.has(key))
         s.problem(
             key,
@@ -202,6 +215,8 @@ void write_surface_keys(const SurfaceSpec& surface, SceneKeys& root) {
     table.put("fill", std::string(to_string(f.fill)));
     table.put("level", std::string(to_string(f.level)));
     if (f.unit) table.put("unit", *f.unit);
+    table.put("crop", f.crop ? to_string(*f.crop) : std::string("none"));
+    table.put("align_rows", std::string(to_string(f.align_rows)));
   }
 }
 
@@ -226,6 +241,8 @@ Surface make_surface(const SurfaceSpec& spec, int threads) {
   options.fill = file.fill;
   options.level = file.level;
   options.unit = file.unit;
+  options.crop = file.crop;
+  options.align_rows = file.align_rows;
   // Levelling "plane" removes the tilt as well; the mean is removed in any case.
   Surface surface = read_topography(file.path, options).centred();
   // The moments stage and every method would refuse heights beyond what sums hold; that is the file's fault,

@@ -9,6 +9,8 @@
 #include <string>
 #include <variant>
 
+#include "contactbench/core/formats/crop.hpp"
+#include "contactbench/core/formats/row_alignment.hpp"
 #include "contactbench/core/formats/surface_repair.hpp"
 #include "contactbench/core/surface.hpp"
 #include "contactbench/core/types.hpp"
@@ -43,6 +45,9 @@ struct FileSurfaceSpec {
   Levelling level = Levelling::none;
   // unit = "nm": the unit of a file that states none (matrices, .npy, x y z lists); docs/formats.md.
   std::optional<std::string> unit;
+  // crop = "measured" | "px:..." | "m:..."; align_rows = "none" | "mean" | "median" | "linear".
+  std::optional<CropSpec> crop;
+  RowAlignment align_rows = RowAlignment::none;
 };
 
 struct SurfaceSpec {

@@ -31,8 +31,23 @@ void TopographyOptions::add_to(CLI::App& command, const std::string& periodic_ef
       .add_option("--fill", fill,
                   "invalid (unmeasured) points: none refuses the file, harmonic or mean fills them")
       ->check(CLI::IsMember({"none", "harmonic", "mean"}));
-  command.add_option("--level", level, "levelling after reading: none, mean or plane (least squares)")
-      ->check(CLI::IsMember({"none", "mean", "plane"}));
+  command
+      .add_option("--crop", crop,
+                  "the region read, before invalid points are counted or filled: measured (the largest fully "
+                  "measured rectangle), px:X0,Y0,NX,NY (pixels) or m:X0,Y0,LX,LY (metres)")
+      ->check([](const std::string& text) {
+        return parse_crop(text) ? std::string() : std::string("expected ") + kCropAccepted;
+      });
+  command
+      .add_option("--align-rows", align_rows,
+                  "per scan line (row), after filling: none, mean, median or linear (each row's own line)")
+      ->check(CLI::IsMember({"none", "mean", "median", "linear"}));
+  command
+      .add_option(
+          "--level", level,
+          "levelling after row alignment: none, mean, plane (degree 1) or quadratic (degree 2), least "
+          "squares")
+      ->check(CLI::IsMember({"none", "mean", "plane", "quadratic"}));
   command
       .add_option("--unit", unit,
                   "unit of the numbers of a file that states none (matrices, .npy, x y z lists): m, mm, um, "
@@ -49,6 +64,8 @@ TopographyReading TopographyOptions::read_with_report() const {
   options.fill = parse_fill_method(fill).value_or(FillMethod::none);  // CLI11 has checked the value
   options.level = parse_levelling(level).value_or(Levelling::none);
   options.unit = unit;
+  if (crop) options.crop = parse_crop(*crop);  // CLI11 has checked the value
+  options.align_rows = parse_row_alignment(align_rows).value_or(RowAlignment::none);
   return read_topography_reading(file, options);
 }
 

@@ -19,10 +19,13 @@ struct TopographyOptions {
   bool periodic = false;
   std::optional<std::string> channel;  // name or 0-based index (docs/formats.md)
   std::string fill = "none";           // none | harmonic | mean
-  std::string level = "none";          // none | mean | plane
+  std::string level = "none";          // none | mean | plane | quadratic
   std::optional<std::string> unit;     // height unit of a file that states none (m, mm, um, nm, pm)
+  std::optional<std::string> crop;     // measured | px:X0,Y0,NX,NY | m:X0,Y0,LX,LY
+  std::string align_rows = "none";     // none | mean | median | linear
 
-  // Registers FILE, --size, --size-y, --periodic, --channel, --fill, --level and --unit on `command`;
+  // Registers FILE, --size, --size-y, --periodic, --channel, --fill, --level, --unit, --crop and
+  // --align-rows on `command`;
   // `periodic_effect` completes the help of --periodic with what periodicity changes for this command.
   void add_to(CLI::App& command, const std::string& periodic_effect);
   // Reads the file with these options (Error naming the file and line on bad content).

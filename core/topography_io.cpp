@@ -131,12 +131,29 @@ TopographyReading read_topography_reading(const std::filesystem::path& path,
         return formats::read_gwyddion(path, lines, options);
     }
   }();
-  if (options.level != Levelling::none) {
+  // The text formats with a header hold no invalid points: their region and levelling apply to the surface.
+  std::string crop = "none";
+  if (options.crop) {
+    std::vector<Real> values(static_cast<std::size_t>(surface.nx() * surface.ny()));
+    Eigen::Map<HeightMap>(values.data(), surface.ny(), surface.nx()) = surface.heights();
+    Index nx = surface.nx(), ny = surface.ny();
+    Real lx = surface.grid().lx, ly = surface.grid().ly;
+    const formats::CropResult kept = formats::crop_values(path, values, nx, ny, lx, ly, *options.crop);
+    crop = to_string(*options.crop) + " (columns " + std::to_string(kept.x0) + " to " +
+           std::to_string(kept.x0 + nx - 1) + ", rows " + std::to_string(kept.y0) + " to " +
+           std::to_string(kept.y0 + ny - 1) + ")";
+    // A part of a periodic surface does not repeat; the caller may still say it does.
+    surface = Surface(Grid{nx, ny, lx, ly, options.periodic.value_or(false)},
+                      Eigen::Map<const HeightMap>(values.data(), ny, nx));
+  }
+  if (options.level != Levelling::none || options.align_rows != RowAlignment::none) {
     HeightMap heights = surface.heights();
+    align_rows(heights, options.align_rows);
     level_heights(heights, surface.grid(), options.level);
     surface = Surface(surface.grid(), std::move(heights));
   }
-  return TopographyReading{std::move(surface), format, "height", {"height"}, 0, options.fill, options.level};
+  return TopographyReading{std::move(surface), format,        "height", {"height"}, 0,
+                           options.fill,       options.level, "m",      crop,       options.align_rows};
 }
 
 Surface read_topography(const std::filesystem::path& path, const TopographyReadOptions& options) {

@@ -7,7 +7,9 @@
 #include <string_view>
 #include <vector>
 
+#include "contactbench/core/formats/crop.hpp"
 #include "contactbench/core/formats/raw_topography.hpp"
+#include "contactbench/core/formats/row_alignment.hpp"
 #include "contactbench/core/formats/surface_repair.hpp"
 #include "contactbench/core/surface.hpp"
 
@@ -65,6 +67,10 @@ struct TopographyReadOptions {
   // coordinates) are multiplied by it. Absent: metres, and Sq above 1 mm or below 1 pm is refused. A file
   // that states its own unit is refused with one given.
   std::optional<std::string> unit;
+  // The region read (docs/formats.md "regions and levelling"), before invalid points are counted or filled.
+  std::optional<CropSpec> crop;
+  // Per scan line (row), after filling and before `level`.
+  RowAlignment align_rows = RowAlignment::none;
 };
 
 // A surface with what was done to get it, for reports.
@@ -76,7 +82,9 @@ struct TopographyReading {
   Index invalid_points = 0;           // how many were filled
   FillMethod fill = FillMethod::none;
   Levelling level = Levelling::none;
-  std::string unit = "m";  // the unit the file's heights were read in (given or stated), for reports
+  std::string unit = "m";     // the unit the file's heights were read in (given or stated), for reports
+  std::string crop = "none";  // the region read: "none", or the crop and the rectangle it selected
+  RowAlignment align_rows = RowAlignment::none;
 };
 
 TopographyReading read_topography_reading(const std::filesystem::path& path,

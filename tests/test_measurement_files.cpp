@@ -259,6 +259,51 @@ TEST_F(MeasurementFiles, MethodsAndConvertRefuseALineScanSayingWhy) {
   EXPECT_NE(result.err.find(why), std::string::npos) << result.err;
 }
 
+TEST_F(MeasurementFiles, CropAndRowAlignmentAreRecordedByStatsAndScenes) {
+  const fs::path input = samples / "sur-3.sur";
+  const std::string before = md5_of(input);
+  const CommandResult stats =
+      run("stats " + input.string() + " --crop measured --align-rows median --level quadratic");
+  ASSERT_EQ(stats.status, 0) << stats.err;
+  EXPECT_NE(stats.out.find("\"crop\": \"measured (columns 61 to 249, rows 229 to 280)\""), std::string::npos)
+      << stats.out;
+  EXPECT_NE(stats.out.find("\"align_rows\": \"median\""), std::string::npos) << stats.out;
+  EXPECT_NE(stats.out.find("\"level\": \"quadratic\""), std::string::npos) << stats.out;
+  const fs::path scene =
+      write("crop.toml", "name = \"crop\"\n[surface]\nfile = \"" + input.string() +
+                             "\"\ncrop = \"measured\"\nalign_rows = \"mean\"\nlevel = \"plane\"\n"
+                             "[material]\nE = 100e9\nnu = 0.3\n[loads]\nvalues = [1e-3]\n"
+                             "[methods.persson]\nanisotropy = \"average\"\n");
+  const CommandResult result =
+      run("run " + scene.string() + " --out " + (folder_ / "r").string() + " --no-plots --quiet");
+  ASSERT_EQ(result.status, 0) << result.err;
+  const std::string summary = slurp(folder_ / "r" / "summary.json");
+  EXPECT_NE(summary.find("\"crop\": \"measured\""), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"align_rows\": \"mean\""), std::string::npos) << summary;
+  const fs::path bad = write("bad.toml", "name = \"bad\"\n[surface]\nfile = \"" + input.string() +
+                                             "\"\ncrop = \"all\"\n[material]\nE = 100e9\nnu = 0.3\n[loads]\n"
+                                             "values = [1e-3]\n[methods.persson]\n");
+  const CommandResult refused =
+      run("run " + bad.string() + " --out " + (folder_ / "b").string() + " --no-plots");
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_NE(refused.err.find("surface.crop"), std::string::npos) << refused.err;
+  EXPECT_EQ(md5_of(input), before);
+}
+
+TEST_F(MeasurementFiles, SweepAndBemPassTheReadingOptionsOn) {
+  // sur-3.sur is refused for its unmeasured points unless cropped (or filled): the option must reach the
+  // scene these commands build, not be dropped.
+  const fs::path input = samples / "sur-3.sur";
+  const CommandResult refused = run("sweep " + input.string() + " --levels 8");
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_NE(refused.err.find("233009 of 262144 points"), std::string::npos) << refused.err;
+  const CommandResult cropped = run("sweep " + input.string() + " --levels 8 --crop measured --level plane");
+  EXPECT_EQ(cropped.status, 0) << cropped.err;
+  const CommandResult channel = run("bem " + (samples / "di-3.di").string() + " --channel Nope --loads 1e-3");
+  EXPECT_EQ(channel.status, 1);
+  EXPECT_NE(channel.err.find("unknown channel 'Nope'"), std::string::npos) << channel.err;
+}
+
 TEST_F(MeasurementFiles, HelpListsEveryFormat) {
   for (const std::string command : {"stats", "convert"}) {
     const CommandResult help = run(command + " --help");

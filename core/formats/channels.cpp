@@ -108,6 +108,16 @@ TopographyReading reading_from_channels(const fs::path& path, RawTopography raw,
   if (!format_carries_unit(format) && !options.unit)
     check_plausible_as_metres(path, channel.values, std::string(to_string(format)));
 
+  std::string crop = "none";
+  if (options.crop) {
+    Index nx = channel.nx, ny = channel.ny;
+    const formats::CropResult kept = crop_values(path, channel.values, nx, ny, lx, ly, *options.crop);
+    crop = to_string(*options.crop) + " (columns " + std::to_string(kept.x0) + " to " +
+           std::to_string(kept.x0 + nx - 1) + ", rows " + std::to_string(kept.y0) + " to " +
+           std::to_string(kept.y0 + ny - 1) + ")";
+    channel.nx = nx;
+    channel.ny = ny;
+  }
   const auto invalid = static_cast<Index>(
       std::count_if(channel.values.begin(), channel.values.end(), [](Real v) { return std::isnan(v); }));
   if (invalid == static_cast<Index>(channel.values.size()))
@@ -132,8 +142,11 @@ TopographyReading reading_from_channels(const fs::path& path, RawTopography raw,
       throw InputError(path, 0,
                        "channel '" + channel.name + "' holds a height that is not finite after scaling");
 
-  const Grid grid{channel.nx, channel.ny, lx, ly, options.periodic.value_or(raw.periodic)};
+  // A part of a periodic surface does not repeat; the caller may still say it does.
+  const Grid grid{channel.nx, channel.ny, lx, ly,
+                  options.periodic.value_or(options.crop ? false : raw.periodic)};
   HeightMap heights = Eigen::Map<const HeightMap>(channel.values.data(), channel.ny, channel.nx);
+  align_rows(heights, options.align_rows);
   level_heights(heights, grid, options.level);
   std::vector<std::string> names;
   for (const Channel& c : raw.channels)
@@ -145,7 +158,9 @@ TopographyReading reading_from_channels(const fs::path& path, RawTopography raw,
                            invalid,
                            options.fill,
                            options.level,
-                           unit};
+                           unit,
+                           crop,
+                           options.align_rows};
 }
 
 }  // namespace contactbench::formats

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include <Eigen/Dense>
 #include <Eigen/Sparse>
 
 #include "contactbench/core/error.hpp"
@@ -29,6 +30,8 @@ std::string_view to_string(Levelling levelling) {
       return "mean";
     case Levelling::plane:
       return "plane";
+    case Levelling::quadratic:
+      return "quadratic";
   }
   return "unknown";
 }
@@ -44,6 +47,7 @@ std::optional<Levelling> parse_levelling(std::string_view text) {
   if (text == "none") return Levelling::none;
   if (text == "mean") return Levelling::mean;
   if (text == "plane") return Levelling::plane;
+  if (text == "quadratic") return Levelling::quadratic;
   return std::nullopt;
 }
 
@@ -69,6 +73,12 @@ void fill_invalid_points(std::vector<Real>& values, Index nx, Index ny, FillMeth
       if (std::isnan(value)) value = mean;
     return;
   }
+  if (unknowns > kMaxHarmonicFillPoints)
+    throw Error(
+        "harmonic fill of " + std::to_string(unknowns) + " invalid points refused: more than the " +
+        std::to_string(kMaxHarmonicFillPoints) +
+        " its direct solve fills in about two seconds; read the measured part (--crop measured, crop = "
+        "\"measured\"), or fill with the mean (--fill mean)");
   // Harmonic: the discrete Laplace equation on the invalid points with the valid neighbours as boundary
   // values, sum over the four (in-grid) neighbours q of (h_p - h_q) = 0. Every connected patch of invalid
   // points touches a valid point (not all points are invalid), so the matrix is symmetric positive definite.
@@ -103,6 +113,35 @@ void fill_invalid_points(std::vector<Real>& values, Index nx, Index ny, FillMeth
     if (unknown_of[k] >= 0) values[k] = filled(unknown_of[k]);
 }
 
+namespace {
+
+// The least-squares a + b u + c v + d u^2 + e u v + f v^2 with u, v the positions scaled to [-1, 1] (so that
+// the 6 x 6 normal equations are well conditioned; the fit does not depend on the scaling), subtracted.
+void subtract_quadratic(HeightMap& heights) {
+  const Index ny = heights.rows(), nx = heights.cols();
+  const auto scaled = [](Index k, Index n) {
+    return n > 1 ? 2 * static_cast<Real>(k) / static_cast<Real>(n - 1) - 1 : Real{0};
+  };
+  Eigen::Matrix<Real, 6, 6> normal = Eigen::Matrix<Real, 6, 6>::Zero();
+  Eigen::Matrix<Real, 6, 1> right = Eigen::Matrix<Real, 6, 1>::Zero();
+  for (Index y = 0; y < ny; ++y)
+    for (Index x = 0; x < nx; ++x) {
+      const Real u = scaled(x, nx), v = scaled(y, ny);
+      const Eigen::Matrix<Real, 6, 1> basis{{1, u, v, u * u, u * v, v * v}};
+      normal.noalias() += basis * basis.transpose();
+      right.noalias() += basis * heights(y, x);
+    }
+  // Fewer than three rows or columns leave some terms undetermined; the pseudo-inverse fits those as zero.
+  const Eigen::Matrix<Real, 6, 1> c = normal.completeOrthogonalDecomposition().solve(right);
+  for (Index y = 0; y < ny; ++y)
+    for (Index x = 0; x < nx; ++x) {
+      const Real u = scaled(x, nx), v = scaled(y, ny);
+      heights(y, x) -= c(0) + c(1) * u + c(2) * v + c(3) * u * u + c(4) * u * v + c(5) * v * v;
+    }
+}
+
+}  // namespace
+
 void level_heights(HeightMap& heights, const Grid& grid, Levelling levelling) {
   if (levelling == Levelling::none) return;
   const Real mean = heights.mean();
@@ -110,6 +149,7 @@ void level_heights(HeightMap& heights, const Grid& grid, Levelling levelling) {
     heights -= mean;
     return;
   }
+  if (levelling == Levelling::quadratic) return subtract_quadratic(heights);
   // On a full grid the centred coordinates are orthogonal to each other and to the constant, so the normal
   // equations of the least-squares plane decouple: slope_x = sum(xc h) / sum(xc^2), and the same along y.
   const Index nx = grid.nx;

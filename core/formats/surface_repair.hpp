@@ -21,21 +21,29 @@ enum class FillMethod {
 // What is subtracted from the heights after reading. none: the heights as stored.
 enum class Levelling {
   none,
-  mean,   // the mean height
-  plane,  // the least-squares plane a + b x + c y over all points
+  mean,       // the mean height
+  plane,      // the least-squares plane a + b x + c y over all points (polynomial of degree 1)
+  quadratic,  // the least-squares polynomial of degree 2 (also x^2, x y, y^2: curvature, a spherical form)
 };
 
 std::string_view to_string(FillMethod method);
 std::string_view to_string(Levelling levelling);
-// Parse "none" | "harmonic" | "mean" (and "none" | "mean" | "plane"); nullopt for anything else.
+// Parse "none" | "harmonic" | "mean" (and "none" | "mean" | "plane" | "quadratic"); nullopt for anything
+// else.
 std::optional<FillMethod> parse_fill_method(std::string_view text);
 std::optional<Levelling> parse_levelling(std::string_view text);
 
+// The most invalid points the harmonic fill takes: its sparse direct solve grows faster than the count
+// (261121 points: about 2 s on two cores; 1048576: 18 s), so more are refused, with the ways out.
+inline constexpr Index kMaxHarmonicFillPoints = Index{1} << 18;
+
 // Replaces every NaN of `values` (ny x nx, row-major) by the method's height. Throws Error when no value is
-// valid (nothing to fill from) or when `method` is none and there is a NaN.
+// valid (nothing to fill from), when `method` is none and there is a NaN, or when a harmonic fill has more
+// than kMaxHarmonicFillPoints to fill.
 void fill_invalid_points(std::vector<Real>& values, Index nx, Index ny, FillMethod method);
 
-// Subtracts the mean or the least-squares plane in place (heights(iy, ix) at x = ix dx, y = iy dy).
+// Subtracts the mean, the least-squares plane or quadratic in place (heights(iy, ix) at x = ix dx, y = iy
+// dy).
 void level_heights(HeightMap& heights, const Grid& grid, Levelling levelling);
 
 }  // namespace contactbench
