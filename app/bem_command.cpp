@@ -18,6 +18,7 @@
 #include "contactbench/app/unconverged.hpp"
 #include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/formats/text_values.hpp"
 
 namespace contactbench {
 
@@ -28,6 +29,8 @@ struct BemOptions {
   std::vector<Real> loads;
   std::optional<Real> modulus;   // E* [Pa]; default: the paper's material, E = 100 GPa, nu = 0.3
   std::optional<Real> hardness;  // the interface's effect (app/interface.hpp)
+  // The interface's adhesion as "MODEL,KEY=VALUE,KEY=VALUE" (interface.adhesion's keys in the scene's order).
+  std::string adhesion;
   // The BEM method's keys, each a flag as its declaration says (app/methods/bem_settings.cpp).
   SettingFlags settings{[] {
     std::vector<SettingSpec> specs;
@@ -45,8 +48,35 @@ FlagNames flag_names(const BemOptions& o) {
                      {"material.estar", "--modulus"},
                      {"loads.values", "--loads"},
                      {"interface.hardness", "--hardness"}};
+  for (const char* key : {"model", "work", "stress", "range"})
+    names["interface.adhesion." + std::string(key)] = "--adhesion " + std::string(key);
   o.settings.name_flags("methods.bem.", names);
   return names;
+}
+
+// --adhesion "dugdale,work=0.05,stress=1e5": the model, then KEY=VALUE numbers; the scene's reader checks
+// them (each named as --adhesion KEY).
+toml::table adhesion_keys(const std::string& text) {
+  const std::string accepted =
+      "accepted: --adhesion dugdale,work=W,stress=SIGMA0 or --adhesion exponential,work=W,range=RHO";
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  toml::table table{{"model", parts.front()}};
+  for (std::size_t k = 1; k < parts.size(); ++k) {
+    const std::size_t equals = parts[k].find('=');
+    if (equals == std::string::npos)
+      throw Error("--adhesion: \"" + parts[k] + "\" is not KEY=VALUE; " + accepted);
+    const std::string key = parts[k].substr(0, equals), value = parts[k].substr(equals + 1);
+    const std::optional<double> number = formats::parse_real(value);
+    if (!number) throw Error("--adhesion: " + key + " = \"" + value + "\" is not a number; " + accepted);
+    table.insert(key, *number);
+  }
+  return table;
 }
 
 // The one-method scene the flags describe: only what was given, so that every default is the scene's.
@@ -66,7 +96,10 @@ toml::table scene_of(const BemOptions& o) {
                        {"material", material},
                        {"loads", toml::table{{"values", loads}}},
                        {"methods", toml::table{{"bem", bem}}}};
-  if (o.hardness) document.insert("interface", toml::table{{"hardness", *o.hardness}});
+  toml::table interface;
+  if (o.hardness) interface.insert("hardness", *o.hardness);
+  if (!o.adhesion.empty()) interface.insert("adhesion", adhesion_keys(o.adhesion));
+  if (!interface.empty()) document.insert("interface", interface);
   return document;
 }
 
@@ -87,6 +120,7 @@ std::string command_line(const BemOptions& o) {
   if (t.level != "none") text += " --level " + t.level;
   add("--modulus", o.modulus);
   add("--hardness", o.hardness);
+  if (!o.adhesion.empty()) text += " --adhesion " + o.adhesion;
   return text + o.settings.command_text() + " --threads " + std::to_string(o.threads);
 }
 
@@ -129,6 +163,13 @@ void add_bem_command(CLI::App& parent, const CommandContext& context) {
       "H [Pa]: the interface's hardness (the scene's interface.hardness): cap the pressure at H, perfectly "
       "plastic (points at H are plastic: the surface flows to fit the flat there, gap 0); adds the CSV "
       "column plastic_fraction. Every load must be below H/E*");
+  command->add_option(
+      "--adhesion", options->adhesion,
+      "the interface's adhesion (the scene's interface.adhesion): dugdale,work=W,stress=SIGMA0 "
+      "(Maugis-Dugdale: "
+      "SIGMA0 [Pa] while the gap is below W/SIGMA0, W [J/m^2]) or exponential,work=W,range=RHO ((W/RHO) "
+      "exp(-g/RHO), RHO [m]); loads are then net loads, the area the repulsive contact's, and the CSV gains "
+      "adhesive_load, attractive_fraction, zone_pixels and outer_iterations (docs/theory.md section 10)");
   options->settings.add_to(*command);
   command->add_option("--out", options->out, "CSV file (default: standard output)")
       ->check(refuse_empty_output_name);

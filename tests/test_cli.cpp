@@ -385,6 +385,37 @@ TEST_F(Cli, BemRefusesBadLoadsAndContradictoryFlags) {
   EXPECT_NE(modulus.err.find("--modulus"), std::string::npos) << modulus.err;
 }
 
+// --adhesion is the scene's interface.adhesion: the adhesive columns appear, the area at the same net load
+// grows, and bad values are refused naming the flag's key (a table the scene reader checks, as for scenes).
+TEST_F(Cli, BemAdhesionIsTheInterfacesAdhesion) {
+  const auto surface = folder_ / "s.txt", plain = folder_ / "plain.csv", sticky = folder_ / "sticky.csv";
+  ASSERT_EQ(run("generate --sigma 0.5e-6 --hurst 0.5 --qr 3.14e4 --size 200e-6 --grid 64 --seed 4 --out " +
+                surface.string())
+                .status,
+            0);
+  const std::string common = "bem " + surface.string() + " --loads 0.001 --modulus 4e6 --out ";
+  ASSERT_EQ(run(common + plain.string()).status, 0);
+  const CommandResult adhesive = run(common + sticky.string() + " --adhesion dugdale,work=0.05,stress=1e5");
+  ASSERT_EQ(adhesive.status, 0) << adhesive.err;
+  std::vector<std::string> header;
+  const std::vector<CsvRow> without = csv_rows(slurp(plain), header);
+  const std::vector<CsvRow> with = csv_rows(slurp(sticky), header);
+  ASSERT_EQ(with.size(), 1u);
+  for (const char* column : {"adhesive_load", "attractive_fraction", "zone_pixels", "outer_iterations"})
+    EXPECT_TRUE(with[0].count(column)) << "no column " << column;
+  EXPECT_GT(std::stod(with[0].at("area_fraction")), std::stod(without[0].at("area_fraction")));
+  const CommandResult negative = run(common + sticky.string() + " --adhesion dugdale,work=-1,stress=1e5");
+  EXPECT_NE(negative.status, 0);
+  EXPECT_NE(negative.err.find("--adhesion work (interface.adhesion.work): out of range"), std::string::npos)
+      << negative.err;
+  const CommandResult missing = run(common + sticky.string() + " --adhesion exponential,work=0.05");
+  EXPECT_NE(missing.status, 0);
+  EXPECT_NE(missing.err.find("--adhesion range"), std::string::npos) << missing.err;
+  const CommandResult not_a_number = run(common + sticky.string() + " --adhesion dugdale,work=x,stress=1");
+  EXPECT_NE(not_a_number.status, 0);
+  EXPECT_NE(not_a_number.err.find("is not a number"), std::string::npos) << not_a_number.err;
+}
+
 // A scene end to end through the binary: the files appear in --out, the table on standard output.
 TEST_F(Cli, RunWritesTheComparisonOfASmallScene) {
   const auto scene = folder_ / "tiny.toml";
