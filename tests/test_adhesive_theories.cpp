@@ -23,6 +23,7 @@
 #include "contactbench/theories/jkr_sphere.hpp"
 #include "contactbench/theories/maugis_dugdale_sphere.hpp"
 #include "contactbench/theories/maugis_greenwood_williamson.hpp"
+#include "contactbench/theories/pastewka_robbins_criterion.hpp"
 #include "small_scene.hpp"
 
 namespace contactbench {
@@ -275,6 +276,26 @@ TEST(AdhesiveSummits, CurvesAnswerTheLoadsAndGrowWithThem) {
   EXPECT_THROW(fuller_tabor_curve(moments, kModulus, 0, loads, AdhesiveBranch::approach), Error);
 }
 
+// The Pastewka–Robbins number from the moments, against the hand calculation for an isotropic surface with
+// m2 = 0.01 (h'rms = √0.02) and m4 = 3e12/8 (h''rms = √(8 m4/3)/2 = 5e5 1/m), E* = 1 MPa, w = 0.05 J/m^2,
+// Δr = δc = 0.5 um: C = 0.7071068 (0.08)^(2/3) = 0.1312840 (7 figures: 1e-6 relative), and its scaling
+// (C ∝ E*, ∝ 1/w at fixed Δr): round-off only, 1e-12.
+TEST(PastewkaRobbins, StickinessNumberFromTheMoments) {
+  SpectralMoments moments;
+  moments.m0 = 1e-12;
+  moments.m2x = moments.m2y = 0.01;
+  moments.m4x = moments.m4y = 3e12 / 8;
+  const AdhesionLaw law = AdhesionLaw::dugdale(0.05, 1e5);
+  const PastewkaRobbinsCriterion c = pastewka_robbins_criterion(moments, 1e6, law);
+  EXPECT_NEAR(c.rms_curvature, 5e5, 1e-9 * 5e5);
+  EXPECT_NEAR(c.number, 0.1312840, 1e-6 * 0.1312840);
+  EXPECT_TRUE(c.sticky());
+  EXPECT_NEAR(pastewka_robbins_criterion(moments, 1e7, law).number, 10 * c.number, 1e-12 * c.number);
+  const AdhesionLaw weaker = AdhesionLaw::dugdale(0.005, 1e4);  // same δc
+  EXPECT_NEAR(pastewka_robbins_criterion(moments, 1e6, weaker).number, 10 * c.number, 1e-12 * c.number);
+  EXPECT_FALSE(pastewka_robbins_criterion(moments, 1e8, law).sticky());
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // As methods of a scene: the paper's surface A on 32^2 (tests/small_scene.hpp), stiff (E = 100 GPa) and very
 // sticky (w = 1 J/m^2, σ0 = 100 MPa, as tests/test_scene_run.cpp's adhesive scene), beside the adhesive BEM.
@@ -316,6 +337,8 @@ ignore = ["adhesion"]
   }
   EXPECT_NE(report.methods[2].curve.parameters.find("Maugis' lambda of the summits"), std::string::npos);
   EXPECT_NE(report.methods[3].curve.parameters.find("branch = retract"), std::string::npos);
+  EXPECT_NE(report.methods[1].curve.parameters.find("Pastewka-Robbins stickiness number C"),
+            std::string::npos);
   const Comparison comparison = compare(report);
   std::ostringstream table;
   write_table_md(table, report, comparison, current_provenance(1, "test"));

@@ -3,6 +3,7 @@
 #include "contactbench/app/problems.hpp"
 #include "contactbench/app/scene_keys.hpp"
 #include "contactbench/app/section.hpp"
+#include "contactbench/theories/pastewka_robbins_criterion.hpp"
 
 namespace contactbench {
 
@@ -50,9 +51,14 @@ void AdhesiveSummitMethod::preflight(const MethodCheck& check) const {
 }
 
 MethodCurve AdhesiveSummitMethod::evaluate(const MethodInputs& in) const {
-  return MethodCurve::from(curve_(in.moments, in.scene.material.estar, *in.scene.interface.adhesion,
-                                  in.scene.loads, branch_, in.surface.grid().nominal_area()),
-                           in.scene.loads);
+  const AdhesionLaw& law = *in.scene.interface.adhesion;
+  MethodCurve curve = MethodCurve::from(curve_(in.moments, in.scene.material.estar, law, in.scene.loads,
+                                               branch_, in.surface.grid().nominal_area()),
+                                        in.scene.loads);
+  // Whether the scene's surface sticks at all, by a criterion that is not the summits' (docs/theory.md 10.5).
+  curve.parameters +=
+      "; " + pastewka_robbins_text(pastewka_robbins_criterion(in.moments, in.scene.material.estar, law));
+  return curve;
 }
 
 }  // namespace contactbench
