@@ -17,6 +17,7 @@
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/scene_run.hpp"
 #include "contactbench/core/error.hpp"
+#include "contactbench/theories/adhesive_plateaus.hpp"
 #include "contactbench/theories/adhesive_summits.hpp"
 #include "contactbench/theories/fuller_tabor.hpp"
 #include "contactbench/theories/greenwood_williamson.hpp"
@@ -24,6 +25,8 @@
 #include "contactbench/theories/maugis_dugdale_sphere.hpp"
 #include "contactbench/theories/maugis_greenwood_williamson.hpp"
 #include "contactbench/theories/pastewka_robbins_criterion.hpp"
+#include "contactbench/theories/plateau_hertz.hpp"
+#include "contactbench/theories/plateau_model.hpp"
 #include "small_scene.hpp"
 
 namespace contactbench {
@@ -296,6 +299,63 @@ TEST(PastewkaRobbins, StickinessNumberFromTheMoments) {
   EXPECT_FALSE(pastewka_robbins_criterion(moments, 1e8, law).sticky());
 }
 
+// Adhesive plateaus on one spot, where the project's readings are exact: a flat punch is Kendall's, a
+// paraboloid read through the Hertz-consistent plateaus is JKR's.
+SweepCurve one_spot_sweep(Real nominal_area, const std::function<Real(Real)>& bearing_area, Real depth,
+                          int levels) {
+  SweepCurve sweep;
+  sweep.nominal_area = nominal_area;
+  for (int k = 0; k <= levels; ++k) {
+    const Real z = -depth * k / levels;
+    sweep.z.push_back(z);
+    sweep.area_fraction.push_back(k == 0 ? 0 : bearing_area(-z) / nominal_area);
+    sweep.points.push_back(k == 0 ? 0 : 1);
+    sweep.spots.push_back(k == 0 ? 0 : 1);
+  }
+  return sweep;
+}
+
+TEST(AdhesivePlateaus, APunchIsKendallsAndAParaboloidJkrs) {
+  const Real a0 = 1e-6, estar = 1e6, w = 0.05;
+  // A punch of radius 20 um: every level below the top holds the same disc, so the separation of a load is
+  // linear, and Kendall's P = 2E* a δ − √(8π w E* a³) fixes it: round-off only (1e-12 of the depth).
+  const Real radius = 20e-6;
+  const SweepCurve punch = one_spot_sweep(
+      a0, [&](Real) { return M_PI * radius * radius; }, 1e-3, 1);
+  const std::vector<Real> loads = {1e-3, 5e-3};
+  const LoadAreaCurve kendall = adhesive_plateau_curve_at_loads(punch, plateau_model(punch), estar, w,
+                                                                AdhesivePlateauSpot::kendall_punch, loads);
+  for (std::size_t k = 0; k < loads.size(); ++k) {
+    const Real depth = (loads[k] * estar * a0 + std::sqrt(8 * M_PI * w * estar * std::pow(radius, 3))) /
+                       (2 * estar * radius);
+    EXPECT_NEAR(-kendall.separation[k], depth, 1e-12 * depth) << loads[k];
+    EXPECT_NEAR(kendall.area_fraction[k], M_PI * radius * radius / a0, 1e-12);
+  }
+  // A paraboloid of radius R = 0.1 mm (bearing area 2πRδ) on 20000 levels to 100 um (the loads need 20-50
+  // um): the Hertz-consistent spot less √(8π w E* a³) is JKR's P = (4/3)E* a³/R − √(8π w E* a³). The levels
+  // are a Riemann sum of step 5 nm, 2.5e-4 of the approach, and the area jumps by a level: 1e-3 relative in
+  // the area at the load.
+  const Real big_r = 1e-4;
+  const SweepCurve tip = one_spot_sweep(
+      a0, [&](Real d) { return 2 * M_PI * big_r * d; }, 1e-4, 20000);
+  const LoadAreaCurve jkr = adhesive_plateau_curve_at_loads(tip, plateau_model(tip), estar, w,
+                                                            AdhesivePlateauSpot::jkr_paraboloid, loads);
+  for (std::size_t k = 0; k < loads.size(); ++k) {
+    // JKR's contact radius at the load, by bisection on the branch above the pull-off radius.
+    auto jkr_load = [&](Real a) {
+      return 4 * estar * a * a * a / (3 * big_r) - std::sqrt(8 * M_PI * w * estar * a * a * a);
+    };
+    Real lo = std::cbrt(9 * M_PI * w * big_r * big_r / (8 * estar)), hi = 1e-3;  // pull-off radius upward
+    for (int i = 0; i < 200; ++i)
+      (jkr_load(0.5 * (lo + hi)) < loads[k] * estar * a0 ? lo : hi) = 0.5 * (lo + hi);
+    const Real area = M_PI * lo * lo / a0;
+    EXPECT_NEAR(jkr.area_fraction[k], area, 1e-3 * area) << loads[k];
+  }
+  // Without adhesion's pull the same sweep gives more load at each level: the adhesive area is larger.
+  EXPECT_GT(jkr.area_fraction[0],
+            plateau_hertz_curve_at_loads(tip, plateau_model(tip), loads).area_fraction[0]);
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // As methods of a scene: the paper's surface A on 32^2 (tests/small_scene.hpp), stiff (E = 100 GPa) and very
 // sticky (w = 1 J/m^2, σ0 = 100 MPa, as tests/test_scene_run.cpp's adhesive scene), beside the adhesive BEM.
@@ -321,8 +381,15 @@ method = "maugis_gw"
 branch = "retract"
 [methods.gw_mccool]
 ignore = ["adhesion"]
+[methods.plateau_kendall]
+[methods.plateau]
+ignore = ["adhesion"]
 )");
-  ASSERT_EQ(report.methods.size(), 5u);
+  ASSERT_EQ(report.methods.size(), 7u);
+  // The paper's plateaus as Kendall punches: at least the non-adhesive plateaus' area (the pull only lowers
+  // each level's load, so a load is reached at the same level or a deeper one).
+  for (std::size_t k = 0; k < 2; ++k)
+    EXPECT_GE(report.methods[5].curve.area_fraction[k], report.methods[6].curve.area_fraction[k]) << k;
   const MethodCurve& gw = report.methods[4].curve;
   for (std::size_t m = 1; m < 4; ++m) {
     const MethodResult& method = report.methods[m];
