@@ -15,6 +15,10 @@ std::unique_ptr<Method> make_gw_mccool_method();
 std::unique_ptr<Method> make_bgt_method();
 std::unique_ptr<Method> make_bgt_linear_method();
 std::unique_ptr<Method> make_persson_method();
+std::unique_ptr<Method> make_fuller_tabor_method();
+std::unique_ptr<Method> make_maugis_gw_method();
+std::unique_ptr<Method> make_plateau_kendall_method();
+std::unique_ptr<Method> make_plateau_hertz_jkr_method();
 
 MethodRegistry& MethodRegistry::global() {
   static MethodRegistry registry = [] {
@@ -26,6 +30,10 @@ MethodRegistry& MethodRegistry::global() {
     built_in.add("bgt", make_bgt_method);
     built_in.add("bgt_linear", make_bgt_linear_method);
     built_in.add("persson", make_persson_method);
+    built_in.add("fuller_tabor", make_fuller_tabor_method);        // adhesive: GW summits each a JKR sphere
+    built_in.add("maugis_gw", make_maugis_gw_method);              // adhesive: GW summits each Maugis-Dugdale
+    built_in.add("plateau_kendall", make_plateau_kendall_method);  // adhesive, the project's: Kendall punches
+    built_in.add("plateau_hertz_jkr", make_plateau_hertz_jkr_method);  // adhesive, the project's: JKR tips
     return built_in;
   }();
   return registry;
