@@ -39,22 +39,6 @@ Surface bisinusoid(Index n, Real lambda, Real amplitude) {
   return Surface(grid, h);
 }
 
-// Westergaard's wavy surface h = D cos(2 pi s/lambda) over one wavelength of n points, along x (n x m
-// points) or along y (m x n points): the same problem on a grid and on its transpose.
-Surface wavy(Index n, Index m, bool along_y, Real lambda, Real amplitude) {
-  const Real width = lambda * static_cast<Real>(m) / static_cast<Real>(n);
-  const Grid grid{.nx = along_y ? m : n,
-                  .ny = along_y ? n : m,
-                  .lx = along_y ? width : lambda,
-                  .ly = along_y ? lambda : width,
-                  .periodic = true};
-  HeightMap h(grid.ny, grid.nx);
-  for (Index iy = 0; iy < grid.ny; ++iy)
-    for (Index ix = 0; ix < grid.nx; ++ix)
-      h(iy, ix) = amplitude * std::cos(2 * pi * (along_y ? iy : ix) / static_cast<Real>(n));
-  return Surface(grid, h);
-}
-
 // Surface A of the paper (docs/theory.md section 2: sigma = 0.5 um, H = 0.5, qr = 3.14e4 1/m, qs at Nyquist)
 // on an n x n grid over 200 um, with a fixed seed.
 Surface surface_a(Index n, std::uint64_t seed) {

@@ -4,6 +4,8 @@
 // answer of a unit problem.
 #include <gtest/gtest.h>
 
+#include "contact_shapes.hpp"
+
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -127,18 +129,7 @@ TEST_P(BemHardCases, OneRowIsWestergaardsPlaneProblem) {
   // pressure 2 sqrt(pbar p*), p* = pi E* D/lambda, to 1e-3 (measured below 1e-4 on 256 points).
   const Index n = 256;
   const Real lambda = 100e-6, amplitude = 1e-6, p_star = pi * kModulus * amplitude / lambda;
-  const auto strip = [&](Index rows, bool along_y) {
-    const Grid grid{.nx = along_y ? rows : n,
-                    .ny = along_y ? n : rows,
-                    .lx = along_y ? lambda * rows / n : lambda,
-                    .ly = along_y ? lambda : lambda * rows / n,
-                    .periodic = true};
-    HeightMap h(grid.ny, grid.nx);
-    for (Index iy = 0; iy < grid.ny; ++iy)
-      for (Index ix = 0; ix < grid.nx; ++ix)
-        h(iy, ix) = amplitude * std::cos(2 * pi * (along_y ? iy : ix) / static_cast<Real>(n));
-    return Surface(grid, h);
-  };
+  const auto strip = [&](Index rows, bool along_y) { return wavy(n, rows, along_y, lambda, amplitude); };
   const Real pbar = 0.3 * p_star;
   BemSolver wide(strip(4, false), kModulus, {.tolerance = 1e-12, .solver = GetParam()});
   BemSolver row(strip(1, false), kModulus, {.tolerance = 1e-12, .solver = GetParam()});
