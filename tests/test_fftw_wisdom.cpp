@@ -19,6 +19,7 @@
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/fft.hpp"
 #include "contactbench/core/fftw_wisdom.hpp"
+#include "contactbench/core/generation.hpp"
 #include "csv_rows.hpp"
 
 namespace contactbench {
@@ -204,6 +205,27 @@ TEST_F(FftwWisdom, TheFileIsWrittenWholeOrNotAtAll) {
   std::filesystem::create_symlink(target, folder_ / "link.txt");
   EXPECT_THROW(export_fftw_wisdom(folder_ / "link.txt", key), Error);
   EXPECT_EQ(slurp(target), "kept\n");
+}
+
+TEST_F(FftwWisdom, GeneratedSurfacesDoNotDependOnTheWisdomHeld) {
+  // The generator promises the same bits on any thread count (core/fft.hpp, ReproducibleInverseFft2d), and a
+  // run now holds measured wisdom before it generates its surface: wisdom of other transforms must not reach
+  // the generator's estimated plans (or their sub-plans). Compared bit for bit: tolerance zero.
+  const Grid grid{256, 256, 200e-6, 200e-6, true};
+  SelfAffinePsd psd;
+  psd.sigma = 0.5e-6;
+  psd.hurst = 0.5;
+  psd.qr = 3.14e4;
+  const Surface before = generate_surface(grid, psd, 3, 2);
+  const Surface refined_before = refine(before, 512, 512, 2);
+  for (const Index n : {256, 512}) {
+    convolve_measured<double>(n);
+    Convolution<double> padded(n / 2, n / 2, true, 1, FftRigor::measure);
+  }
+  const Surface after = generate_surface(grid, psd, 3, 2);
+  const Surface refined_after = refine(after, 512, 512, 2);
+  EXPECT_TRUE((before.heights() == after.heights()).all());
+  EXPECT_TRUE((refined_before.heights() == refined_after.heights()).all());
 }
 
 // The commands: a 256 x 256 periodic surface (its operators are measured plans), one load.
