@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contactbench/app/cli.hpp"
+#include "contactbench/app/fftw_wisdom_file.hpp"
 #include "contactbench/app/flag_scene.hpp"
 #include "contactbench/app/json_writer.hpp"
 #include "contactbench/app/methods/bem_settings.hpp"
@@ -18,6 +19,7 @@
 #include "contactbench/app/unconverged.hpp"
 #include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/fft.hpp"
 #include "contactbench/core/formats/text_values.hpp"
 
 namespace contactbench {
@@ -39,6 +41,7 @@ struct BemOptions {
     return specs;
   }()};
   std::string out;
+  std::string fftw_wisdom;  // --fftw-wisdom FILE (app/fftw_wisdom_file.hpp); empty: the default
   int threads = 1;
 };
 
@@ -133,12 +136,18 @@ void run_bem(const BemOptions& o, const CommandContext& context) {
   if (!o.out.empty()) check_output_file(o.out, o.topography.file, "--out");
   const Scene scene = scene_from_flags(document, command, flags);
   const RunObserver observer = terminal_observer(command);
+  FftwWisdomFile wisdom(fftw_wisdom_path(o.fftw_wisdom, o.threads), o.threads, observer.warning);
+  const double planning_before = fftw_planning_seconds();
   SceneReport report;
   try {
     report = run_scene(scene, {.threads = o.threads, .observer = &observer, .runner = context.runner});
   } catch (const SceneError& error) {
     rethrow_with_flags(error, command, flags);
   }
+  wisdom.save();
+  // Reported as the stages are (app/cli.cpp: when it is long), as part of the bem stage's time.
+  observer.finished("FFTW planning (part of the bem stage; " + wisdom.describe() + ")",
+                    fftw_planning_seconds() - planning_before);
   const Provenance provenance = current_provenance(o.threads, command_line(o));
   write_output(o.out, [&](std::ostream& out) { write_curves_csv(out, report, provenance); });
   throw_if_unconverged(report);  // written and marked, but not a success (app/unconverged.hpp)
@@ -174,6 +183,7 @@ void add_bem_command(CLI::App& parent, const CommandContext& context) {
   command->add_option("--out", options->out, "CSV file (default: standard output)")
       ->check(refuse_empty_output_name);
   add_threads_option(*command, options->threads);
+  add_fftw_wisdom_option(*command, options->fftw_wisdom);
   command->callback([options, &context] { run_bem(*options, context); });
 }
 

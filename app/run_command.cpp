@@ -6,6 +6,7 @@
 
 #include "contactbench/app/cli.hpp"
 #include "contactbench/app/comparison.hpp"
+#include "contactbench/app/fftw_wisdom_file.hpp"
 #include "contactbench/app/load_area_plots.hpp"
 #include "contactbench/app/output.hpp"
 #include "contactbench/app/output_folder.hpp"
@@ -14,6 +15,7 @@
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/scene_run.hpp"
 #include "contactbench/app/unconverged.hpp"
+#include "contactbench/core/fft.hpp"
 
 namespace contactbench {
 
@@ -21,7 +23,8 @@ namespace {
 
 struct RunCommandOptions {
   std::string scene;
-  std::string out;  // default runs/<name>/ (untracked; results/ holds the published record)
+  std::string out;          // default runs/<name>/ (untracked; results/ holds the published record)
+  std::string fftw_wisdom;  // --fftw-wisdom FILE (app/fftw_wisdom_file.hpp); empty: the default
   int threads = 1;
   bool plots = true;
   bool quiet = false;
@@ -37,8 +40,15 @@ void run_command(const RunCommandOptions& o, const CommandContext& context) {
 
   check_replaceable_folder(folder);  // before any work, and again when the output is moved into place
   const RunObserver observer = terminal_observer("contactbench run");
-  const SceneReport report = run_scene(
+  // Warnings about the wisdom file are shown even with --quiet: they say why a run plans again.
+  FftwWisdomFile wisdom(fftw_wisdom_path(o.fftw_wisdom, o.threads), o.threads, observer.warning);
+  const double planning_before = fftw_planning_seconds();
+  SceneReport report = run_scene(
       scene, {.threads = o.threads, .observer = o.quiet ? nullptr : &observer, .runner = context.runner});
+  wisdom.save();
+  // Planning as a line of its own in "Stages that ran", its time also counted in the stages that planned.
+  report.stages.push_back({"fftw planning (included in the stages above; " + wisdom.describe() + ")",
+                           fftw_planning_seconds() - planning_before});
   const Comparison comparison = compare(report);
   const Provenance provenance = current_provenance(o.threads, command);
   write_folder_atomically(folder, [&](const std::filesystem::path& staging) {
@@ -69,6 +79,7 @@ void add_run_command(CLI::App& parent, const CommandContext& context) {
   command->add_flag("!--no-plots", options->plots, "do not draw the plots (no gnuplot run)");
   command->add_flag("--quiet", options->quiet, "no progress and no table on the terminal");
   add_threads_option(*command, options->threads);
+  add_fftw_wisdom_option(*command, options->fftw_wisdom);
   command->callback([options, &context] { run_command(*options, context); });
 }
 

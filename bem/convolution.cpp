@@ -240,6 +240,7 @@ Convolution<T>::Convolution(Index nx, Index ny, bool padded, int threads, FftRig
   auto* columns = reinterpret_cast<FCx*>(m.columns[0].get());
   {
     auto lock = lock_fftw_planner();
+    const FftwPlanningClock clock;
     F::plan_with_nthreads(1);
     const int full_rows = static_cast<int>(std::min<Index>(kRowsPerChunk, ny_));
     m.r2c_full = F::r2c(n_x, full_rows, m.rows_in[0].get(), n_x, spectrum, nxh, flags);

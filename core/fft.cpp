@@ -1,5 +1,8 @@
 #include "contactbench/core/fft.hpp"
 
+#include <atomic>
+#include <chrono>
+#include <cstdint>
 #include <map>
 #include <mutex>
 #include <string>
@@ -49,6 +52,7 @@ RealFft2d::RealFft2d(Index nx, Index ny, int threads, FftRigor rigor)
   check_shape(nx, ny);
   initialise_fftw_threads_once();
   std::lock_guard lock(planner_mutex());
+  const FftwPlanningClock clock;
   real_ = fftw_alloc_real(static_cast<size_t>(ny_ * nx_));
   spectrum_ = fftw_alloc_complex(static_cast<size_t>(ny_ * nx_half()));
   if (!real_ || !spectrum_)
@@ -91,6 +95,25 @@ void RealFft2d::backward(const SpectrumMap& in, HeightMap& out) {
   out = real();
 }
 
+namespace {
+// Nanoseconds, so that the sum is an integer atomic (plans are made on several threads at once).
+std::atomic<std::int64_t>& planning_nanoseconds() {
+  static std::atomic<std::int64_t> total{0};
+  return total;
+}
+}  // namespace
+
+double fftw_planning_seconds() {
+  return static_cast<double>(planning_nanoseconds().load()) * 1e-9;
+}
+
+FftwPlanningClock::FftwPlanningClock() : start_(std::chrono::steady_clock::now()) {}
+
+FftwPlanningClock::~FftwPlanningClock() {
+  const auto elapsed = std::chrono::steady_clock::now() - start_;
+  planning_nanoseconds() += std::chrono::duration_cast<std::chrono::nanoseconds>(elapsed).count();
+}
+
 std::unique_lock<std::mutex> lock_fftw_planner() {
   initialise_fftw_threads_once();
   return std::unique_lock<std::mutex>(planner_mutex());
@@ -124,6 +147,7 @@ ReproducibleInverseFft2d::ReproducibleInverseFft2d(Index nx, Index ny)
                                   flags);
   };
   std::lock_guard lock(planner_mutex());
+  const FftwPlanningClock clock;
   fftw_plan_with_nthreads(1);
   const int chunk = static_cast<int>(kLinesPerChunk);
   columns_full_ = plan_columns(chunk);

@@ -5,6 +5,7 @@
 // Divide the forward result by nx * ny to get the Fourier-series coefficients hhat_k.
 #pragma once
 
+#include <chrono>
 #include <memory>
 #include <mutex>
 
@@ -60,6 +61,23 @@ RealFft2d& cached_fft(Index nx, Index ny, int threads = 1);
 // holds. Taking it also initialises FFTW's thread support for both precisions (once), so that
 // fftw_plan_with_nthreads / fftwf_plan_with_nthreads may be called under it.
 std::unique_lock<std::mutex> lock_fftw_planner();
+
+// Seconds this process has spent making FFTW plans (every FftwPlanningClock's span, summed), so that a run
+// can report planning as its own cost: with FFTW_MEASURE and no wisdom it can exceed the solve.
+double fftw_planning_seconds();
+
+// Adds the time from its construction to its destruction to fftw_planning_seconds(). Made beside the planner
+// lock around plan creation (not destruction, which is quick).
+class FftwPlanningClock {
+ public:
+  FftwPlanningClock();
+  ~FftwPlanningClock();
+  FftwPlanningClock(const FftwPlanningClock&) = delete;
+  FftwPlanningClock& operator=(const FftwPlanningClock&) = delete;
+
+ private:
+  std::chrono::steady_clock::time_point start_;
+};
 
 // The backward transform with a result that is bit-identical for any thread count: the 2D transform is done
 // as 1D transforms over fixed chunks of lines, each chunk by the same single-threaded plan, so the

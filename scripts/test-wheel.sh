@@ -42,7 +42,7 @@ cd "$work"
 # The CLI is not in the wheel: the tests that compare with it use the release build's program when there is one.
 cli=$source_dir/build/release/app/contactbench
 [[ -x "$cli" ]] && export CB_CLI_PATH=$cli
-CB_SOURCE_DIR=$source_dir OMP_WAIT_POLICY=PASSIVE "$venv_python" -m pytest -q -p no:cacheprovider \
+CB_SOURCE_DIR=$source_dir OMP_WAIT_POLICY=PASSIVE CONTACTBENCH_FFTW_WISDOM=none "$venv_python" -m pytest -q -p no:cacheprovider \
   --rootdir "$source_dir/python/tests" "$source_dir/python/tests"
 # Under an interpreter without numpy the import fails at once, saying what is missing (a venv without Debian's
 # site packages has no numpy).

@@ -1,0 +1,149 @@
+#!/usr/bin/env python3
+"""What a whole command costs with and without FFTW wisdom kept between runs (issue 42); writes
+results/bench/command_cost.md.
+
+Usage: scripts/command_cost.py [--repetitions 3] [--threads 2] [--build build/release] [--out FILE]
+
+Measures, interleaved (cold, warm, off, cold, warm, off, ...) so that the machine's load falls on each alike:
+  1. `contactbench bem S --periodic --loads 0.000478 --threads T` on a 1024^2 periodic surface S (surface A's
+     spectrum, made by `contactbench generate`), wall time of the whole process:
+       cold  -- a new, empty wisdom file: FFTW plans by measuring and the file is written (a machine's first run);
+       warm  -- the file the run before wrote: the plans are read, not measured (every later run);
+       none  -- --fftw-wisdom none: plans measured and nothing kept (what every run cost before the file).
+  2. `contactbench run scenes/paper/surface_A.toml --threads T --no-plots`, the BEM stage's seconds and the
+     planning line of "Stages that ran" (summary.json), cold / warm / none as above.
+Medians of the repetitions; the machine is shared, so the load average is recorded beside them.
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def run(command, env):
+    start = time.perf_counter()
+    done = subprocess.run(command, env=env, capture_output=True, text=True)
+    wall = time.perf_counter() - start
+    if done.returncode != 0:
+        sys.exit(f"command_cost: {' '.join(map(str, command))} failed:\n{done.stderr}")
+    return wall, done
+
+
+def stage_seconds(summary, prefix):
+    return sum(s["seconds"] for s in summary["stages"] if s["name"].startswith(prefix))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repetitions", type=int, default=3)
+    parser.add_argument("--threads", type=int, default=2)
+    parser.add_argument("--build", default="build/release")
+    parser.add_argument("--out", default="results/bench/command_cost.md")
+    args = parser.parse_args()
+    cli = ROOT / args.build / "app" / "contactbench"
+    threads = str(args.threads)
+    env = dict(os.environ, OMP_WAIT_POLICY="PASSIVE")
+    env.pop("CONTACTBENCH_FFTW_WISDOM", None)
+    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, capture_output=True,
+                            text=True).stdout.strip()
+    if subprocess.run(["git", "diff", "--quiet", "HEAD", "--", "core", "bem", "app"], cwd=ROOT).returncode:
+        commit += "+uncommitted"
+    machine = next((line.split(":", 1)[1].strip() for line in
+                    subprocess.run(["lscpu"], capture_output=True, text=True).stdout.splitlines()
+                    if line.startswith("Model name")), "unknown") + f" with {os.cpu_count()} cores"
+    date = time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())
+    loads = []
+
+    with tempfile.TemporaryDirectory(prefix="command_cost_") as work:
+        work = Path(work)
+        surface = work / "s1024.txt"
+        run([cli, "generate", "--sigma", "0.5e-6", "--hurst", "0.5", "--qr", "3.14e4", "--size", "200e-6",
+             "--grid", "1024", "--seed", "1", "--out", surface, "--threads", threads], env)
+        bem = [cli, "bem", surface, "--periodic", "--loads", "0.000478", "--threads", threads]
+        scene = ROOT / "scenes" / "paper" / "surface_A.toml"
+        scene_run = [cli, "run", scene, "--threads", threads, "--no-plots", "--quiet"]
+        bem_wall = {"cold": [], "warm": [], "none": []}
+        scene_bem = {"cold": [], "warm": [], "none": []}
+        scene_planning = {"cold": [], "warm": [], "none": []}
+        scene_wall = {"cold": [], "warm": [], "none": []}
+        for repetition in range(args.repetitions):
+            wisdom = work / f"bem_wisdom_{repetition}.txt"
+            for case, flag in (("cold", str(wisdom)), ("warm", str(wisdom)), ("none", "none")):
+                loads.append(os.getloadavg()[0])
+                wall, _ = run(bem + ["--fftw-wisdom", flag], env)
+                bem_wall[case].append(wall)
+            wisdom = work / f"scene_wisdom_{repetition}.txt"
+            for case, flag in (("cold", str(wisdom)), ("warm", str(wisdom)), ("none", "none")):
+                out = work / f"run_{case}_{repetition}"
+                loads.append(os.getloadavg()[0])
+                wall, _ = run(scene_run + ["--out", out, "--fftw-wisdom", flag], env)
+                summary = json.loads((out / "summary.json").read_text())
+                scene_wall[case].append(wall)
+                scene_bem[case].append(stage_seconds(summary, "bem"))
+                scene_planning[case].append(stage_seconds(summary, "fftw planning"))
+
+    def median(values):
+        return f"{statistics.median(values):.2f}"
+
+    def spread(values):
+        return " / ".join(f"{v:.2f}" for v in values)
+
+    lines = [
+        "# What a whole command costs: FFTW planning with and without wisdom kept between runs",
+        "",
+        f"Made by `scripts/command_cost.py --repetitions {args.repetitions} --threads {args.threads}` at commit "
+        f"{commit} on {date}; {args.threads} threads, machine: {machine}. Load average (1 min) while it ran: "
+        f"{min(loads):.1f} to {max(loads):.1f} on {os.cpu_count()} cores: the machine is shared and the times "
+        "are noisy; medians of the repetitions, each repetition's value listed.",
+        "",
+        "cold: a new wisdom file (FFTW plans by measuring, FFTW_MEASURE, and the file is written: a machine's "
+        "first run); warm: the file the cold run wrote (plans read, not measured: every later run); none: "
+        "`--fftw-wisdom none` (plans measured, nothing kept: every run before the wisdom file). The cases run "
+        "interleaved.",
+        "",
+        "## One load on a 1024^2 periodic surface, the whole `contactbench bem` process",
+        "",
+        "Surface: `contactbench generate --sigma 0.5e-6 --hurst 0.5 --qr 3.14e4 --size 200e-6 --grid 1024 "
+        "--seed 1` (surface A's spectrum on 1024^2 points).",
+        f"Command: `contactbench bem s1024.txt --periodic --loads 0.000478 --threads {args.threads} "
+        "--fftw-wisdom FILE|none`.",
+        "",
+        "| case | wall [s], median | each run [s] |",
+        "|---|---:|---|",
+    ]
+    for case in ("cold", "warm", "none"):
+        lines.append(f"| {case} | {median(bem_wall[case])} | {spread(bem_wall[case])} |")
+    lines += [
+        "",
+        "## The paper's surface A scene, `contactbench run`",
+        "",
+        f"Command: `contactbench run scenes/paper/surface_A.toml --threads {args.threads} --no-plots --quiet "
+        "--fftw-wisdom FILE|none`. BEM stage: the seconds of the stages named bem in summary.json (512^2 and "
+        "1024^2 solves of 12 loads, for the extrapolated area); planning: the `fftw planning` line of "
+        "\"Stages that ran\" (part of the BEM stage's seconds).",
+        "",
+        "| case | BEM stage [s], median | each run [s] | of which planning [s], median | each run [s] | whole "
+        "command [s], median |",
+        "|---|---:|---|---:|---|---:|",
+    ]
+    for case in ("cold", "warm", "none"):
+        lines.append(f"| {case} | {median(scene_bem[case])} | {spread(scene_bem[case])} | "
+                     f"{median(scene_planning[case])} | {spread(scene_planning[case])} | "
+                     f"{median(scene_wall[case])} |")
+    lines.append("")
+    out = ROOT / args.out
+    temporary = out.with_suffix(".md.tmp")
+    temporary.write_text("\n".join(lines))
+    temporary.replace(out)
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
