@@ -23,11 +23,7 @@ constexpr unsigned char kFlipsToEdge = 3;
 
 AdhesiveBemSolver::AdhesiveBemSolver(const Surface& surface, Real modulus, const AdhesionLaw& law,
                                      AdhesiveSolverOptions options, int threads)
-    : surface_(surface.centred()),
-      modulus_(modulus),
-      law_(law),
-      options_(std::move(options)),
-      threads_(threads) {
+    : surface_(surface.centred()), law_(law), options_(std::move(options)) {
   validate_adhesion_law(law_, "adhesive BEM");
   const BemSolverOptions& contact = options_.contact;
   if (!(contact.tolerance > 0) || contact.max_iterations < 1 || options_.max_outer_iterations < 1)

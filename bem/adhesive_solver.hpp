@@ -105,10 +105,8 @@ class AdhesiveBemSolver {
   void describe(const ContactSolution& contact, const HeightMap& attraction);
 
   Surface surface_;  // centred
-  Real modulus_;
   AdhesionLaw law_;
   AdhesiveSolverOptions options_;
-  int threads_;
   std::unique_ptr<ContactSolver> engine_;
   std::unique_ptr<HalfSpace> half_space_;
   HeightMap attraction_, lift_, effective_heights_;
