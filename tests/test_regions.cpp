@@ -127,16 +127,17 @@ TEST(Levelling, QuadraticRemovesAnyPolynomialOfDegreeTwoAndPlaneDoesNot) {
 }
 
 TEST(HarmonicFill, MoreInvalidPointsThanItsBoundAreRefusedAtOnce) {
-  // 600 x 600 points, all invalid but one row: 359400 to fill, beyond the bound of 262144; refused before any
-  // matrix is built (this test takes milliseconds; the solve would take tens of seconds).
-  std::vector<double> values(600 * 600, nan);
-  for (int x = 0; x < 600; ++x)
+  // 2100 x 2100 points, all invalid but one row: 4407900 to fill, beyond the bound of 4194304; refused before
+  // any level is built (this test takes milliseconds; the fill would take seconds and a gigabyte).
+  constexpr int n = 2100;
+  std::vector<double> values(static_cast<std::size_t>(n) * n, nan);
+  for (int x = 0; x < n; ++x)
     values[static_cast<std::size_t>(x)] = 1e-9;
   try {
-    fill_invalid_points(values, 600, 600, FillMethod::harmonic);
+    fill_invalid_points(values, n, n, FillMethod::harmonic);
     ADD_FAILURE() << "filled more points than the bound";
   } catch (const Error& error) {
-    EXPECT_NE(std::string(error.what()).find("harmonic fill of 359400 invalid points refused"),
+    EXPECT_NE(std::string(error.what()).find("harmonic fill of 4407900 invalid points refused"),
               std::string::npos)
         << error.what();
     EXPECT_NE(std::string(error.what()).find("--crop measured"), std::string::npos) << error.what();

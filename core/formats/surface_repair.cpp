@@ -4,9 +4,9 @@
 #include <string>
 
 #include <Eigen/Dense>
-#include <Eigen/Sparse>
 
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/formats/harmonic_fill.hpp"
 
 namespace contactbench {
 
@@ -52,14 +52,13 @@ std::optional<Levelling> parse_levelling(std::string_view text) {
 }
 
 void fill_invalid_points(std::vector<Real>& values, Index nx, Index ny, FillMethod method) {
-  std::vector<Index> unknown_of(values.size(), -1);
   Index unknowns = 0;
   Real valid_sum = 0;
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    if (std::isnan(values[k])) {
-      unknown_of[k] = unknowns++;
+  for (const Real value : values) {
+    if (std::isnan(value)) {
+      ++unknowns;
     } else {
-      valid_sum += values[k];
+      valid_sum += value;
     }
   }
   if (unknowns == 0) return;
@@ -74,43 +73,11 @@ void fill_invalid_points(std::vector<Real>& values, Index nx, Index ny, FillMeth
     return;
   }
   if (unknowns > kMaxHarmonicFillPoints)
-    throw Error(
-        "harmonic fill of " + std::to_string(unknowns) + " invalid points refused: more than the " +
-        std::to_string(kMaxHarmonicFillPoints) +
-        " its direct solve fills in about two seconds; read the measured part (--crop measured, crop = "
-        "\"measured\"), or fill with the mean (--fill mean)");
-  // Harmonic: the discrete Laplace equation on the invalid points with the valid neighbours as boundary
-  // values, sum over the four (in-grid) neighbours q of (h_p - h_q) = 0. Every connected patch of invalid
-  // points touches a valid point (not all points are invalid), so the matrix is symmetric positive definite.
-  std::vector<Eigen::Triplet<Real>> entries;
-  Eigen::VectorXd right(unknowns);
-  right.setZero();
-  for (Index y = 0; y < ny; ++y)
-    for (Index x = 0; x < nx; ++x) {
-      const Index row = unknown_of[static_cast<std::size_t>(y * nx + x)];
-      if (row < 0) continue;
-      Real degree = 0;
-      const Index neighbours[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
-      for (const auto& [qx, qy] : neighbours) {
-        if (qx < 0 || qx >= nx || qy < 0 || qy >= ny) continue;
-        degree += 1;
-        const std::size_t q = static_cast<std::size_t>(qy * nx + qx);
-        if (unknown_of[q] >= 0) {
-          entries.emplace_back(row, unknown_of[q], -1.0);
-        } else {
-          right(row) += values[q];
-        }
-      }
-      entries.emplace_back(row, row, degree);
-    }
-  Eigen::SparseMatrix<Real> laplacian(unknowns, unknowns);
-  laplacian.setFromTriplets(entries.begin(), entries.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<Real>> solver(laplacian);
-  if (solver.info() != Eigen::Success)
-    throw Error("harmonic fill: the Laplace system could not be factorised");
-  const Eigen::VectorXd filled = solver.solve(right);
-  for (std::size_t k = 0; k < values.size(); ++k)
-    if (unknown_of[k] >= 0) values[k] = filled(unknown_of[k]);
+    throw Error("harmonic fill of " + std::to_string(unknowns) + " invalid points refused: more than the " +
+                std::to_string(kMaxHarmonicFillPoints) +
+                " it fills in a few seconds; read the measured part (--crop measured, crop = "
+                "\"measured\"), or fill with the mean (--fill mean)");
+  fill_harmonic(values, nx, ny);
 }
 
 namespace {

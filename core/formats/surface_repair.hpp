@@ -33,9 +33,11 @@ std::string_view to_string(Levelling levelling);
 std::optional<FillMethod> parse_fill_method(std::string_view text);
 std::optional<Levelling> parse_levelling(std::string_view text);
 
-// The most invalid points the harmonic fill takes: its sparse direct solve grows faster than the count
-// (261121 points: about 2 s on two cores; 1048576: 18 s), so more are refused, with the ways out.
-inline constexpr Index kMaxHarmonicFillPoints = Index{1} << 18;
+// The most invalid points the harmonic fill takes (core/formats/harmonic_fill.hpp): its cost grows like the
+// count (docs/formats.md: about 0.3 s per million points and 200 bytes a point), so this bound (a 2048^2 grid
+// all but unmeasured: a few seconds, under 1 GB) keeps a fill from running unseen for minutes; more are
+// refused, with the ways out.
+inline constexpr Index kMaxHarmonicFillPoints = Index{1} << 22;
 
 // Replaces every NaN of `values` (ny x nx, row-major) by the method's height. Throws Error when no value is
 // valid (nothing to fill from), when `method` is none and there is a NaN, or when a harmonic fill has more
