@@ -98,10 +98,9 @@ std::optional<FileSurfaceSpec> parse_file(const Section& s, const fs::path& fold
       s.wrong_type("channel", "a channel name or an index >= 0", "a string or an integer >= 0");
     }
   }
-  if (const auto fill = s.choice("fill", {"none", "harmonic", "mean"})) spec.fill = *parse_fill_method(*fill);
-  if (const auto level = s.choice("level", {"none", "mean", "plane", "quadratic"}))
-    spec.level = *parse_levelling(*level);
-  if (const auto align = s.choice("align_rows", {"none", "mean", "median", "linear"}))
+  if (const auto fill = s.choice("fill", fill_method_names())) spec.fill = *parse_fill_method(*fill);
+  if (const auto level = s.choice("level", levelling_names())) spec.level = *parse_levelling(*level);
+  if (const auto align = s.choice("align_rows", row_alignment_names()))
     spec.align_rows = *parse_row_alignment(*align);
   if (s.has("crop")) {
     if (const auto text = s.string("crop", false, kCropAccepted)) {

@@ -1,8 +1,21 @@
 #include "contactbench/app/topography_options.hpp"
 
+#include <string>
+#include <string_view>
+#include <vector>
+
 #include "contactbench/core/topography_io.hpp"
 
 namespace contactbench {
+
+namespace {
+
+// CLI11 checks membership in strings; core declares the accepted names once, as views.
+std::vector<std::string> as_strings(const std::vector<std::string_view>& names) {
+  return {names.begin(), names.end()};
+}
+
+}  // namespace
 
 std::string readable_formats_help() {
   // docs/formats.md has the table; detection is by content, so the extensions are what instruments write.
@@ -30,7 +43,7 @@ void TopographyOptions::add_to(CLI::App& command, const std::string& periodic_ef
   command
       .add_option("--fill", fill,
                   "invalid (unmeasured) points: none refuses the file, harmonic or mean fills them")
-      ->check(CLI::IsMember({"none", "harmonic", "mean"}));
+      ->check(CLI::IsMember(as_strings(fill_method_names())));
   command
       .add_option("--crop", crop,
                   "the region read, before invalid points are counted or filled: measured (the largest fully "
@@ -41,13 +54,13 @@ void TopographyOptions::add_to(CLI::App& command, const std::string& periodic_ef
   command
       .add_option("--align-rows", align_rows,
                   "per scan line (row), after filling: none, mean, median or linear (each row's own line)")
-      ->check(CLI::IsMember({"none", "mean", "median", "linear"}));
+      ->check(CLI::IsMember(as_strings(row_alignment_names())));
   command
       .add_option(
           "--level", level,
           "levelling after row alignment: none, mean, plane (degree 1) or quadratic (degree 2), least "
           "squares")
-      ->check(CLI::IsMember({"none", "mean", "plane", "quadratic"}));
+      ->check(CLI::IsMember(as_strings(levelling_names())));
   command
       .add_option("--unit", unit,
                   "unit of the numbers of a file that states none (matrices, .npy, x y z lists): m, mm, um, "

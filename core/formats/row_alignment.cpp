@@ -19,6 +19,13 @@ std::string_view to_string(RowAlignment alignment) {
   return "unknown";
 }
 
+const std::vector<std::string_view>& row_alignment_names() {
+  static const std::vector<std::string_view> names{
+      to_string(RowAlignment::none), to_string(RowAlignment::mean), to_string(RowAlignment::median),
+      to_string(RowAlignment::linear)};
+  return names;
+}
+
 std::optional<RowAlignment> parse_row_alignment(std::string_view text) {
   for (const RowAlignment a :
        {RowAlignment::none, RowAlignment::mean, RowAlignment::median, RowAlignment::linear})

@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "contactbench/core/types.hpp"
 
@@ -19,6 +20,8 @@ enum class RowAlignment {
 
 std::string_view to_string(RowAlignment alignment);
 std::optional<RowAlignment> parse_row_alignment(std::string_view text);
+// The names parse_row_alignment accepts (the command line, scenes and Python check against them).
+const std::vector<std::string_view>& row_alignment_names();
 
 // Rows are along x (heights(iy, ix)): each row loses its own mean, median or line.
 void align_rows(HeightMap& heights, RowAlignment alignment);

@@ -36,6 +36,19 @@ std::string_view to_string(Levelling levelling) {
   return "unknown";
 }
 
+const std::vector<std::string_view>& fill_method_names() {
+  static const std::vector<std::string_view> names{
+      to_string(FillMethod::none), to_string(FillMethod::harmonic), to_string(FillMethod::mean)};
+  return names;
+}
+
+const std::vector<std::string_view>& levelling_names() {
+  static const std::vector<std::string_view> names{to_string(Levelling::none), to_string(Levelling::mean),
+                                                   to_string(Levelling::plane),
+                                                   to_string(Levelling::quadratic)};
+  return names;
+}
+
 std::optional<FillMethod> parse_fill_method(std::string_view text) {
   if (text == "none") return FillMethod::none;
   if (text == "harmonic") return FillMethod::harmonic;

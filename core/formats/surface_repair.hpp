@@ -32,6 +32,10 @@ std::string_view to_string(Levelling levelling);
 // else.
 std::optional<FillMethod> parse_fill_method(std::string_view text);
 std::optional<Levelling> parse_levelling(std::string_view text);
+// The names each parse accepts, in the order a message lists them: the one declaration the command line,
+// scenes and Python check against.
+const std::vector<std::string_view>& fill_method_names();
+const std::vector<std::string_view>& levelling_names();
 
 // The most invalid points the harmonic fill takes (core/formats/harmonic_fill.hpp): its cost grows like the
 // count (docs/formats.md: about 0.3 s per million points and 200 bytes a point), so this bound (a 2048^2 grid

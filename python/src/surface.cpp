@@ -42,6 +42,19 @@ Surface generate(const Grid& grid, const SelfAffinePsd& psd, std::uint64_t seed,
 
 // A channel as the readers take it (core/topography_io.hpp): a name, or a 0-based index written as text;
 // Python callers may pass the index as an int.
+// A named choice checked against the names core declares for it (the same the command line and scenes
+// accept).
+template <typename Choice>
+Choice parsed_choice(const char* key, const std::string& text,
+                     std::optional<Choice> (*parse)(std::string_view),
+                     const std::vector<std::string_view>& names) {
+  if (const std::optional<Choice> choice = parse(text)) return *choice;
+  std::string accepted;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    accepted += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + ("\"" + std::string(names[k]) + "\"");
+  throw Error(std::string(key) + ": accepted values are " + accepted + ", got \"" + text + "\"");
+}
+
 std::string channel_text(const std::variant<std::int64_t, std::string>& channel) {
   if (const auto* name = std::get_if<std::string>(&channel)) return *name;
   const std::int64_t index = std::get<std::int64_t>(channel);
@@ -156,24 +169,30 @@ void register_surface(py::module_& m) {
       "read_topography",
       [](const std::filesystem::path& path, std::optional<Real> lx, std::optional<Real> ly,
          std::optional<bool> periodic, std::optional<std::variant<std::int64_t, std::string>> channel,
-         const std::string& fill, const std::string& level) {
+         const std::string& fill, const std::string& level, std::optional<std::string> unit,
+         std::optional<std::string> crop, const std::string& align_rows) {
         TopographyReadOptions options;
         options.lx = lx;
         options.ly = ly;
         options.periodic = periodic;
         if (channel) options.channel = channel_text(*channel);
-        const auto fill_method = parse_fill_method(fill);
-        if (!fill_method)
-          throw Error("fill: expected \"none\", \"harmonic\" or \"mean\", got \"" + fill + "\"");
-        options.fill = *fill_method;
-        const auto levelling = parse_levelling(level);
-        if (!levelling) throw Error("level: expected \"none\", \"mean\" or \"plane\", got \"" + level + "\"");
-        options.level = *levelling;
+        options.fill = parsed_choice("fill", fill, parse_fill_method, fill_method_names());
+        options.level = parsed_choice("level", level, parse_levelling, levelling_names());
+        options.align_rows =
+            parsed_choice("align_rows", align_rows, parse_row_alignment, row_alignment_names());
+        options.unit = unit;  // checked by the reader, which names the file
+        if (crop) {
+          options.crop = parse_crop(*crop);
+          if (!options.crop)
+            throw Error("crop: accepted values are " + std::string(kCropAccepted) + ", got \"" + *crop +
+                        "\"");
+        }
         return read_topography(path, options);
       },
       py::arg("path"), py::kw_only(), py::arg("lx") = py::none(), py::arg("ly") = py::none(),
       py::arg("periodic") = py::none(), py::arg("channel") = py::none(), py::arg("fill") = "none",
-      py::arg("level") = "none",
+      py::arg("level") = "none", py::arg("unit") = py::none(), py::arg("crop") = py::none(),
+      py::arg("align_rows") = "none",
       "Reads a topography file in any format the project reads (docs/formats.md: x3p, sdf, npy, MetroPro, "
       "Nanoscope, Sensofar, Digital Surf, Wyko, NetCDF, the project's, interferometer and Gwyddion text "
       "exports, "
@@ -183,7 +202,12 @@ void register_surface(py::module_& m) {
       "data and to the stored flag for the project's format. channel: a name (str) or a 0-based index (int "
       "or its text; default: the first height channel). fill: \"none\" (refuse invalid points), \"harmonic\" "
       "or "
-      "\"mean\". level: \"none\", \"mean\" or \"plane\". Heights come back in metres (no mean removed "
+      "\"mean\". level: \"none\", \"mean\", \"plane\" or \"quadratic\". unit: the length unit of a file that "
+      "states none "
+      "(\"m\", \"mm\", \"um\", \"nm\", \"pm\"; default metres). crop: \"measured\", \"px:X0,Y0,NX,NY\" or "
+      "\"m:X0,Y0,LX,LY\". align_rows: \"none\", \"mean\", \"median\" or \"linear\" (per scan line). The "
+      "order is "
+      "crop, fill, align_rows, level (docs/formats.md). Heights come back in metres (no mean removed "
       "unless levelled). A bad file raises contactbench.InputError naming the file and line.");
   m.def(
       "spectral_moments",

@@ -120,3 +120,31 @@ values = [0.001, 0.005, 0.02]
     direct = cb.persson_curve(report.moments, report.loads)
     assert np.array_equal(persson.load, direct.load)
     assert np.array_equal(persson.area_fraction, direct.area_fraction)  # the same function at the same loads
+
+
+def test_read_topography_takes_the_command_lines_region_and_levelling_options(source_dir, tmp_path):
+    # The choices are the ones core declares once for the command line, scenes and Python: a wrong one is
+    # refused with the full list (level listed only none, mean and plane before, though quadratic was read).
+    path = source_dir / "data" / "formats" / "di-1.di"
+    with pytest.raises(cb.Error, match='level: accepted values are "none", "mean", "plane" or "quadratic", got "cubic"'):
+        cb.read_topography(path, level="cubic")
+    with pytest.raises(cb.Error, match='align_rows: accepted values are "none", "mean", "median" or "linear"'):
+        cb.read_topography(path, align_rows="spline")
+    with pytest.raises(cb.Error, match="crop: accepted values are measured"):
+        cb.read_topography(path, crop="1,2,3,4")
+    whole = cb.read_topography(path)
+    cropped = cb.read_topography(path, crop="px:2,3,16,8")
+    assert cropped.heights.shape == (8, 16)
+    assert np.array_equal(cropped.heights, whole.heights[3:11, 2:18])  # a crop is a plain slice
+    aligned = cb.read_topography(path, align_rows="mean")
+    # Each scan line loses its own mean: every row's mean is zero to the round-off of a 512-point sum.
+    assert np.abs(aligned.heights.mean(axis=1)).max() < 1e-12 * np.abs(whole.heights).max()
+    quadratic = cb.read_topography(path, level="quadratic")
+    assert abs(quadratic.heights.mean()) < 1e-12 * np.abs(whole.heights).max()
+    # A plain matrix states no unit: the same numbers in nanometres are 1e-9 of the metres.
+    matrix = tmp_path / "heights.txt"
+    np.savetxt(matrix, np.arange(12.0).reshape(3, 4) + 1.0)
+    in_nm = cb.read_topography(matrix, lx=4e-6, unit="nm")
+    assert in_nm.heights[0, 0] == 1e-9
+    with pytest.raises(cb.Error, match="furlong"):
+        cb.read_topography(matrix, lx=4e-6, unit="furlong")
