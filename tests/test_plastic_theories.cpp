@@ -19,6 +19,7 @@
 #include "contactbench/theories/chang_etsion_bogy.hpp"
 #include "contactbench/theories/greenwood_williamson.hpp"
 #include "contactbench/theories/kogut_etsion.hpp"
+#include "contactbench/theories/majumdar_bhushan.hpp"
 #include "contactbench/theories/persson.hpp"
 #include "contactbench/theories/persson_plastic.hpp"
 #include "contactbench/theories/plateau_capped.hpp"
@@ -365,6 +366,54 @@ TEST(PlasticSummits, RefuseAHardnessAtOrBelowALoadNamingIt) {
   });
   EXPECT_NE(message.find("(load 2)"), std::string::npos) << message;
   EXPECT_NE(message.find("kogut_etsion"), std::string::npos) << message;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Majumdar-Bhushan.
+
+TEST(MajumdarBhushan, FitsTheFractalDimensionOfASelfAffineSurface) {
+  // A self-affine surface of Hurst exponent H has the profile dimension D = 2 - H. One 128 x 128
+  // realisation's spectrum scatters about its mean (each profile-spectrum value averages 128 profiles): the
+  // fitted D was measured within 0.03 of 2 - H for the seeds tried; 0.05 allowed.
+  for (const Real hurst : {0.5, 0.8}) {
+    const FractalParameters f = fit_fractal_parameters(random_surface(128, 3, hurst));
+    EXPECT_NEAR(f.dimension, 2 - hurst, 0.05) << "Hurst " << hurst;
+    EXPECT_GT(f.roughness, 0);
+  }
+}
+
+TEST(MajumdarBhushan, RigidPlasticAndElasticLimits) {
+  // A hardness so small that the critical spot area exceeds A0: every spot is plastic, A/A0 = P/(H A0)
+  // exactly (round-off of the root in ln P, 1e-12). A hardness so large that ac is 1e-40 A0 on a surface with
+  // D < 1.5: the elastic model, whose plastic share is ac^((3-2D)/2)-small (below 1e-6 here), to 1e-6
+  // relative.
+  const FractalParameters f{.dimension = 1.3, .roughness = 1e-10};
+  const Real area = 4e-8;
+  const std::vector<Real> loads{1e-4, 1e-3, 1e-2};
+  const Real h_low = 0.02;  // ac = G^2/(0.01)^(2/0.3) = 1e-20 x 1e13.3: above A0
+  const PlasticCurve plastic = majumdar_bhushan_curve(f, loads, h_low, area);
+  for (std::size_t k = 0; k < loads.size(); ++k) {
+    EXPECT_NEAR(plastic.curve.area_fraction[k], loads[k] / h_low, 1e-12 * loads[k] / h_low);
+    EXPECT_NEAR(plastic.plastic_load_fraction[k], 1, 1e-12);
+  }
+  // ac = G^2 (2/h)^(2/(D-1)) = 1e-40 A0 -> h = 2 (1e-40 A0 / G^2)^(-(D-1)/2).
+  const Real h_high = 2 * std::pow(1e-40 * area / (f.roughness * f.roughness), -(f.dimension - 1) / 2);
+  const PlasticCurve elastic = majumdar_bhushan_curve(f, loads, kNoHardness, area);
+  const PlasticCurve nearly = majumdar_bhushan_curve(f, loads, h_high, area);
+  for (std::size_t k = 0; k < loads.size(); ++k) {
+    EXPECT_NEAR(nearly.curve.area_fraction[k] / elastic.curve.area_fraction[k], 1, 1e-6)
+        << "load " << loads[k];
+    EXPECT_EQ(elastic.plastic_area_fraction[k], 0);
+  }
+}
+
+TEST(MajumdarBhushan, RefusesNoHardnessAboveDimensionOneAndAHalfAndAHardnessBelowALoad) {
+  const FractalParameters f{.dimension = 1.6, .roughness = 1e-10};
+  const std::vector<Real> loads{1e-3, 1e-2};
+  EXPECT_NE(error_of([&] { majumdar_bhushan_curve(f, loads, kNoHardness, 4e-8); }).find("diverges"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { majumdar_bhushan_curve(f, loads, 5e-3, 4e-8); }).find("(load 2)"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -39,11 +39,12 @@ MethodNeeds PlasticTheoryMethod::needs(const SceneContext&) const {
   return {.moments = true, .sweep = std::nullopt, .bem = std::nullopt, .bem_connectivity = 4};
 }
 
-PlasticTheoryInputs PlasticTheoryMethod::inputs(const Scene& scene, Real nominal_area) const {
+PlasticTheoryInputs PlasticTheoryMethod::inputs(const Scene& scene, const Surface& surface) const {
   PlasticTheoryInputs in;
   if (hardness_) in.hardness_over_estar = *hardness_ / scene.material.estar;
   if (scene.material.poisson_ratio) in.poisson_ratio = *scene.material.poisson_ratio;
-  in.nominal_area = nominal_area;
+  in.nominal_area = surface.grid().nominal_area();
+  in.surface = &surface;
   return in;
 }
 
@@ -56,7 +57,7 @@ void PlasticTheoryMethod::preflight(const MethodCheck& check) const {
   // Each load on its own, so that every load the theory refuses is named; a reason that is not about a load
   // (the same for all of them) is given once.
   std::vector<std::string> reasons;
-  const PlasticTheoryInputs in = inputs(check.scene, check.surface.grid().nominal_area());
+  const PlasticTheoryInputs in = inputs(check.scene, check.surface);
   for (const Real load : check.scene.loads) {
     try {
       curve_(check.moments, std::span<const Real>(&load, 1), in);
@@ -71,8 +72,7 @@ void PlasticTheoryMethod::preflight(const MethodCheck& check) const {
 }
 
 MethodCurve PlasticTheoryMethod::evaluate(const MethodInputs& in) const {
-  const PlasticCurve plastic =
-      curve_(in.moments, in.scene.loads, inputs(in.scene, in.surface.grid().nominal_area()));
+  const PlasticCurve plastic = curve_(in.moments, in.scene.loads, inputs(in.scene, in.surface));
   MethodCurve curve = MethodCurve::from(plastic.curve, in.scene.loads);
   curve.columns.emplace_back("plastic_area_fraction", plastic.plastic_area_fraction);
   curve.columns.emplace_back("plastic_load_fraction", plastic.plastic_load_fraction);

@@ -24,6 +24,7 @@ std::unique_ptr<Method> make_plateau_hertz_capped_method();
 std::unique_ptr<Method> make_persson_plastic_method();
 std::unique_ptr<Method> make_ceb_method();
 std::unique_ptr<Method> make_kogut_etsion_method();
+std::unique_ptr<Method> make_majumdar_bhushan_method();
 
 MethodRegistry& MethodRegistry::global() {
   static MethodRegistry registry = [] {
@@ -46,6 +47,8 @@ MethodRegistry& MethodRegistry::global() {
                  make_persson_plastic_method);               // plastic: Persson 2001 with a yield stress
     built_in.add("ceb", make_ceb_method);                    // plastic: Chang-Etsion-Bogy 1987 on GW summits
     built_in.add("kogut_etsion", make_kogut_etsion_method);  // plastic: Kogut-Etsion 2002 on GW summits
+    built_in.add("majumdar_bhushan",
+                 make_majumdar_bhushan_method);  // plastic: the fractal model the seed cites
     return built_in;
   }();
   return registry;
