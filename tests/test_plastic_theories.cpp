@@ -12,6 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "contactbench/app/methods/registry.hpp"
+#include "contactbench/app/scene.hpp"
+#include "contactbench/app/scene_run.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
@@ -25,6 +28,7 @@
 #include "contactbench/theories/plateau_capped.hpp"
 #include "contactbench/theories/plateau_hertz.hpp"
 #include "contactbench/theories/plateau_model.hpp"
+#include "small_scene.hpp"
 
 namespace contactbench {
 namespace {
@@ -414,6 +418,65 @@ TEST(MajumdarBhushan, RefusesNoHardnessAboveDimensionOneAndAHalfAndAHardnessBelo
             std::string::npos);
   EXPECT_NE(error_of([&] { majumdar_bhushan_curve(f, loads, 5e-3, 4e-8); }).find("(load 2)"),
             std::string::npos);
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// As methods of a scene.
+
+std::vector<std::string> problems_of(const std::string& text) {
+  try {
+    run_scene(parse_scene(text, "plastic.toml"), {.threads = 1});
+  } catch (const SceneError& error) {
+    return error.problems();
+  }
+  return {};
+}
+
+bool mentions(const std::vector<std::string>& problems, const std::string& a, const std::string& b) {
+  return std::any_of(problems.begin(), problems.end(), [&](const std::string& p) {
+    return p.find(a) != std::string::npos && p.find(b) != std::string::npos;
+  });
+}
+
+TEST(PlasticMethods, EveryMethodModelsTheHardnessOrIsRefusedByPreflight) {
+  // E* = 109.9 GPa: the loads 1e-3 and 1e-2 are mean pressures of 0.11 and 1.1 GPa; the hardness 0.5 GPa. A
+  // method that models the hardness refuses the second load, naming it; every other is refused as not
+  // modelling it.
+  for (const std::string& name : MethodRegistry::global().names()) {
+    const std::unique_ptr<Method> method = MethodRegistry::global().make(name);
+    const std::vector<Effect> effects = method->models();
+    const bool models = std::find(effects.begin(), effects.end(), Effect::hardness) != effects.end();
+    const std::vector<std::string> problems =
+        problems_of("name = \"plastic\"\n" + kSmallSurfaceAndMaterial + "[interface]\nhardness = 5e8\n" +
+                    "[loads]\nvalues = [1e-3, 1e-2]\n[methods." + name + "]\n");
+    if (models)
+      EXPECT_TRUE(mentions(problems, "interface.hardness", "(load 2)")) << name;
+    else
+      EXPECT_TRUE(mentions(problems, "methods." + name, "does not model the interface's hardness")) << name;
+  }
+}
+
+TEST(PlasticMethods, RunInASceneWithTheirColumns) {
+  // Loads below the hardness: every plastic method answers beside an elastic one that ignores the hardness,
+  // with a finite area and its two plastic columns.
+  const std::string text =
+      "name = \"plastic\"\n" + kSmallSurfaceAndMaterial + "[interface]\nhardness = 5e9\n" +
+      "[loads]\nvalues = [1e-3, 1e-2]\n[methods.ceb]\n[methods.kogut_etsion]\n"
+      "[methods.persson_plastic]\n[methods.plateau_capped]\n[methods.plateau_hertz_capped]\n"
+      "[methods.majumdar_bhushan]\n[methods.gw_mccool]\nignore = [\"hardness\"]\n";
+  const SceneReport report = run_scene(parse_scene(text, "plastic.toml"), {.threads = 1});
+  for (const MethodResult& result : report.methods) {
+    const MethodCurve& curve = result.curve;
+    ASSERT_EQ(curve.area_fraction.size(), 2u) << result.label;
+    if (result.label == "gw_mccool") continue;
+    const auto column = [&](const std::string& name) {
+      return std::any_of(curve.columns.begin(), curve.columns.end(),
+                         [&](const auto& c) { return c.first == name; });
+    };
+    EXPECT_TRUE(column("plastic_area_fraction")) << result.label;
+    EXPECT_TRUE(column("plastic_load_fraction")) << result.label;
+    EXPECT_TRUE(std::isfinite(curve.area_fraction[1])) << result.label;
+  }
 }
 
 }  // namespace
