@@ -19,6 +19,12 @@ std::unique_ptr<Method> make_fuller_tabor_method();
 std::unique_ptr<Method> make_maugis_gw_method();
 std::unique_ptr<Method> make_plateau_kendall_method();
 std::unique_ptr<Method> make_plateau_hertz_jkr_method();
+std::unique_ptr<Method> make_plateau_capped_method();
+std::unique_ptr<Method> make_plateau_hertz_capped_method();
+std::unique_ptr<Method> make_persson_plastic_method();
+std::unique_ptr<Method> make_ceb_method();
+std::unique_ptr<Method> make_kogut_etsion_method();
+std::unique_ptr<Method> make_majumdar_bhushan_method();
 
 MethodRegistry& MethodRegistry::global() {
   static MethodRegistry registry = [] {
@@ -34,6 +40,15 @@ MethodRegistry& MethodRegistry::global() {
     built_in.add("maugis_gw", make_maugis_gw_method);              // adhesive: GW summits each Maugis-Dugdale
     built_in.add("plateau_kendall", make_plateau_kendall_method);  // adhesive, the project's: Kendall punches
     built_in.add("plateau_hertz_jkr", make_plateau_hertz_jkr_method);  // adhesive, the project's: JKR tips
+    built_in.add("plateau_capped",
+                 make_plateau_capped_method);  // plastic, the project's: plateaus capped at H
+    built_in.add("plateau_hertz_capped", make_plateau_hertz_capped_method);  // plastic, the project's
+    built_in.add("persson_plastic",
+                 make_persson_plastic_method);               // plastic: Persson 2001 with a yield stress
+    built_in.add("ceb", make_ceb_method);                    // plastic: Chang-Etsion-Bogy 1987 on GW summits
+    built_in.add("kogut_etsion", make_kogut_etsion_method);  // plastic: Kogut-Etsion 2002 on GW summits
+    built_in.add("majumdar_bhushan",
+                 make_majumdar_bhushan_method);  // plastic: the fractal model the seed cites
     return built_in;
   }();
   return registry;

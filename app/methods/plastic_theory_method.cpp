@@ -1,0 +1,82 @@
+#include "contactbench/app/methods/plastic_theory_method.hpp"
+
+#include <algorithm>
+
+#include "contactbench/app/problems.hpp"
+#include "contactbench/app/scene_keys.hpp"
+#include "contactbench/app/scene_text.hpp"
+#include "contactbench/app/section.hpp"
+
+namespace contactbench {
+
+void check_hardness_against_loads(const MethodCheck& check) {
+  const std::optional<Real> hardness = check.interface.hardness;
+  if (!hardness) return;
+  std::vector<std::string> refused;
+  for (std::size_t k = 0; k < check.scene.loads.size(); ++k)
+    if (check.scene.loads[k] * check.scene.material.estar >= *hardness)
+      refused.push_back(exact_number(check.scene.loads[k]) + " (load " + std::to_string(k + 1) + ")");
+  if (!refused.empty())
+    check.problems.add(0, "interface.hardness",
+                       "the hardness " + exact_number(*hardness) +
+                           " Pa is at or below the mean pressure P/A0 = "
+                           "load E* of the loads " +
+                           join(refused) + " for " + check.key +
+                           ": the whole nominal area would be plastic (A/A0 = P/(H A0) >= 1)",
+                       "a hardness above " +
+                           exact_number(check.scene.loads.back() * check.scene.material.estar) +
+                           " Pa (the largest load times E*), or loads below hardness/E*");
+}
+
+void PlasticTheoryMethod::read(const Section& s, const SceneContext& context) {
+  s.reject_unknown({"method"});
+  hardness_ = context.interface.hardness;
+}
+
+void PlasticTheoryMethod::write(SceneKeys&) const {}
+
+MethodNeeds PlasticTheoryMethod::needs(const SceneContext&) const {
+  return {.moments = true, .sweep = std::nullopt, .bem = std::nullopt, .bem_connectivity = 4};
+}
+
+PlasticTheoryInputs PlasticTheoryMethod::inputs(const Scene& scene, const Surface& surface) const {
+  PlasticTheoryInputs in;
+  if (hardness_) in.hardness_over_estar = *hardness_ / scene.material.estar;
+  if (scene.material.poisson_ratio) in.poisson_ratio = *scene.material.poisson_ratio;
+  in.nominal_area = surface.grid().nominal_area();
+  in.surface = &surface;
+  return in;
+}
+
+void PlasticTheoryMethod::preflight(const MethodCheck& check) const {
+  check_hardness_against_loads(check);
+  if (check.interface.hardness &&
+      std::any_of(check.scene.loads.begin(), check.scene.loads.end(),
+                  [&](Real load) { return load * check.scene.material.estar >= *check.interface.hardness; }))
+    return;  // said once above; the theory would only repeat it
+  // Each load on its own, so that every load the theory refuses is named; a reason that is not about a load
+  // (the same for all of them) is given once.
+  std::vector<std::string> reasons;
+  const PlasticTheoryInputs in = inputs(check.scene, check.surface);
+  for (const Real load : check.scene.loads) {
+    try {
+      curve_(check.moments, std::span<const Real>(&load, 1), in);
+    } catch (const Error& error) {
+      if (std::find(reasons.begin(), reasons.end(), error.what()) == reasons.end())
+        reasons.push_back(error.what());
+    }
+  }
+  for (const std::string& reason : reasons)
+    check.problem("", reason,
+                  "loads the theory reaches (loads.values or loads.range), or leave this method out");
+}
+
+MethodCurve PlasticTheoryMethod::evaluate(const MethodInputs& in) const {
+  const PlasticCurve plastic = curve_(in.moments, in.scene.loads, inputs(in.scene, in.surface));
+  MethodCurve curve = MethodCurve::from(plastic.curve, in.scene.loads);
+  curve.columns.emplace_back("plastic_area_fraction", plastic.plastic_area_fraction);
+  curve.columns.emplace_back("plastic_load_fraction", plastic.plastic_load_fraction);
+  return curve;
+}
+
+}  // namespace contactbench
