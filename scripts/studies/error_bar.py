@@ -5,8 +5,10 @@ Many periodic surfaces (Hurst 0.3-0.9, several seeds, two bands, isotropic and a
 coarse grid of `--base` points a side (its spectrum cut at that grid's Nyquist, so every finer grid is the same
 surface, Fourier-refined: docs/theory.md section 2), solved by the BEM at every load of 1e-4 ... 5e-2 on
 base, 2 base, ... up to `--truth` points a side. For every case (surface x load) and every error estimate of
-bem/grid_convergence.hpp (gci3: three grids n, 2n, 4n with the observed order, Roache's factor 1.25; gci2: two
-grids 2n, 4n at the formal order 1, factor 3; the former estimate |extrapolated - corrected(4n)|), the estimate
+bem/grid_convergence.hpp (gci3: three grids n, 2n, 4n, the observed order clamped to [0.5, 1], Roache's factor
+1.25 within 10 % of order 1, else 3; gci2: two grids 2n, 4n at the formal order 1, factor 3), of variants that
+failed (gci3_roache: Roache's GCI at the observed order; gci3_fine: that bar on the 4n grid's count; gci_ext:
+the bar on the change of the order-1 extrapolates) and of the former |extrapolated - corrected(4n)|, the estimate
 made from the grids n = base is compared with the truth:
 
   truth = the three-grid Richardson extrapolation with the observed order from truth/4, truth/2 and truth
@@ -56,8 +58,9 @@ SMALLEST_ORDER, LARGEST_ORDER = 0.5, 2.0
 FACTOR_THREE, FACTOR_TWO = 1.25, 3.0
 
 
-def gci3(coarse, medium, fine):
-    """Roache's grid convergence index from three grids of ratio 2: (value, bar, order).
+def gci3_roache(coarse, medium, fine):
+    """Roache's grid convergence index from three grids of ratio 2 at the observed order (not the code's):
+    (value, bar, order).
     value = the finest grid extrapolated at the observed order; bar = 1.25 |fine - medium| / (2^p - 1), the GCI
     of the finest grid, applied to the extrapolated value as well (it contains the fine grid's value: see docs)."""
     d21, d32 = medium - coarse, fine - medium
@@ -69,6 +72,29 @@ def gci3(coarse, medium, fine):
         return fine + d32 / (2**p - 1), FACTOR_THREE * abs(d32) / (2**p - 1), p
     # No trusted order: the formal order 1, the factor 3 on the largest difference (Eca and Hoekstra 2014)
     return fine + d32, FACTOR_TWO * max(abs(d21), abs(d32)), p
+
+
+def gci3(coarse, medium, fine):
+    """As bem/grid_convergence.cpp: Roache's GCI as Oberkampf and Roy apply it (2010, section 8.7): the order used
+    min(max(0.5, p), formal order 1); the factor 1.25 only when the observed order is within 10 % of the formal
+    one, else 3; no monotone convergence, or an order above 2: order 1 and 3 x the largest difference.
+    (value, bar, order)."""
+    d21, d32 = medium - coarse, fine - medium
+    if d21 == 0 or d32 == 0 or d21 * d32 < 0:
+        return fine + d32, FACTOR_TWO * max(abs(d21), abs(d32)), math.nan
+    p = math.log(d21 / d32) / math.log(2)
+    if p > LARGEST_ORDER:  # far above the formal order: the last step is anomalously small
+        return fine + d32, FACTOR_TWO * max(abs(d21), abs(d32)), p
+    used = min(max(p, SMALLEST_ORDER), 1.0)
+    factor = FACTOR_THREE if abs(p - 1) <= 0.1 else FACTOR_TWO
+    return fine + d32 / (2**used - 1), factor * abs(d32) / (2**used - 1), p
+
+
+def gci_extrapolates(coarse, medium, fine, factor):
+    """The two-grid GCI applied to the order-1 extrapolates of the two pairs: value = 2 fine - medium, bar =
+    factor |(2 fine - medium) - (2 medium - coarse)| (the extrapolates' remaining error assumed of order 1)."""
+    value = 2 * fine - medium
+    return value, factor * abs(value - (2 * medium - coarse))
 
 
 def gci2(medium, fine):
@@ -170,18 +196,23 @@ def main():
         write_atomically(raw_path, "\n".join(raw) + "\n")
     elapsed = time.time() - started
 
-    estimates = ["gci3", "gci2", "former"]
+    estimates = ["gci3", "gci3_roache", "gci3_fine", "gci_ext3", "gci_ext1.25", "gci2", "former"]
     records = []  # one per case and estimate
     for (f, seed), grids in cases.items():
         for k, load in enumerate(LOADS):
             true, true_unc, true_order = truth_of(grids, k, args.truth)
             n = args.base
             c, m, fi = grids[n][k][0], grids[2 * n][k][0], grids[4 * n][k][0]
-            v3, b3, p3 = gci3(c, m, fi)
+            vr, br, pr = gci3_roache(c, m, fi)
             v2, b2 = gci2(m, fi)
+            v3, b3, p3 = gci3(c, m, fi)
+            ve, be3 = gci_extrapolates(c, m, fi, FACTOR_TWO)
+            _, be1 = gci_extrapolates(c, m, fi, FACTOR_THREE)
             former_value = 2 * fi - m
             former_bar = abs(former_value - grids[4 * n][k][1])
-            for name, value, bar, order in (("gci3", v3, b3, p3), ("gci2", v2, b2, math.nan),
+            for name, value, bar, order in (("gci3", v3, b3, p3), ("gci3_roache", vr, br, pr),
+                                            ("gci3_fine", fi, br, pr), ("gci_ext3", ve, be3, math.nan),
+                                            ("gci_ext1.25", ve, be1, math.nan), ("gci2", v2, b2, math.nan),
                                             ("former", former_value, former_bar, math.nan)):
                 err = abs(value - true)
                 records.append(dict(family=f, seed=seed, load=load, estimate=name, truth=true,
