@@ -72,6 +72,8 @@ std::string BemStage::name() const {
       text << " rho " << adhesion->range << " m";
   }
   if (settings.extrapolate) text << ", again on twice the points a side for the extrapolated area";
+  if (settings.extrapolate && settings.error_estimate == ErrorEstimate::gci3)
+    text << " and on a third grid for its error bar";
   text << ")";
   return text.str();
 }
@@ -126,6 +128,22 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
     products.fine_statistics = std::move(fine_loads.statistics);
     products.fine_adhesive = std::move(fine_loads.adhesive);
     products.bytes_per_rank = std::max(products.bytes_per_rank, fine_loads.bytes_per_rank);
+    if (stage.settings.error_estimate == ErrorEstimate::gci3) {
+      // The third grid of the error bar (docs/theory.md section 9.2): half the first grid when that still
+      // holds the scene's surface, else twice the finer one.
+      const bool coarser = third_grid_is_coarser(nx, ny, surface.grid().nx, surface.grid().ny);
+      products.third_nx = coarser ? nx / 2 : 4 * nx;
+      products.third_ny = coarser ? ny / 2 : 4 * ny;
+      Surface third = products.third_nx == surface.grid().nx && products.third_ny == surface.grid().ny
+                          ? surface
+                          : refine(surface, products.third_nx, products.third_ny, context.threads);
+      if (third.grid().periodic != stage.periodic) third = third.with_periodic(stage.periodic);
+      SolvedLoads third_loads =
+          context.runner().solve_loads(stage, third, estar, mean_pressures, connectivities, "", context);
+      products.third_solutions = std::move(third_loads.solutions);
+      products.third_statistics = std::move(third_loads.statistics);
+      products.bytes_per_rank = std::max(products.bytes_per_rank, third_loads.bytes_per_rank);
+    }
   }
   products.seconds = seconds_since(start);
   return products;

@@ -66,6 +66,11 @@ struct BemProducts {
   std::vector<AdhesiveLoad> fine_adhesive;
   std::map<int, std::vector<ContactStatistics>> fine_statistics;  // by connectivity
   Index fine_points = 0;
+  // With error_estimate = "gci3" as well: a third grid, half the first or twice the finer (points a side
+  // third_nx x third_ny; bem_settings.hpp third_grid_is_coarser).
+  std::vector<ContactSolution> third_solutions;
+  std::map<int, std::vector<ContactStatistics>> third_statistics;  // by connectivity
+  Index third_nx = 0, third_ny = 0;
   // Run on several MPI ranks (app/distributed_stages.hpp): the largest memory one rank held for a solve
   // [bytes]; 0 when solved by one process.
   std::size_t bytes_per_rank = 0;

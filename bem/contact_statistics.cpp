@@ -34,6 +34,19 @@ ContactStatistics contact_statistics(const ContactSolution& solution, Labeller& 
   s.spots = labeller.label(contact).count;
   s.mean_gap = solution.gap.mean();
   s.max_pressure = solution.pressure.maxCoeff();
+  const Topology& topology = labeller.topology();
+  const Index nx = contact.cols(), ny = contact.rows();
+  const Index ring = kEdgeRingPixels;
+  if (!topology.wrap_x && !topology.wrap_y && nx > 2 * ring && ny > 2 * ring) {
+    // All less the interior block.
+    const auto inside_contact = contact.block(ring, ring, ny - 2 * ring, nx - 2 * ring);
+    const auto inside_pressure = solution.pressure.block(ring, ring, ny - 2 * ring, nx - 2 * ring);
+    const Real all_pressure = solution.pressure.sum();
+    if (in_contact > 0)
+      s.edge_contact_share =
+          static_cast<Real>(in_contact - inside_contact.cast<Index>().sum()) / static_cast<Real>(in_contact);
+    if (all_pressure > 0) s.edge_load_share = (all_pressure - inside_pressure.sum()) / all_pressure;
+  }
   return s;
 }
 

@@ -65,7 +65,8 @@ TEST(BemExtrapolation, RemovesTheNodeCountBiasOnHertz) {
        << "\nperiodic = true\n[material]\nestar = 1e11\n[loads]\nvalues = [";
   for (std::size_t k = 0; k < loads.size(); ++k)
     text << (k ? ", " : "") << loads[k];
-  text << "]\n[methods.bem]\nextrapolate = true\n";
+  // Two grids (the third of "gci3" would be 1024 points a side here: too slow for a test).
+  text << "]\n[methods.bem]\nextrapolate = true\nerror_estimate = \"gci2\"\n";
   const SceneReport report = run_scene(parse_scene(text.str(), "hertz.toml"), {.threads = 2});
   std::filesystem::remove(file);
   const MethodResult& bem = report.methods[0];
@@ -91,11 +92,13 @@ TEST(BemExtrapolation, RemovesTheNodeCountBiasOnHertz) {
   EXPECT_GT(mean_fine, 0);
   EXPECT_LT(std::abs(mean_extrapolated), 0.5 * mean_fine)
       << "coarse " << mean_coarse << ", fine " << mean_fine << ", extrapolated " << mean_extrapolated;
-  // The error estimate is of the size of the true error (measured rms over the loads: true 1.17e-4,
-  // estimated 1.00e-4 in A/A0; require a factor 3 either way): a bar that neither hides nor inflates the
-  // reference's uncertainty.
-  EXPECT_LT(std::sqrt(true_squares), 3 * std::sqrt(estimate_squares));
-  EXPECT_GT(std::sqrt(true_squares), std::sqrt(estimate_squares) / 3);
+  // The error bar (the two-grid GCI, 3 |N(512) - N(256)|) covers the true error and does not inflate it by
+  // more than a factor 10 (a bar of the fine grid's error put on the extrapolated value: the calibration
+  // study, scripts/studies/error_bar.py, measures 7 to 38 times over rough surfaces; the message prints
+  // both).
+  EXPECT_LT(std::sqrt(true_squares), std::sqrt(estimate_squares));
+  EXPECT_LT(std::sqrt(estimate_squares), 10 * std::sqrt(true_squares))
+      << "true " << std::sqrt(true_squares / 8) << ", bar " << std::sqrt(estimate_squares / 8);
   // The comparison reports the reference's own uncertainty, load by load.
   const Comparison comparison = compare(report);
   ASSERT_EQ(comparison.reference_uncertainty.size(), loads.size());

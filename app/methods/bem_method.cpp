@@ -15,6 +15,7 @@
 #include "contactbench/app/scene_toml.hpp"
 #include "contactbench/app/section.hpp"
 #include "contactbench/app/stages.hpp"
+#include "contactbench/bem/grid_convergence.hpp"
 #include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/atomic_file.hpp"
 #include "contactbench/core/error.hpp"
@@ -134,6 +135,8 @@ class BemMethod final : public Method {
       const Grid& grid = check.surface.grid();
       const Index nx = settings_.refine > 0 ? settings_.refine : grid.nx;
       const Index ny = settings_.refine > 0 ? settings_.refine : grid.ny;
+      const bool third_finer =
+          settings_.error_estimate == ErrorEstimate::gci3 && !third_grid_is_coarser(nx, ny, grid.nx, grid.ny);
       if (!grid.periodic)
         check.problem("extrapolate",
                       "the second solve, on twice the points a side, needs Fourier refinement, which needs a "
@@ -144,6 +147,12 @@ class BemMethod final : public Method {
                       "the second solve would need " + std::to_string(2 * std::max(nx, ny)) +
                           " points a side, more than " + std::to_string(kMaxPointsASide),
                       "extrapolate = false, or refine to at most " + std::to_string(kMaxPointsASide / 2));
+      else if (third_finer && 4 * std::max(nx, ny) > kMaxPointsASide)
+        check.problem("error_estimate",
+                      "the third grid of \"gci3\" would need " + std::to_string(4 * std::max(nx, ny)) +
+                          " points a side, more than " + std::to_string(kMaxPointsASide) +
+                          " (it is half the first grid only when the surface has at most that many points)",
+                      "error_estimate = \"gci2\", or refine to at least twice the surface's points a side");
     }
     check_memory(check);
     if (check.interface.hardness && check.interface.adhesion)
@@ -198,6 +207,16 @@ class BemMethod final : public Method {
                      {"iterations", iterations},     {"residual", residual},
                      {"converged", converged},       {"solve_seconds", seconds}};
     if (products.hardness) curve.columns.emplace_back("plastic_fraction", plastic);  // nodes at p = H / all
+    if (!products.periodic) {
+      // What the record's edges carry (bem/contact_statistics.hpp): every non-periodic run reports it.
+      std::vector<Real> edge_contact, edge_load;
+      for (const ContactStatistics& s : stats) {
+        edge_contact.push_back(s.edge_contact_share);
+        edge_load.push_back(s.edge_load_share);
+      }
+      curve.columns.emplace_back("edge_contact_share", edge_contact);
+      curve.columns.emplace_back("edge_load_share", edge_load);
+    }
     if (settings_.extrapolate) extrapolate(products, curve);
     if (settings_.node_area) curve.area_fraction = nodes;
     curve.area_fraction_nodes = nodes;
@@ -213,10 +232,19 @@ class BemMethod final : public Method {
         " (node count in area_fraction_nodes), spots by " + std::to_string(settings_.connectivity) +
         "-connectivity";
     if (settings_.extrapolate)
-      curve.parameters += "; area Richardson-extrapolated (order 1) from the node counts on " +
-                          std::to_string(products.points) + " and " + std::to_string(products.fine_points) +
-                          " nodes, error estimate |extrapolated - corrected area of the finer grid| "
-                          "(docs/theory.md section 9); spots and separation of the finer grid";
+      curve.parameters +=
+          settings_.error_estimate == ErrorEstimate::gci3
+              ? "; area Richardson-extrapolated at the observed order from the node counts on three grids (" +
+                    std::to_string(products.third_nx * products.third_ny) + ", " +
+                    std::to_string(products.points) + " and " + std::to_string(products.fine_points) +
+                    " nodes), error bar Roache's GCI (factor 1.25, 3 where the order is not observed in "
+                    "[0.5, 2]; columns observed_order, safety_factor; docs/theory.md section 9.2); spots and "
+                    "separation of the grid on " +
+                    std::to_string(products.fine_points) + " nodes"
+              : "; area Richardson-extrapolated (order 1) from the node counts on " +
+                    std::to_string(products.points) + " and " + std::to_string(products.fine_points) +
+                    " nodes, error bar Roache's two-grid GCI 3 |N(2n) - N(n)| (docs/theory.md section 9.2); "
+                    "spots and separation of the finer grid";
     if (products.adhesion) add_adhesive_columns(products, in.scene.material.estar, curve);
     return curve;
   }
@@ -229,12 +257,15 @@ class BemMethod final : public Method {
   // precision; measured the same way on surface A at 2048^2, P/(E* A0) = 0.01: 241, 293, 170 and 197 bytes
   // per point in all; again after its response to a unit load and single-precision weights, 237, 290, 168
   // and 194; with the filter in single precision, 229, 272, 168 and 194). extrapolate = true solves the same
-  // loads again on 4 times the points, after the first grid is freed: the finer solve is the peak.
+  // loads again on 4 times the points, after the first grid is freed: the finer solve is the peak;
+  // error_estimate = "gci3" with a third grid twice the finer: that one is the peak.
   void check_memory(const MethodCheck& check) const {
     const Grid& grid = check.surface.grid();
     const Index nx = settings_.refine > 0 ? settings_.refine : grid.nx;
     const Index ny = settings_.refine > 0 ? settings_.refine : grid.ny;
-    const Index side = settings_.extrapolate ? 2 : 1;
+    const bool third_finer = settings_.extrapolate && settings_.error_estimate == ErrorEstimate::gci3 &&
+                             !third_grid_is_coarser(nx, ny, grid.nx, grid.ny);
+    const Index side = third_finer ? 4 : settings_.extrapolate ? 2 : 1;
     const bool periodic = settings_.periodic.value_or(grid.periodic);
     std::uintmax_t per_point =
         settings_.solver.single_precision ? (periodic ? 115 : 135) : (periodic ? 150 : 175);
@@ -286,22 +317,39 @@ class BemMethod final : public Method {
   }
 
   // docs/theory.md section 9: the node count overestimates the area by a band along the contact edges, a
-  // pixel wide: an error of order 1 in the pixel size (measured: scripts/studies/bem_area_order.py). With
-  // the grid's count N(h) and the finer one's N(h/2), N(0) = 2 N(h/2) - N(h) + O(h^(1+)). Its error is
-  // estimated by the distance to an independent estimate of the same continuum area, the perimeter-corrected
-  // area of the finer grid.
+  // pixel wide: an error of order 1 in the pixel size (measured: scripts/studies/bem_area_order.py). The
+  // counts on the grids are extrapolated to the zero pixel, and the error bar is Roache's grid convergence
+  // index (bem/grid_convergence.hpp, section 9.2), calibrated by scripts/studies/error_bar.py.
   void extrapolate(const BemProducts& products, MethodCurve& curve) const {
     const std::vector<ContactStatistics>& coarse = products.statistics.at(settings_.connectivity);
     const std::vector<ContactStatistics>& fine = products.fine_statistics.at(settings_.connectivity);
+    const bool three = settings_.error_estimate == ErrorEstimate::gci3;
+    const bool third_coarser = three && products.third_nx * products.third_ny < products.points;
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
-    std::vector<Real> fine_nodes, fine_corrected, extrapolated, error, fine_iterations;
+    std::vector<Real> fine_nodes, fine_corrected, extrapolated, error, fine_iterations, order, factor,
+        grid_coarse, grid_medium, grid_fine;
+    // The grids behind the bar, points a side (the geometric mean of nx and ny), coarsest first.
+    const Real first_side = std::sqrt(static_cast<Real>(products.points));
+    const Real third_side = std::sqrt(static_cast<Real>(products.third_nx * products.third_ny));
     for (std::size_t k = 0; k < coarse.size(); ++k) {
-      const Real value = 2 * fine[k].area_fraction - coarse[k].area_fraction;
+      GridConvergence g;
+      if (!three) {
+        g = grid_convergence_two(coarse[k].area_fraction, fine[k].area_fraction);
+      } else {
+        const Real third = products.third_statistics.at(settings_.connectivity)[k].area_fraction;
+        g = third_coarser ? grid_convergence_three(third, coarse[k].area_fraction, fine[k].area_fraction)
+                          : grid_convergence_three(coarse[k].area_fraction, fine[k].area_fraction, third);
+      }
       fine_nodes.push_back(fine[k].area_fraction);
       fine_corrected.push_back(fine[k].area_fraction_corrected);
       // A negative extrapolation is a grid far from the asymptotic range: no answer rather than a wrong one.
-      extrapolated.push_back(value > 0 ? value : nan);
-      error.push_back(value > 0 ? std::abs(value - fine[k].area_fraction_corrected) : nan);
+      extrapolated.push_back(g.value > 0 ? g.value : nan);
+      error.push_back(g.value > 0 ? g.error : nan);
+      order.push_back(g.order);
+      factor.push_back(g.factor);
+      grid_coarse.push_back(third_coarser ? third_side : first_side);
+      grid_medium.push_back(third_coarser ? first_side : 2 * first_side);
+      grid_fine.push_back(third_coarser ? 2 * first_side : third_side);
       fine_iterations.push_back(static_cast<Real>(products.fine_solutions[k].iterations));
       curve.separation[k] = products.fine_solutions[k].separation;
       curve.spots[k] = static_cast<Real>(fine[k].spots);
@@ -313,6 +361,11 @@ class BemMethod final : public Method {
     curve.columns.emplace_back("area_fraction_corrected_fine", fine_corrected);
     curve.columns.emplace_back("area_fraction_extrapolated", extrapolated);
     curve.columns.emplace_back("area_fraction_error", error);
+    curve.columns.emplace_back("observed_order", order);  // NaN: two grids, or no monotone convergence
+    curve.columns.emplace_back("safety_factor", factor);
+    curve.columns.emplace_back("grid_coarse", grid_coarse);
+    curve.columns.emplace_back("grid_medium", grid_medium);
+    if (three) curve.columns.emplace_back("grid_fine", grid_fine);
     curve.columns.emplace_back("iterations_fine", fine_iterations);
   }
 

@@ -144,13 +144,29 @@ SettingTable<BemSettings> make_table() {
           .doc =
               "solve every load again on twice the points a side (Fourier-refined; periodic surfaces only, "
               "refused before any stage otherwise) and compare by the Richardson-extrapolated area "
-              "`area_fraction_extrapolated` = 2 N(2n) - N(n) of the node counts N, with the error estimate "
-              "`area_fraction_error` = its distance to the finer grid's perimeter-corrected area "
-              "(docs/theory.md "
-              "section 9); the table shows it as the reference's own uncertainty. Costs about 5 times the "
-              "single solve",
+              "`area_fraction_extrapolated` of the node counts N (2 N(2n) - N(n), or at the observed order "
+              "with a third grid), with the error bar `area_fraction_error` that `error_estimate` chooses "
+              "(docs/theory.md section 9); the table shows it as the reference's own uncertainty. Costs "
+              "about "
+              "5 times the single solve, and the third grid's",
           .distributed = true},
       [](BemSettings & s) -> auto& { return s.extrapolate; }));
+  table.push_back(bind_choice(
+      Row{.key = "error_estimate",
+          .kind = SettingKind::choice,
+          .accepted = "`\"gci3\"`, `\"gci2\"`",
+          .default_value = std::string("gci3"),
+          .doc =
+              "with `extrapolate = true`, the error bar `area_fraction_error` of the reference's area "
+              "(docs/solvers.md \"Error bar of the reference\"): `\"gci3\"` Roache's grid convergence index "
+              "from three grids, the observed order (at most 1) and the factor 1.25, or 3 when the order is "
+              "more than 10 % off 1 (a third solve: on half the points a "
+              "side when the surface is given on at most that many, +1/4 of the single solve; else on twice "
+              "the finer grid's, +16 times); `\"gci2\"` from the two grids at order 1 with the factor 3 (no "
+              "third solve). Calibrated by scripts/studies/error_bar.py",
+          .distributed = true,
+          .choices = {"gci2", "gci3"}},
+      [](BemSettings & s) -> auto& { return s.error_estimate; }));
   table.push_back(bind_choice(
       Row{.key = "area",
           .kind = SettingKind::choice,
@@ -199,6 +215,9 @@ void finish_bem_settings(
       problem("tolerance", "out of range: got " + exact_number(settings.solver.tolerance),
               "a number in [1e-06, 0.01] (single precision cannot resolve less)");
   }
+  if (was_given("error_estimate") && !settings.extrapolate)
+    problem("error_estimate", "the error bar is made from the grids of extrapolate = true, which is false",
+            "extrapolate = true with error_estimate, or no error_estimate");
   if (settings.node_area && settings.extrapolate)
     problem("area", "area = \"nodes\" and extrapolate = true ask for two different compared areas",
             "area = \"corrected\" (the default) with extrapolate = true, or extrapolate = false");

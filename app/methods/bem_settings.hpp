@@ -13,18 +13,31 @@
 
 namespace contactbench {
 
+// With extrapolate = true, the grids behind the reference's error bar (bem/grid_convergence.hpp): two, or
+// three.
+enum class ErrorEstimate { gci2, gci3 };
+
 struct BemSettings {
   Index refine = 0;              // points a side after Fourier refinement; 0: the scene's surface as it is
   std::optional<bool> periodic;  // none: the surface's own periodicity
   BemSolverOptions solver = {};  // tolerance, iteration cap, precision, iteration (hardness: the interface's)
   std::string fields;            // prefix of per-load pressure and gap files; empty: none written
   bool extrapolate = false;      // solve again on twice the points a side (docs/theory.md section 9)
-  int connectivity = 4;          // for counting contact spots
-  bool node_area = false;        // area = "nodes": compared by the node count (a node-based FE model's area)
+  ErrorEstimate error_estimate = ErrorEstimate::gci3;  // the error bar's grids (with extrapolate)
+  int connectivity = 4;                                // for counting contact spots
+  bool node_area = false;  // area = "nodes": compared by the node count (a node-based FE model's area)
   bool allow_unconverged = false;  // unconverged loads marked, the run exits 0
 };
 
 const SettingTable<BemSettings>& bem_settings();
+
+// error_estimate = "gci3": the third grid is half the solved grid when the scene's surface has at most that
+// many points a side (the same band-limited surface, and a quarter of the solve's cost more), else twice the
+// finer grid (16 times the single solve more). `solved_*` are the points a side of the first solve.
+inline bool third_grid_is_coarser(Index solved_nx, Index solved_ny, Index surface_nx, Index surface_ny) {
+  return solved_nx % 2 == 0 && solved_ny % 2 == 0 && solved_nx / 2 >= surface_nx &&
+         solved_ny / 2 >= surface_ny;
+}
 
 // The tolerances a scene, the command line or Python may ask for: in double precision [1e-13, 1e-2] (above,
 // a solve stops far from the solution; below, the relative change of a sum over millions of nodes is

@@ -1,0 +1,50 @@
+#include "contactbench/bem/grid_convergence.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace contactbench {
+
+GridConvergence grid_convergence_three(Real coarse, Real medium, Real fine) {
+  const Real d21 = medium - coarse, d32 = fine - medium;
+  GridConvergence g;
+  g.grids = 3;
+  g.order = d21 * d32 > 0 ? std::log2(d21 / d32) : std::numeric_limits<Real>::quiet_NaN();
+  if (!(d21 * d32 > 0) || g.order > kLargestTrustedOrder) {
+    // No monotone convergence (oscillation, or a flat step, as a coarse grid's few contact nodes give), or an
+    // order far above the formal one (a last step anomalously small; calibration study: observed 5.8 and a
+    // true error 3.6 times the bar it would give): the formal order, and the two-grid factor on the largest
+    // difference of the three (Eca and Hoekstra 2014's rule for anomalous convergence), so that a step that
+    // happens to be small does not make the bar vanish.
+    g.factor = kGciFactorTwoGrids;
+    const Real denominator = std::exp2(kFormalAreaOrder) - 1;
+    g.value = fine + d32 / denominator;
+    g.error = g.factor * std::max(std::abs(d21), std::abs(d32)) / denominator;
+    return g;
+  }
+  // Roache's GCI as Oberkampf and Roy apply it (2010, section 8.7): the order used is the observed one, at
+  // least 0.5 and at most the formal order (coarse grids show a higher apparent order that the finer ones do
+  // not keep: scripts/studies/error_bar.py, gci3_roache); the factor 1.25 only when the observed order is
+  // within 10 % of the formal one, else 3.
+  const Real used = std::clamp(g.order, kSmallestTrustedOrder, kFormalAreaOrder);
+  g.factor = std::abs(g.order - kFormalAreaOrder) <= kOrderAgreement * kFormalAreaOrder ? kGciFactorThreeGrids
+                                                                                        : kGciFactorTwoGrids;
+  const Real denominator = std::exp2(used) - 1;
+  g.value = fine + d32 / denominator;
+  g.error = g.factor * std::abs(d32) / denominator;
+  return g;
+}
+
+GridConvergence grid_convergence_two(Real medium, Real fine) {
+  GridConvergence g;
+  g.grids = 2;
+  g.order = std::numeric_limits<Real>::quiet_NaN();
+  g.factor = kGciFactorTwoGrids;
+  const Real denominator = std::exp2(kFormalAreaOrder) - 1;
+  g.value = fine + (fine - medium) / denominator;
+  g.error = g.factor * std::abs(fine - medium) / denominator;
+  return g;
+}
+
+}  // namespace contactbench
