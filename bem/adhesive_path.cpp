@@ -1,5 +1,6 @@
 #include "contactbench/bem/adhesive_path.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -8,14 +9,12 @@
 namespace contactbench {
 
 AdhesivePath approach_retract(AdhesiveBemSolver& solver, const AdhesivePathOptions& options) {
-  const auto& [start, turn, steps, jump_fraction, jump_floor] = options;
-  if (!std::isfinite(start) || !std::isfinite(turn) || !(turn < start) || steps < 2 || !(jump_fraction > 0) ||
-      !(jump_floor >= 0)) {
+  const auto& [start, turn, steps, jump_fraction] = options;
+  if (!std::isfinite(start) || !std::isfinite(turn) || !(turn < start) || steps < 2 || !(jump_fraction > 0)) {
     std::ostringstream text;
-    text
-        << "adhesive path: needs finite separations with turn < start, steps >= 2 per leg, jump_fraction > 0 "
-           "and jump_floor >= 0; got start "
-        << start << ", turn " << turn << ", steps " << steps;
+    text << "adhesive path: needs finite separations with turn < start, steps >= 2 per leg and jump_fraction "
+            "> 0; got start "
+         << start << ", turn " << turn << ", steps " << steps << ", jump_fraction " << jump_fraction;
     throw Error(text.str());
   }
   solver.forget();
@@ -42,26 +41,34 @@ AdhesivePath approach_retract(AdhesiveBemSolver& solver, const AdhesivePathOptio
       path.pull_off_pressure = state.mean_pressure;
       path.pull_off_separation = d;
     }
-    if (k > 0) {
-      const AdhesivePathState& before = path.states.back();
-      const Real move = d - before.separation;
-      const Real work = -0.5 * (before.mean_pressure + state.mean_pressure) * move;  // done on the solids
-      path.cycle_work += work;
-      const Real released = work - (state.energy - before.energy);
-      if (released > jump_fraction * std::abs(work) && released > jump_floor) {
-        path.jumps.push_back({.into_contact = approaching,
-                              .after = k,
-                              .separation_before = before.separation,
-                              .separation_after = d,
-                              .mean_pressure_before = before.mean_pressure,
-                              .mean_pressure_after = state.mean_pressure,
-                              .contact_points_before = before.contact_points,
-                              .contact_points_after = state.contact_points,
-                              .released_energy = released});
-        path.released_energy += released;
-      }
-    }
     path.states.push_back(state);
+  }
+  // The energy each step released, and the path's energy range (the scale a jump is measured against).
+  const std::vector<AdhesivePathState>& states = path.states;
+  Real lowest = states.front().energy, highest = lowest;
+  std::vector<Real> released(states.size(), 0);
+  for (std::size_t k = 1; k < states.size(); ++k) {
+    const AdhesivePathState &before = states[k - 1], &after = states[k];
+    const Real work =
+        -0.5 * (before.mean_pressure + after.mean_pressure) * (after.separation - before.separation);
+    path.cycle_work += work;  // done on the solids
+    released[k] = work - (after.energy - before.energy);
+    lowest = std::min(lowest, after.energy);
+    highest = std::max(highest, after.energy);
+  }
+  for (std::size_t k = 1; k < states.size(); ++k) {
+    if (!(released[k] > jump_fraction * (highest - lowest))) continue;
+    const AdhesivePathState &before = states[k - 1], &after = states[k];
+    path.jumps.push_back({.into_contact = after.approaching,
+                          .after = static_cast<Index>(k),
+                          .separation_before = before.separation,
+                          .separation_after = after.separation,
+                          .mean_pressure_before = before.mean_pressure,
+                          .mean_pressure_after = after.mean_pressure,
+                          .contact_points_before = before.contact_points,
+                          .contact_points_after = after.contact_points,
+                          .released_energy = released[k]});
+    path.released_energy += released[k];
   }
   return path;
 }

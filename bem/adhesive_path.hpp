@@ -7,7 +7,8 @@
 // A jump is told from a step by the energy: on a continuous branch the energy U (AdhesiveBemSolver::energy)
 // falls by the work the load does, ΔU = -∫ P/A0 dd (trapezoid rule over the step, error O(Δd^3)); at a jump
 // the state changes at fixed d and releases energy that no load did. A step is a jump when that released
-// energy, -(ΔU + trapezoid), exceeds `jump_fraction` of the step's trapezoid work and `jump_floor` [J/m^2].
+// energy, -(ΔU + trapezoid), exceeds `jump_fraction` of the path's energy range (max U - min U): the steps of
+// a continuous branch release only the trapezoid's error, a jump a share of the hysteresis.
 // Summed over a closed cycle the released energies are the hysteresis: the work the machine does around the
 // cycle, -∮ P/A0 dd (tests/test_adhesive_path.cpp checks the two agree).
 #pragma once
@@ -46,8 +47,7 @@ struct AdhesivePathOptions {
   Real start = 0;   // the separation the path starts and ends at [m]
   Real turn = 0;    // the deepest separation [m], < start
   Index steps = 0;  // per leg, >= 2
-  Real jump_fraction = 0.5;
-  Real jump_floor = 0;  // [J/m^2]
+  Real jump_fraction = 0.02;
 };
 
 struct AdhesivePath {
