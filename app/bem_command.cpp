@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "contactbench/app/adhesive_path_csv.hpp"
 #include "contactbench/app/cli.hpp"
 #include "contactbench/app/fftw_wisdom_file.hpp"
 #include "contactbench/app/flag_scene.hpp"
@@ -16,7 +17,9 @@
 #include "contactbench/app/report_writers.hpp"
 #include "contactbench/app/scene_run.hpp"
 #include "contactbench/app/setting_flags.hpp"
+#include "contactbench/app/surface_source.hpp"
 #include "contactbench/app/unconverged.hpp"
+#include "contactbench/bem/adhesive_path.hpp"
 #include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/fft.hpp"
@@ -33,6 +36,8 @@ struct BemOptions {
   std::optional<Real> hardness;  // the interface's effect (app/interface.hpp)
   // The interface's adhesion as "MODEL,KEY=VALUE,KEY=VALUE" (interface.adhesion's keys in the scene's order).
   std::string adhesion;
+  // --approach-retract FROM,TO,STEPS: separation control along a closed path instead of --loads.
+  std::vector<Real> approach_retract;
   // The BEM method's keys, each a flag as its declaration says (app/methods/bem_settings.cpp).
   SettingFlags settings{[] {
     std::vector<SettingSpec> specs;
@@ -92,6 +97,9 @@ toml::table scene_of(const BemOptions& o) {
   toml::array loads;
   for (const Real load : o.loads)
     loads.push_back(load);
+  // The path needs no load, but the scene's reader (which checks the surface, material and adhesion for it)
+  // needs one: it is never solved for.
+  if (!o.approach_retract.empty()) loads = toml::array{1.0};
   toml::table bem{{"method", "bem"}};
   o.settings.insert_into(bem);
   toml::table document{{"name", "bem"},
@@ -109,9 +117,9 @@ toml::table scene_of(const BemOptions& o) {
 // The command as given, every option that changes the result included, so that the header reruns it.
 std::string command_line(const BemOptions& o) {
   const TopographyOptions& t = o.topography;
-  std::string text = "contactbench bem " + t.file + " --loads";
+  std::string text = "contactbench bem " + t.file;
   for (std::size_t k = 0; k < o.loads.size(); ++k)
-    text += (k ? "," : " ") + json_number(o.loads[k]);
+    text += (k ? "," : " --loads ") + json_number(o.loads[k]);
   auto add = [&](const char* flag, const auto& value) {
     if (value) text += std::string(" ") + flag + " " + json_number(static_cast<double>(*value));
   };
@@ -124,17 +132,63 @@ std::string command_line(const BemOptions& o) {
   add("--modulus", o.modulus);
   add("--hardness", o.hardness);
   if (!o.adhesion.empty()) text += " --adhesion " + o.adhesion;
+  if (!o.approach_retract.empty())
+    text += " --approach-retract " + json_number(o.approach_retract[0]) + "," +
+            json_number(o.approach_retract[1]) + "," + json_number(o.approach_retract[2]);
   return text + o.settings.command_text() + " --threads " + std::to_string(o.threads);
+}
+
+// --approach-retract: the adhesive BEM along the closed separation path (bem/adhesive_path.hpp), written as
+// app/adhesive_path_csv.hpp says.
+void run_approach_retract(const BemOptions& o, const Scene& scene, const std::string& command) {
+  if (!scene.interface.adhesion)
+    throw Error("--approach-retract needs --adhesion (the path of a non-adhesive contact has no jumps)");
+  if (scene.interface.hardness)
+    throw Error("--approach-retract with --hardness: adhesion with a hardness is not modelled");
+  const std::vector<Real>& path = o.approach_retract;
+  const Real steps = path[2];
+  if (!(path[1] < path[0]) || !(steps >= 2) || steps != std::floor(steps) || steps > 1e6)
+    throw Error(
+        "--approach-retract FROM,TO,STEPS: needs TO < FROM (separations [m]) and a whole STEPS >= 2, "
+        "got " +
+        json_number(path[0]) + "," + json_number(path[1]) + "," + json_number(steps));
+  const Surface surface = make_surface(scene.surface, o.threads);
+  const Real modulus = scene.material.estar;
+  // The BEM's settings as the scene's method reads them (its solver, tolerance, periodicity).
+  const BemStage stage = *scene.method("bem")
+                              .method
+                              ->needs({.surface_points = std::nullopt,
+                                       .surface_periodic = surface.grid().periodic,
+                                       .folder = {},
+                                       .interface = scene.interface})
+                              .bem;
+  if (stage.settings.refine > 0 || stage.settings.extrapolate || !stage.settings.fields.empty())
+    throw Error("--approach-retract: --refine, --extrapolate and --fields are not taken along a path");
+  const RunObserver observer = terminal_observer(command);
+  AdhesiveSolverOptions options{.contact = stage.settings.solver};
+  options.contact.warning = observer.warning;
+  AdhesiveBemSolver solver(surface.with_periodic(stage.periodic), modulus, *stage.adhesion, options,
+                           o.threads);
+  const AdhesivePath result =
+      approach_retract(solver, {.start = path[0], .turn = path[1], .steps = static_cast<Index>(steps)});
+  const Provenance provenance = current_provenance(o.threads, command_line(o));
+  write_output(o.out, [&](std::ostream& out) {
+    write_adhesive_path_csv(out, result, modulus, surface.grid().nx * surface.grid().ny, provenance);
+  });
+  if (!result.converged) throw Error("contactbench bem: some states of the path did not converge (marked 0)");
 }
 
 void run_bem(const BemOptions& o, const CommandContext& context) {
   const std::string command = "contactbench bem";
+  if (o.loads.empty() == o.approach_retract.empty())
+    throw Error("contactbench bem: give --loads or --approach-retract (one of them)");
   const FlagNames flags = flag_names(o);
   const toml::table document = scene_of(o);
   if (o.topography.periodic && document["methods"]["bem"]["periodic"].value_or(true) == false)
     throw Error("--periodic and --non-periodic: give one of them");
   if (!o.out.empty()) check_output_file(o.out, o.topography.file, "--out");
   const Scene scene = scene_from_flags(document, command, flags);
+  if (!o.approach_retract.empty()) return run_approach_retract(o, scene, command);
   const RunObserver observer = terminal_observer(command);
   FftwWisdomFile wisdom(fftw_wisdom_path(o.fftw_wisdom, o.threads), o.threads, observer.warning);
   const double planning_before = fftw_planning_seconds();
@@ -163,8 +217,15 @@ void add_bem_command(CLI::App& parent, const CommandContext& context) {
       "each load, in increasing order, and write the load-area curve as CSV: the curves.csv of a one-method "
       "scene (scenes/README.md, method bem), with the same defaults and columns.");
   options->topography.add_to(*command, "the Fourier half-space; the default is the file's own periodicity");
-  command->add_option("--loads", options->loads, "loads P/(E* A0) > 0, comma-separated")
-      ->required()
+  command->add_option("--loads", options->loads, "loads P/(E* A0) > 0, comma-separated")->delimiter(',');
+  command
+      ->add_option(
+          "--approach-retract", options->approach_retract,
+          "instead of --loads, with --adhesion: FROM,TO,STEPS: the flat's separation d [m] (as in the "
+          "CSV's separation column) from FROM down to TO in STEPS equal steps, then back, each state "
+          "starting from the last; writes one row per state and, as comment lines, the jumps into and "
+          "out of contact, the pull-off and the cycle's energy balance (docs/theory.md section 10.7)")
+      ->expected(3)
       ->delimiter(',');
   command->add_option("--modulus", options->modulus, "E* [Pa] (default: E = 100 GPa, nu = 0.3: 109.9 GPa)");
   command->add_option(

@@ -185,6 +185,26 @@ const AdhesiveSolution& AdhesiveBemSolver::solve_with(Control control, Real valu
   return s;
 }
 
+Real AdhesiveBemSolver::energy() const {
+  const AdhesiveSolution& s = solution_;
+  if (s.traction.size() == 0) return 0;
+  HeightMap displacement = s.gap.array() - s.separation + surface_.heights().array();
+  if (surface_.grid().periodic) displacement.array() -= displacement.mean();
+  const Real elastic = 0.5 * (s.traction.array() * displacement.array()).mean();
+  Real potential = 0;
+  const Index n = s.gap.size();
+  for (Index i = 0; i < n; ++i) {
+    const Real g = s.gap.data()[i];
+    if (law_.model == AdhesionModel::dugdale) {
+      const Real pull = s.pressure.data()[i] - s.traction.data()[i];
+      potential -= pull * (law_.reach() - g);
+    } else {
+      potential -= law_.work * std::exp(-g / law_.range);
+    }
+  }
+  return elastic + potential / static_cast<Real>(n);
+}
+
 ContactSolution AdhesiveSolution::contact() const {
   ContactSolution s;
   s.pressure = pressure;

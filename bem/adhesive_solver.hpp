@@ -95,6 +95,15 @@ class AdhesiveBemSolver {
 
   const AdhesiveSolution& solution() const { return solution_; }
   const AdhesionLaw& law() const { return law_; }
+  const Surface& surface() const { return surface_; }  // centred
+
+  // The energy of the last state per nominal area [J/m^2] (docs/theory.md section 10.7): the elastic energy
+  // ½ mean(t u), u = g - d + h the surface's displacement (its mean removed when periodic, where the uniform
+  // mode carries none), plus the interface's potential mean(V): V = -a (δc - g) for a Dugdale point pulled by
+  // a (so dV/dg = a, the edge points' half stress included), V = -w exp(-g/ρ) for the exponential law. On a
+  // continuous branch of separation control dU/dd = -P/A0 (the net load), which the approach-retract path
+  // (bem/adhesive_path.hpp) uses to tell a jump from a step.
+  Real energy() const;
 
  private:
   enum class Control { separation, load };

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Renders a Google Benchmark JSON of contactbench (bench_labelling, bench_sweep, bench_bem or
-bench_bem_solvers) as Markdown tables.
+bench_bem_solvers, bench_bem_adhesion) as Markdown tables.
 
 Medians of the repetitions, in milliseconds, and ratios to the references measured in the same run.
 Usage: render_bench.py results/bench/labelling.json > results/bench/labelling.md
@@ -333,11 +333,32 @@ def ratio_rows(table, key_cells, extra_cells, made):
     return out
 
 
+def bem_adhesion(data):
+    """bench_bem_adhesion: the adhesive solve against the non-adhesive active_set solve of the same run."""
+    lines = header(data, "What adhesion costs the boundary-element solve", "scripts/bench.sh bem_adhesion")
+    lines.append("Each row: one cold adhesive solve (AdhesiveBemSolver around active_set) and, in the same repetition, "
+                 "the non-adhesive active_set solve at the same mean pressure, both at the contact tolerance 1e-6 "
+                 "(bench/bench_bem_adhesion.cpp). Ratio: adhesive over non-adhesive time, median of the repetitions.")
+    lines.append("")
+    lines.append("| case | adhesive [s] | iterations (outer) | non-adhesive [s] | iterations | ratio | zone [px] "
+                 "| A/A0 adhesive / without | converged |")
+    lines.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for name, row in sorted(median_rows(data).items(), key=lambda item: parse(item[0])[1].get("n", "")):
+        lines.append(
+            f"| {name.removeprefix('bem_adhesion/')} | {row['seconds']:.3g} | {row['iterations']:.0f} "
+            f"({row['outer_iterations']:.0f}) | {row['elastic_seconds']:.3g} | {row['elastic_iterations']:.0f} "
+            f"| {row['ratio']:.2f} | {row['zone_pixels']:.2g} | {row['area_fraction']:.3f} / "
+            f"{row['elastic_area_fraction']:.3f} | {'yes' if row['converged'] >= 1 else 'NO'} |")
+    return lines
+
+
 def main():
     with open(sys.argv[1]) as f:
         data = json.load(f)
     names = [b["name"] for b in data["benchmarks"]]
-    if names and names[0].startswith("labelling/"):
+    if names and names[0].startswith("bem_adhesion/"):
+        lines = bem_adhesion(data)
+    elif names and names[0].startswith("labelling/"):
         lines = labelling(data)
     elif any(f"/{family}:" in n for n in names for family in ("contact", "curve", "capped", "separation")):
         lines = bem_solvers(data)

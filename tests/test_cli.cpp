@@ -416,6 +416,41 @@ TEST_F(Cli, BemAdhesionIsTheInterfacesAdhesion) {
   EXPECT_NE(not_a_number.err.find("is not a number"), std::string::npos) << not_a_number.err;
 }
 
+// --approach-retract: the adhesive path instead of --loads (bem/adhesive_path.hpp): one row per state, down
+// and back, the pull-off and the energy balance as comment lines; refused without --adhesion, with --loads,
+// or with TO >= FROM, each naming what is wrong.
+TEST_F(Cli, BemApproachRetractWritesThePath) {
+  const auto surface = folder_ / "s.txt", path = folder_ / "path.csv";
+  ASSERT_EQ(run("generate --sigma 0.5e-6 --hurst 0.5 --qr 3.14e4 --size 200e-6 --grid 32 --seed 4 --out " +
+                surface.string())
+                .status,
+            0);
+  const std::string common = "bem " + surface.string() + " --modulus 4e6 --out " + path.string();
+  const CommandResult done =
+      run(common + " --adhesion dugdale,work=0.05,stress=1e5 --approach-retract 2e-6,0.4e-6,2");
+  ASSERT_EQ(done.status, 0) << done.err;
+  const std::string text = slurp(path);
+  EXPECT_NE(text.find("# pull_off_load = "), std::string::npos) << text;
+  EXPECT_NE(text.find("# cycle work"), std::string::npos) << text;
+  std::vector<std::string> header;
+  const std::vector<CsvRow> rows = csv_rows(text, header);
+  ASSERT_EQ(rows.size(), 5u);  // 2 steps down, 2 back, and the start
+  EXPECT_EQ(rows.front().at("leg"), "approach");
+  EXPECT_EQ(rows.back().at("leg"), "retract");
+  EXPECT_GT(std::stod(rows[2].at("contact_fraction")), 0);
+  const CommandResult plain = run(common + " --approach-retract 2e-6,0.4e-6,2");
+  EXPECT_NE(plain.status, 0);
+  EXPECT_NE(plain.err.find("needs --adhesion"), std::string::npos) << plain.err;
+  const CommandResult both =
+      run(common + " --adhesion dugdale,work=0.05,stress=1e5 --loads 0.01 --approach-retract 2e-6,0.4e-6,2");
+  EXPECT_NE(both.status, 0);
+  EXPECT_NE(both.err.find("--loads or --approach-retract"), std::string::npos) << both.err;
+  const CommandResult upward =
+      run(common + " --adhesion dugdale,work=0.05,stress=1e5 --approach-retract 0.4e-6,2e-6,4");
+  EXPECT_NE(upward.status, 0);
+  EXPECT_NE(upward.err.find("TO < FROM"), std::string::npos) << upward.err;
+}
+
 // A scene end to end through the binary: the files appear in --out, the table on standard output.
 TEST_F(Cli, RunWritesTheComparisonOfASmallScene) {
   const auto scene = folder_ / "tiny.toml";
