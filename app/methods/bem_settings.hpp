@@ -18,9 +18,10 @@ struct BemSettings {
   std::optional<bool> periodic;  // none: the surface's own periodicity
   BemSolverOptions solver = {};  // tolerance, iteration cap, precision, iteration (hardness: the interface's)
   std::string fields;            // prefix of per-load pressure and gap files; empty: none written
-  bool extrapolate = false;      // solve again on twice the points a side (docs/theory.md section 9)
-  int connectivity = 4;          // for counting contact spots
-  bool node_area = false;        // area = "nodes": compared by the node count (a node-based FE model's area)
+  std::string residual_topography;  // the surface after the load path, written there; empty: not written
+  bool extrapolate = false;         // solve again on twice the points a side (docs/theory.md section 9)
+  int connectivity = 4;             // for counting contact spots
+  bool node_area = false;  // area = "nodes": compared by the node count (a node-based FE model's area)
   bool allow_unconverged = false;  // unconverged loads marked, the run exits 0
 };
 
