@@ -37,11 +37,12 @@ SceneKeys scene_keys(const Scene& scene, bool with_estar) {
   write_surface_keys(scene.surface, root);
   write_material_keys(scene.material, with_estar, root);
   write_interface(scene.interface, root);
+  SceneKeys& loads = root.table("loads");
   if (scene.load_path.empty()) {
-    root.table("loads").put("values", scene.loads);
-  } else {
-    root.table("loads").put("values", scene.load_path);
-    root.table("loads").put("path", std::string("as listed"));
+    loads.put("values", scene.loads);
+  } else {  // the path as listed, which gives back the sorted loads too
+    loads.put("values", scene.load_path);
+    loads.put("path", std::string("as listed"));
   }
   SceneKeys& methods = root.table("methods");
   for (const MethodSpec& m : scene.methods) {
