@@ -169,7 +169,8 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
                                                  .residual = solved.residual,
                                                  .converged = solved.converged,
                                                  .seconds = seconds,
-                                                 .plastic_points = 0});
+                                                 .plastic_points = 0,
+                                                 .plastic_overlap = {}});
   }
   if (failure) std::rethrow_exception(failure);
   return result;
@@ -236,6 +237,7 @@ class DistributedRunner final : public StageRunner {
     std::vector<std::string> missing;
     if (stage.hardness) missing.push_back("a hardness (interface.hardness)");
     if (stage.adhesion) missing.push_back("adhesion (interface.adhesion)");
+    if (!stage.load_path.empty()) missing.push_back("a load path (loads.path = \"as listed\")");
     for (const std::string& setting :
          undistributed_settings(bem_settings(), stage.settings, default_settings(bem_settings())))
       missing.push_back(setting);

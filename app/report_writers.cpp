@@ -239,6 +239,22 @@ void write_levels_csv(std::ostream& out, const SweepCurve& levels, const std::st
         << '\n';
 }
 
+void write_path_csv(std::ostream& out, const std::vector<std::pair<std::string, std::vector<Real>>>& columns,
+                    const std::string& origin) {
+  out << "# " << origin
+      << ": one row per step of the load path (loads.path = \"as listed\"); direction +1 loading, -1 "
+         "unloading, 0 the same load again\n";
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    out << (c ? "," : "") << columns[c].first;
+  out << '\n';
+  const std::size_t rows = columns.front().second.size();
+  for (std::size_t k = 0; k < rows; ++k) {
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      out << (c ? "," : "") << json_number(columns[c].second[k]);
+    out << '\n';
+  }
+}
+
 void write_report(const std::filesystem::path& folder, const SceneReport& report,
                   const Comparison& comparison, const Provenance& provenance) {
   std::error_code error;
@@ -255,6 +271,13 @@ void write_report(const std::filesystem::path& folder, const SceneReport& report
       write_file_atomically(folder / (m.label + "_levels.csv"), [&](std::ostream& out) {
         write_levels_csv(out, *m.curve.levels,
                          "contactbench run of scene " + report.scene.name + ", " + m.label);
+      });
+  for (const MethodResult& m : report.methods)
+    if (!m.curve.path_columns.empty())
+      write_file_atomically(folder / (m.label + "_path.csv"), [&](std::ostream& out) {
+        write_path_csv(out, m.curve.path_columns,
+                       "contactbench run of scene " + report.scene.name + ", " + m.label + " (" +
+                           stamp(provenance) + ")");
       });
 }
 

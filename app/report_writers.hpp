@@ -29,6 +29,9 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
 // A sweep level by level (a plateau method's MethodCurve::levels): z, area_fraction_nodes, spots, after one
 // comment line that starts with `origin` (e.g. "contactbench sweep of s.txt") and says what the rows are.
 void write_levels_csv(std::ostream& out, const SweepCurve& levels, const std::string& origin);
+// A method's columns along the scene's load path (MethodCurve::path_columns), one row per step.
+void write_path_csv(std::ostream& out, const std::vector<std::pair<std::string, std::vector<Real>>>& columns,
+                    const std::string& origin);
 
 // All of the above into `folder` (created if needed): curves.csv, summary.json, table.md, and
 // <label>_levels.csv of every method with a level curve.

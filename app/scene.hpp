@@ -52,8 +52,11 @@ struct Scene {
   std::filesystem::path file;  // the scene file itself ("" when parsed from a string)
   SurfaceSpec surface;
   MaterialSpec material;
-  InterfaceSpec interface;          // [interface]: the effects the scene calls for (none: elastic)
-  std::vector<Real> loads;          // P/(E* A0), ascending, > 0: the one list every method answers at
+  InterfaceSpec interface;  // [interface]: the effects the scene calls for (none: elastic)
+  std::vector<Real> loads;  // P/(E* A0), ascending, > 0: the one list every method answers at
+  // loads.path = "as listed": the listed loads in the file's order, up and down and repeated (a load path:
+  // the plastic BEM keeps its deformation along it, docs/solvers.md "Hardness"); empty: path = "ascending".
+  std::vector<Real> load_path;
   std::vector<MethodSpec> methods;  // in the order the file lists them
   std::string reference;            // label of the method the others are judged against
   const MethodSpec& method(std::string_view label) const;  // throws Error if absent

@@ -25,7 +25,8 @@ SceneContext method_context(const SceneContext& scene_context, const Scene& scen
 
 ScenePlan plan_scene(const Scene& scene, const Grid& surface) {
   ScenePlan plan;
-  plan.context = {.surface_points = surface.nx, .surface_periodic = surface.periodic};
+  plan.context = {
+      .surface_points = surface.nx, .surface_periodic = surface.periodic, .load_path = scene.load_path};
   for (const MethodSpec& method : scene.methods) {
     const MethodNeeds needs = method.method->needs(method_context(plan.context, scene, method));
     ScenePlan::Stages stages;

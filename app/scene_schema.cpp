@@ -57,13 +57,23 @@ std::optional<MaterialSpec> parse_material(const Section& root, Problems& proble
   return spec;
 }
 
-std::optional<std::vector<Real>> parse_loads(const Section& root, Problems& problems) {
+// The loads every method answers at (ascending, each once) and, with path = "as listed", the listed path.
+struct ParsedLoads {
+  std::vector<Real> loads;
+  std::vector<Real> path;
+};
+
+std::optional<ParsedLoads> parse_loads(const Section& root, Problems& problems) {
   constexpr std::string_view forms = "values = [ ... ] or range = { from, to, count, spacing }";
   const toml::table* table = root.subtable("loads", true, forms);
   if (!table) return std::nullopt;
   const std::size_t before = problems.count();
   const Section l(*table, "loads", problems);
-  l.reject_unknown({"values", "range"});
+  l.reject_unknown({"values", "range", "path"});
+  constexpr std::string_view paths = "\"ascending\" (the default), \"as listed\"";
+  const auto path = l.string("path", false, paths);
+  if (path && *path != "ascending" && *path != "as listed")
+    l.problem("path", "unknown load path \"" + *path + "\"", paths);
   const auto load = positive("(P/(E* A0))");
   std::vector<Real> loads;
   if (l.has("values") && l.has("range")) l.problem("range", "values and range both given", forms);
@@ -112,9 +122,12 @@ std::optional<std::vector<Real>> parse_loads(const Section& root, Problems& prob
     }
   }
   if (problems.count() != before) return std::nullopt;
+  ParsedLoads parsed;
+  if (path && *path == "as listed") parsed.path = loads;
   std::sort(loads.begin(), loads.end());
   loads.erase(std::unique(loads.begin(), loads.end()), loads.end());
-  return loads;
+  parsed.loads = std::move(loads);
+  return parsed;
 }
 
 // The methods in the order the file lists them (toml++ keeps a table's keys sorted, not in file order).
@@ -275,7 +288,8 @@ Scene parse_scene_table(const toml::table& document, const std::filesystem::path
   problems.throw_if_any();
   scene.surface = *surface;
   scene.material = *material;
-  scene.loads = *loads;
+  scene.loads = loads->loads;
+  scene.load_path = loads->path;
   return scene;
 }
 

@@ -37,7 +37,13 @@ SceneKeys scene_keys(const Scene& scene, bool with_estar) {
   write_surface_keys(scene.surface, root);
   write_material_keys(scene.material, with_estar, root);
   write_interface(scene.interface, root);
-  root.table("loads").put("values", scene.loads);
+  SceneKeys& loads = root.table("loads");
+  if (scene.load_path.empty()) {
+    loads.put("values", scene.loads);
+  } else {  // the path as listed, which gives back the sorted loads too
+    loads.put("values", scene.load_path);
+    loads.put("path", std::string("as listed"));
+  }
   SceneKeys& methods = root.table("methods");
   for (const MethodSpec& m : scene.methods) {
     SceneKeys& keys = methods.table(m.label);

@@ -29,6 +29,8 @@ class SerialRunner final : public StageRunner {
     const std::string name = stage.name();
     BemSolverOptions solver_options = stage.settings.solver;
     solver_options.hardness = stage.hardness;  // absent: purely elastic
+    // Along a load path, the plastic deformation stays from one load to the next (unloading, reloading).
+    solver_options.keep_plastic_deformation = stage.hardness && !stage.load_path.empty();
     solver_options.warning = [&](const std::string& text) { observer.warn(text); };
     // With an attraction, the adhesive solver around the same contact solver (bem/adhesive_solver.hpp).
     std::optional<BemSolver> solver;
@@ -70,6 +72,10 @@ class SerialRunner final : public StageRunner {
       }
       done.solutions.push_back(std::move(solution));
     }
+    // The residual topography: the surface as the path left it (its plastic flow kept), heights from the
+    // given surface's mean plane, in the project's text format (core/topography_io.hpp).
+    if (!stage.settings.residual_topography.empty() && solver)
+      write_surface(stage.settings.residual_topography, solver->surface());
     return done;
   }
 

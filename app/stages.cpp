@@ -74,12 +74,16 @@ std::string BemStage::name() const {
   if (settings.extrapolate) text << ", again on twice the points a side for the extrapolated area";
   if (settings.extrapolate && settings.error_estimate == ErrorEstimate::gci3)
     text << " and on a third grid for its error bar";
+  if (!load_path.empty())
+    text << ", along the load path as listed (" << load_path.size() << " steps)"
+         << (hardness ? ", keeping the plastic deformation" : "");
   text << ")";
   return text.str();
 }
 
 bool BemStage::operator==(const BemStage& other) const {
   return periodic == other.periodic && hardness == other.hardness && adhesion == other.adhesion &&
+         load_path == other.load_path &&
          same_settings(bem_settings(), SettingScope::solve, settings, other.settings);
 }
 
@@ -110,7 +114,13 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
   products.periodic = stage.periodic;
   products.hardness = stage.hardness;
   products.adhesion = stage.adhesion;
-  SolvedLoads loads = context.runner().solve_loads(stage, solved, estar, mean_pressures, connectivities,
+  products.load_path = stage.load_path;
+  // Along a load path the solves follow it, step by step, instead of the scene's ascending loads.
+  std::vector<Real> path_pressures;  // [Pa]
+  for (const Real load : stage.load_path)
+    path_pressures.push_back(load * estar);
+  const std::vector<Real>& solved_pressures = stage.load_path.empty() ? mean_pressures : path_pressures;
+  SolvedLoads loads = context.runner().solve_loads(stage, solved, estar, solved_pressures, connectivities,
                                                    stage.settings.fields, context);
   products.solutions = std::move(loads.solutions);
   products.statistics = std::move(loads.statistics);

@@ -46,7 +46,11 @@ struct BemStage {
   bool periodic = true;
   std::optional<Real> hardness;         // [Pa]: perfectly plastic pressure cap; absent = purely elastic
   std::optional<AdhesionLaw> adhesion;  // absent: non-adhesive (bem/adhesive_solver.hpp)
-  std::string name() const;             // e.g. "bem (active_set, periodic, tolerance 1e-08)"
+  // The scene's load path (loads.path = "as listed"), P/(E* A0) in the order solved; empty: the scene's loads
+  // ascending. With a hardness the surface keeps its plastic deformation along it
+  // (BemSolverOptions::keep_plastic_deformation; docs/solvers.md "Hardness").
+  std::vector<Real> load_path;
+  std::string name() const;  // e.g. "bem (active_set, periodic, tolerance 1e-08)"
   // Methods that ask for equal solves share one.
   bool operator==(const BemStage& other) const;
 };
@@ -60,7 +64,9 @@ struct BemProducts {
   bool periodic = true;                                      // the boundary solved
   std::optional<Real> hardness;                              // the cap solved with [Pa]; none: elastic
   std::optional<AdhesionLaw> adhesion;                       // the attraction solved with; none: without
-  std::vector<AdhesiveLoad> adhesive;                        // per load, with an attraction
+  std::vector<Real>
+      load_path;  // the path solved (BemStage::load_path): solutions are in its order; empty: none
+  std::vector<AdhesiveLoad> adhesive;  // per load, with an attraction
   // With BemStage::extrapolate: the same loads solved on twice the points a side (fields dropped too).
   std::vector<ContactSolution> fine_solutions;
   std::vector<AdhesiveLoad> fine_adhesive;

@@ -121,9 +121,24 @@ const ContactSolution& BemSolver::solve(Real mean_pressure) {
   solution_.change = change;
   solution_.converged = converged && residual_settled(solution_, options_);
   converged = solution_.converged;
+  if (options_.keep_plastic_deformation && solution_.plastic_points > 0) keep_plastic_deformation();
   solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!converged) warn_not_converged("P/A0", mean_pressure, solution_, options_);
   return solution_;
+}
+
+// docs/solvers.md "Hardness", "Unloading and reloading": at a plastic node the flat's height d and the
+// displacement u give the raw gap g = d - h + u < 0; the surface that flowed to fit the flat has the height
+// h' = h + g = d + u there, so the same pressure and d solve the contact with h' (gap 0 at p = H, every other
+// node unchanged). Lowering only where p = H is ContactMechanics' PlasticSystem's update.
+void BemSolver::keep_plastic_deformation() {
+  HeightMap heights = surface_.heights() - solution_.plastic_overlap;
+  surface_ = Surface(surface_.grid(), std::move(heights));
+  engine_->set_heights(surface_.heights());
+  // The next load starts cold: warm-started from this state (plastic nodes at p = H with gap exactly 0, both
+  // conditions active at once), active_set did not converge in 1000 iterations on an unloading step of
+  // surface A (tests/test_bem_plastic_cycle.cpp); cold, every solver does.
+  engine_->forget();
 }
 
 const ContactSolution& BemSolver::solve_for_separation(Real separation) {

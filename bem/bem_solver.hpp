@@ -34,6 +34,12 @@ struct BemSolverOptions {
   // elastic. A mean pressure P/A0 >= H is refused: the whole surface would be plastic (full plastic contact,
   // p = H everywhere, the flat's height undetermined).
   std::optional<Real> hardness = std::nullopt;
+  // With a hardness: keep the plastic deformation from one load to the next (docs/solvers.md "Hardness",
+  // "Unloading and reloading"). After each load-controlled solve the heights of the plastic nodes are lowered
+  // by their overlap with the flat (h <- h + g where p = H and the raw gap g < 0), so that the deformed
+  // surface meets the flat with gap 0 there and the same pressure; the next load, higher or lower, is solved
+  // on the deformed surface (BemSolver::surface()). Off: every load is solved on the surface as given.
+  bool keep_plastic_deformation = false;
   // Iterate in single precision (FFTW's float transforms, float arrays; sums still in double): half the
   // memory, and faster (measured per iteration, one thread: x1.2 at 256^2, x1.5 to x1.6 at 1024^2). Float
   // resolves a relative change of about 1e-7 (its epsilon) and the gap g = u - h to about 1e-7 of the
@@ -100,6 +106,10 @@ struct ContactSolution {
   bool converged = false;
   double seconds = 0;
   Index plastic_points = 0;  // points at p = H (with a hardness; 0 without), counted in contact_points too
+  // With a hardness: the overlap -g >= 0 [m] of each plastic node with the flat (its raw gap, before the
+  // gap above is set to 0 there), 0 elsewhere: the depth the surface flowed at this state. Empty without a
+  // hardness.
+  HeightMap plastic_overlap;
 };
 
 class BemSolver {
@@ -119,6 +129,9 @@ class BemSolver {
   const ContactSolution& solve_for_separation(Real separation);
 
   const ContactSolution& solution() const { return solution_; }
+  // The surface the next solve presses: the given one less its mean height, and, with
+  // keep_plastic_deformation, lowered where earlier loads made it flow (the residual topography, heights
+  // above the given surface's mean plane).
   const Surface& surface() const { return surface_; }
 
  private:
@@ -129,6 +142,9 @@ class BemSolver {
   ContactSolution solution_;
   // The iteration, in the chosen scalar: the registry's solver (bem/solver_registry.hpp).
   std::unique_ptr<ContactSolver> engine_;
+  // keep_plastic_deformation: lowers the plastic nodes of solution_ by their overlap (in surface_ and the
+  // engine's heights).
+  void keep_plastic_deformation();
 };
 
 }  // namespace contactbench

@@ -18,7 +18,11 @@
 //   bem/<solver>/<boundary>/n:<n>/capped:<H/E*>/surface_a: the 10 loads of `curve`, warm-started, with the
 //     pressure capped at a hardness H (perfectly plastic; a metal's H/E* is about 0.01 to 0.05);
 //   bem/<solver>/<boundary>/n:<n>/separation:<pct>/<surface>: one cold solve under separation control, the
-//     flat at the height of the reference of contact:<pct>; load_error is its load against the reference's.
+//     flat at the height of the reference of contact:<pct>; load_error is its load against the reference's;
+//   bem/<solver>/<boundary>/n:<n>/plastic:<H/E*>/surface_a and .../plastic_cycle:<H/E*>/surface_a: the
+//   plastic
+//     BEM against the elastic one at the same loads and grid in the same benchmark (time_ratio), along the
+//     10 loads of `curve`, or up, down and up again keeping the plastic deformation.
 //
 // Surfaces: surface_a, the paper's surface A (Table 1, a 256 x 256 realisation) Fourier-refined to n x n
 // (so no roughness below the 256 grid's pixel); h08, a self-affine surface with H = 0.8, roll-off at
@@ -256,6 +260,71 @@ void curve(benchmark::State& state, SolverKind solver_kind, Index n, bool period
   state.counters["plastic_fraction"] = plastic_fraction;
 }
 
+// The plastic BEM against the elastic one on the same grid and loads, in the same benchmark (docs/solvers.md
+// "Hardness"): the 10 loads of `curve` (warm-started, tolerance 1e-8), elastic and capped at H, each timed
+// three times, alternating, the medians compared (time_ratio = plastic / elastic). With `cycle`, both follow
+// the load path up through the 10 loads, down to the first and up again (30 solves), the plastic one keeping
+// its deformation (BemSolverOptions::keep_plastic_deformation). Counters: the medians, their ratio, the
+// iterations of each, and the plastic and contact fractions at the top load.
+void plastic_against_elastic(benchmark::State& state, SolverKind solver_kind, Index n, bool periodic,
+                             double hardness_over_modulus, bool cycle) {
+  const Surface surface = case_surface(SurfaceKind::surface_a, n).with_periodic(periodic);
+  std::vector<Real> path;
+  for (int k = 1; k <= 10; ++k)
+    path.push_back(kModulus * 0.001 * k);
+  if (cycle) {
+    for (int k = 9; k >= 1; --k)
+      path.push_back(kModulus * 0.001 * k);
+    for (int k = 2; k <= 10; ++k)
+      path.push_back(kModulus * 0.001 * k);
+  }
+  const BemSolverOptions elastic{.tolerance = 1e-8, .max_iterations = 100000, .solver = solver_kind};
+  BemSolverOptions plastic = elastic;
+  plastic.hardness = hardness_over_modulus * kModulus;
+  plastic.keep_plastic_deformation = cycle;
+  struct Run {
+    double seconds = 0;
+    Index iterations = 0;
+    double plastic_fraction = 0, area_fraction = 0;
+  };
+  const double points = static_cast<double>(surface.grid().points());
+  auto run = [&](const BemSolverOptions& options) {
+    Run r;
+    BemSolver solver(surface, kModulus, options, kThreads);
+    for (std::size_t k = 0; k < path.size(); ++k) {
+      const ContactSolution& s = solver.solve(path[k]);
+      if (!s.converged) state.SkipWithError("a load did not converge");
+      r.seconds += s.seconds;
+      r.iterations += s.iterations;
+      if (k == 9) {  // the top load, first reached
+        r.plastic_fraction = static_cast<double>(s.plastic_points) / points;
+        r.area_fraction = static_cast<double>(s.contact_points) / points;
+      }
+    }
+    return r;
+  };
+  std::vector<double> elastic_seconds, plastic_seconds;
+  Run elastic_run, plastic_run;
+  for (auto _ : state) {
+    for (int repeat = 0; repeat < 3; ++repeat) {
+      elastic_run = run(elastic);
+      plastic_run = run(plastic);
+      elastic_seconds.push_back(elastic_run.seconds);
+      plastic_seconds.push_back(plastic_run.seconds);
+    }
+    std::sort(elastic_seconds.begin(), elastic_seconds.end());
+    std::sort(plastic_seconds.begin(), plastic_seconds.end());
+    state.SetIterationTime(plastic_seconds[1]);
+  }
+  state.counters["elastic_seconds"] = elastic_seconds[1];
+  state.counters["plastic_seconds"] = plastic_seconds[1];
+  state.counters["time_ratio"] = plastic_seconds[1] / elastic_seconds[1];
+  state.counters["elastic_iterations"] = static_cast<double>(elastic_run.iterations);
+  state.counters["iterations"] = static_cast<double>(plastic_run.iterations);
+  state.counters["plastic_fraction"] = plastic_run.plastic_fraction;
+  state.counters["area_fraction"] = plastic_run.area_fraction;
+}
+
 // One cold solve under separation control at the reference's flat height (tolerance 1e-8; the time the
 // median of three runs).
 void separation(benchmark::State& state, SolverKind solver_kind, SurfaceKind kind, Index n, bool periodic,
@@ -335,6 +404,23 @@ void register_all() {
               ->Iterations(1)
               ->Repetitions(1);
       }
+  // A hardness giving a few % plastic area at the top load of `curve` (measured: see docs/solvers.md
+  // "Hardness").
+  constexpr double kFewPercentPlastic = 0.1;
+  for (const Index n : {256, 512, 1024})
+    for (const bool periodic : {true, false})
+      for (const std::string& name : solver_names())
+        for (const bool cycle : {false, true}) {
+          const std::string label = "bem/" + name + "/" + (periodic ? "periodic" : "nonperiodic") +
+                                    "/n:" + std::to_string(n) + (cycle ? "/plastic_cycle:" : "/plastic:") +
+                                    "0.1/surface_a";
+          benchmark::RegisterBenchmark(label.c_str(), plastic_against_elastic, solver_kind(name), n, periodic,
+                                       kFewPercentPlastic, cycle)
+              ->Unit(benchmark::kMillisecond)
+              ->UseManualTime()
+              ->Iterations(1)
+              ->Repetitions(1);
+        }
   for (const SurfaceKind kind : {SurfaceKind::surface_a, SurfaceKind::h08})
     for (const Index n : {256, 512, 1024, 2048})
       for (const bool periodic : {true, false})

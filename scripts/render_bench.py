@@ -179,6 +179,7 @@ def bem_solvers(data):
     curves = defaultdict(dict)  # (boundary, n) -> (solver, start) -> row
     capped = defaultdict(dict)  # (boundary, n, H/E*) -> solver -> row
     separations = defaultdict(dict)  # (surface, boundary, contact, n) -> solver -> row
+    plastic = {}  # (boundary, n, path, H/E*, solver) -> row: plastic against elastic in one benchmark
     float_sizes = set()  # grid sizes solved in single precision (names ending /precision:float)
     for name, row in rows.items():
         parts = name.split("/")
@@ -188,6 +189,9 @@ def bem_solvers(data):
             curves[(boundary, int(f["n"]))][(solver, f["curve"])] = row
         elif "capped" in f:
             capped[(boundary, int(f["n"]), f["capped"])][solver] = row
+        elif "plastic" in f or "plastic_cycle" in f:
+            path = "cycle" if "plastic_cycle" in f else "up"
+            plastic[(boundary, int(f["n"]), path, f.get("plastic", f.get("plastic_cycle")), solver)] = row
         elif "separation" in f:
             separations[(parts[5], boundary, int(f["separation"]), int(f["n"]))][solver] = row
         elif "contact" in f:
@@ -294,6 +298,22 @@ def bem_solvers(data):
         lines += ratio_rows(capped, lambda key: f"{key[0]} | {key[1]} | {key[2]}",
                             lambda row: f"{fmt(row.get('area_fraction'))} | {fmt(row.get('plastic_fraction'))}",
                             made)
+    if plastic:
+        lines += ["", "Plastic against elastic: the same loads and grid in one benchmark (bench/bench_bem_solvers.cpp, "
+                  "plastic_against_elastic), each solver at tolerance 1e-8, elastic and capped at H alternately, "
+                  "three times each; seconds are the medians, ratio = plastic / elastic (goal: at most 1.5). path up: "
+                  "the 10 loads P/(E* A0) = 0.001 ... 0.01; cycle: up, down to 0.001 and up again (28 solves), the "
+                  "plastic one keeping its deformation. area and plastic: fractions at the top load.",
+                  "", "| boundary | n | path | H/E* | solver | elastic [s] | plastic [s] | ratio | elastic iterations | "
+                  "plastic iterations | area | plastic | run |",
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+        for key in sorted(plastic):
+            row = plastic[key]
+            lines.append(f"| {key[0]} | {key[1]} | {key[2]} | {key[3]} | {key[4]} | {fmt(row.get('elastic_seconds'))} | "
+                         f"{fmt(row.get('plastic_seconds'))} | {fmt(row.get('time_ratio'))} | "
+                         f"{fmt(row.get('elastic_iterations'))} | {fmt(row.get('iterations'))} | "
+                         f"{fmt(row.get('area_fraction'))} | {fmt(row.get('plastic_fraction'))} | "
+                         f"{run_of(row['run_name'], made)} |")
     if separations:
         lines += ["", "Separation control: one cold solve with the flat at the height of the equal-accuracy "
                   "reference of the case (plain Polonsky-Keer, 1e-12, under load control), each solver at "
@@ -360,7 +380,7 @@ def main():
         lines = bem_adhesion(data)
     elif names and names[0].startswith("labelling/"):
         lines = labelling(data)
-    elif any(f"/{family}:" in n for n in names for family in ("contact", "curve", "capped", "separation")):
+    elif any(f"/{family}:" in n for n in names for family in ("contact", "curve", "capped", "separation", "plastic")):
         lines = bem_solvers(data)
     elif names and names[0].startswith("bem/"):
         lines = bem(data)

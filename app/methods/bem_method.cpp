@@ -65,6 +65,17 @@ void add_adhesive_columns(const BemProducts& products, Real estar, MethodCurve& 
   }
 }
 
+// The solve answering each of the scene's loads (ascending): the k-th without a path; along one, the first
+// step of the path at that load (the path lists every scene load: they are its values, sorted).
+std::vector<std::size_t> solve_of_load(const std::vector<Real>& loads, const std::vector<Real>& path) {
+  std::vector<std::size_t> index(loads.size());
+  for (std::size_t k = 0; k < loads.size(); ++k)
+    index[k] = path.empty()
+                   ? k
+                   : static_cast<std::size_t>(std::find(path.begin(), path.end(), loads[k]) - path.begin());
+  return index;
+}
+
 class BemMethod final : public Method {
  public:
   std::string_view name() const override { return "bem"; }
@@ -94,6 +105,9 @@ class BemMethod final : public Method {
     // Relative to the scene file's folder, as the surface file is; stored resolved.
     if (const auto fields = s.string("fields", false, find_setting(bem_settings(), "fields")->accepted))
       settings_.fields = (context.folder / *fields).lexically_normal().string();
+    if (const auto residual = s.string("residual_topography", false,
+                                       find_setting(bem_settings(), "residual_topography")->accepted))
+      settings_.residual_topography = (context.folder / *residual).lexically_normal().string();
     if (s.has("hardness"))  // the key of earlier versions: an effect of the interface, not of one method
       s.problem("hardness",
                 "the hardness is a property of the interface, for every method, not a key of the BEM",
@@ -113,22 +127,43 @@ class BemMethod final : public Method {
     stage.periodic = settings_.periodic.value_or(context.surface_periodic);
     stage.hardness = context.interface.hardness;  // absent, or ignored: purely elastic
     stage.adhesion = context.interface.adhesion;  // absent, or ignored: non-adhesive
+    stage.load_path = context.load_path;          // empty: the scene's loads, ascending
     return {
         .moments = false, .sweep = std::nullopt, .bem = stage, .bem_connectivity = settings_.connectivity};
   }
 
   void preflight(const MethodCheck& check) const override {
+    const bool path = !check.scene.load_path.empty();
+    const std::size_t solves = path ? check.scene.load_path.size() : check.scene.loads.size();
     if (!settings_.fields.empty()) {
       // Field files are never written over a device, a link or a folder (app/output.hpp).
       try {
         check_output_prefix(settings_.fields, "fields");
-        for (std::size_t k = 0; k < check.scene.loads.size(); ++k)
+        for (std::size_t k = 0; k < solves; ++k)
           for (const char* field : {"pressure", "gap"})
             check_replaceable_file(field_path(settings_.fields, k + 1, field));
       } catch (const Error& e) {
         check.problem("fields", e.what(), "a prefix of new or regular files in an existing folder");
       }
     }
+    if (!settings_.residual_topography.empty()) {
+      if (!check.interface.hardness || !path)
+        check.problem("residual_topography",
+                      "the surface changes only where it flows plastically along a load path, and this scene "
+                      "has " +
+                          std::string(!check.interface.hardness ? "no hardness" : "no load path"),
+                      "interface.hardness and loads.path = \"as listed\", or no residual_topography");
+      try {
+        check_replaceable_file(settings_.residual_topography);
+      } catch (const Error& e) {
+        check.problem("residual_topography", e.what(), "a new or regular file in an existing folder");
+      }
+    }
+    if (path && settings_.extrapolate)
+      check.problem("extrapolate",
+                    "the extrapolated area is not defined along a load path (the finer grid would flow "
+                    "differently)",
+                    "extrapolate = false, or loads.path = \"ascending\"");
     check_refine_key(check, settings_.refine);
     check_magnitudes(check);
     if (settings_.extrapolate) {
@@ -182,9 +217,13 @@ class BemMethod final : public Method {
     const BemProducts& products = *in.bem;
     const std::vector<ContactStatistics>& stats = products.statistics.at(settings_.connectivity);
     MethodCurve curve;
+    // Which solve answers each scene load: the k-th; along a load path, the first step that reached it.
+    const std::vector<std::size_t> solve_of = solve_of_load(in.scene.loads, products.load_path);
     std::vector<Real> nodes, corrected, mean_gap, max_pressure, iterations, residual, converged, seconds,
-        plastic;
-    for (std::size_t k = 0; k < in.scene.loads.size(); ++k) {
+        plastic, plastic_load, path_step;
+    for (std::size_t load = 0; load < in.scene.loads.size(); ++load) {
+      const std::size_t k = solve_of[load];
+      path_step.push_back(static_cast<Real>(k + 1));
       const ContactSolution& s = products.solutions[k];
       curve.area_fraction.push_back(stats[k].area_fraction_corrected);
       curve.separation.push_back(s.separation);
@@ -201,12 +240,24 @@ class BemMethod final : public Method {
       curve.converged.push_back(both);
       seconds.push_back(s.seconds);
       plastic.push_back(static_cast<Real>(s.plastic_points) / static_cast<Real>(products.points));
+      // The share of the load the plastic nodes carry: H x their area over P (each carries H; docs/theory.md
+      // section 6, "Plastic area and load").
+      if (products.hardness)
+        plastic_load.push_back(s.mean_pressure > 0 ? *products.hardness * plastic.back() / s.mean_pressure
+                                                   : 0);
     }
     curve.columns = {{"area_fraction_nodes", nodes}, {"area_fraction_corrected", corrected},
                      {"mean_gap", mean_gap},         {"max_pressure", max_pressure},
                      {"iterations", iterations},     {"residual", residual},
                      {"converged", converged},       {"solve_seconds", seconds}};
-    if (products.hardness) curve.columns.emplace_back("plastic_fraction", plastic);  // nodes at p = H / all
+    if (products.hardness) {
+      curve.columns.emplace_back("plastic_fraction", plastic);  // nodes at p = H / all
+      curve.columns.emplace_back("plastic_load_fraction", plastic_load);
+    }
+    if (!products.load_path.empty()) {
+      curve.columns.emplace_back("path_step", path_step);  // the step of the path each row comes from
+      add_path_columns(products, curve);
+    }
     if (!products.periodic) {
       // What the record's edges carry (bem/contact_statistics.hpp): every non-periodic run reports it.
       std::vector<Real> edge_contact, edge_load;
@@ -224,7 +275,8 @@ class BemMethod final : public Method {
     BemStage stage{.settings = settings_,
                    .periodic = products.periodic,
                    .hardness = products.hardness,
-                   .adhesion = products.adhesion};
+                   .adhesion = products.adhesion,
+                   .load_path = products.load_path};
     curve.parameters =
         "BEM " + stage.name().substr(4) +
         (settings_.extrapolate ? std::string(", perimeter-corrected area in area_fraction_corrected")
@@ -247,6 +299,40 @@ class BemMethod final : public Method {
                     "spots and separation of the finer grid";
     if (products.adhesion) add_adhesive_columns(products, in.scene.material.estar, curve);
     return curve;
+  }
+
+  // Along a load path, one row per step (the report's <label>_path.csv): the load, whether the step loads
+  // (+1), unloads (-1) or repeats (0) from the one before (from zero load for the first), and the compared
+  // area (as area_fraction of curves.csv), the node count, the plastic fractions, the separation and whether
+  // it converged.
+  void add_path_columns(const BemProducts& products, MethodCurve& curve) const {
+    const std::vector<ContactStatistics>& stats = products.statistics.at(settings_.connectivity);
+    const std::size_t steps = products.load_path.size();
+    std::vector<Real> step(steps), load(steps), direction(steps), area(steps), nodes(steps), plastic(steps),
+        plastic_load(steps), separation(steps), converged(steps);
+    for (std::size_t k = 0; k < steps; ++k) {
+      const ContactSolution& s = products.solutions[k];
+      const Real before = k == 0 ? 0 : products.load_path[k - 1];
+      step[k] = static_cast<Real>(k + 1);
+      load[k] = products.load_path[k];
+      direction[k] = load[k] > before ? 1 : load[k] < before ? -1 : 0;
+      nodes[k] = stats[k].area_fraction;
+      area[k] = settings_.node_area ? nodes[k] : stats[k].area_fraction_corrected;  // the compared area
+      plastic[k] = static_cast<Real>(s.plastic_points) / static_cast<Real>(products.points);
+      plastic_load[k] =
+          products.hardness && s.mean_pressure > 0 ? *products.hardness * plastic[k] / s.mean_pressure : 0;
+      separation[k] = s.separation;
+      converged[k] = s.converged ? 1 : 0;
+    }
+    curve.path_columns = {{"step", step},
+                          {"load", load},
+                          {"direction", direction},
+                          {"area_fraction", area},
+                          {"area_fraction_nodes", nodes},
+                          {"plastic_fraction", plastic},
+                          {"plastic_load_fraction", plastic_load},
+                          {"separation", separation},
+                          {"converged", converged}};
   }
 
   // The memory of the largest solve, before any work (a 16384^2 refinement with extrapolate = true would

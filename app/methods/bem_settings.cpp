@@ -99,6 +99,17 @@ SettingTable<BemSettings> make_table() {
           .owner_reads = true},
       [](BemSettings & s) -> auto& { return s.fields; }));
   table.push_back(bind(
+      Row{.key = "residual_topography",
+          .kind = SettingKind::text,
+          .accepted = "a file path (relative: to the scene file's folder); needs interface.hardness and "
+                      "loads.path = \"as listed\"",
+          .default_text = "none",
+          .doc =
+              "write the surface as the load path left it (heights lowered where it flowed plastically) to "
+              "this file, in the project's text format (`stats` and `run` read it)",
+          .owner_reads = true},
+      [](BemSettings & s) -> auto& { return s.residual_topography; }));
+  table.push_back(bind(
       Row{.key = "connectivity",
           .kind = SettingKind::integer,
           .scope = SettingScope::method,

@@ -22,6 +22,7 @@ struct BemSettings {
   std::optional<bool> periodic;  // none: the surface's own periodicity
   BemSolverOptions solver = {};  // tolerance, iteration cap, precision, iteration (hardness: the interface's)
   std::string fields;            // prefix of per-load pressure and gap files; empty: none written
+  std::string residual_topography;  // the surface after the load path, written there; empty: not written
   bool extrapolate = false;      // solve again on twice the points a side (docs/theory.md section 9)
   ErrorEstimate error_estimate = ErrorEstimate::gci3;  // the error bar's grids (with extrapolate)
   int connectivity = 4;                                // for counting contact spots

@@ -38,6 +38,7 @@ struct SceneContext {
   std::filesystem::path folder =
       {};  // the scene file's folder: relative paths of its keys resolve against it
   InterfaceSpec interface = {};
+  std::vector<Real> load_path = {};  // the scene's loads.path = "as listed" (Scene::load_path); empty: none
 };
 
 // The stages one method needs; the planner unites them over the scene (app/scene_plan.hpp).
@@ -94,6 +95,10 @@ struct MethodCurve {
   // names of those summary.json repeats beside its area (the BEM's extrapolated area).
   std::vector<std::pair<std::string, std::vector<Real>>> columns;
   std::vector<std::string> summary_columns;
+  // Along the scene's load path (loads.path = "as listed"), the method's columns one row per step, in the
+  // path's order (the BEM's loops of loading and unloading): a run writes them as <label>_path.csv. Empty:
+  // no path, or a method whose answer does not depend on it.
+  std::vector<std::pair<std::string, std::vector<Real>>> path_columns;
 
   // From a library's curve: checks that it answers at `loads` (Error otherwise) and drops its copy of them.
   static MethodCurve from(const LoadAreaCurve& curve, const std::vector<Real>& loads);

@@ -55,6 +55,11 @@ double PressureState<T>::write(ContactSolution& s) const {
   const Index nx = grid_.nx, ny = grid_.ny;
   s.pressure.resize(ny, nx);
   s.gap.resize(ny, nx);
+  const bool capped = std::isfinite(hardness_);
+  if (capped)
+    s.plastic_overlap.setZero(ny, nx);
+  else
+    s.plastic_overlap.resize(0, 0);
   const std::vector<T>& q = q_[cur_];
   const double scale = s_[cur_];
   // On the team, each thread a block of points, the parts combined in thread order (the same sums every
@@ -81,10 +86,12 @@ double PressureState<T>::write(ContactSolution& s) const {
         // Zero on the contact set; on plastic nodes too (the surface flowed to fit the flat there).
         s.gap.data()[i] = 0;
         ++part.contact;
-        if (static_cast<double>(pt) >= hardness_)
+        if (static_cast<double>(pt) >= hardness_) {
           ++part.plastic;
-        else
+          s.plastic_overlap.data()[i] = std::max(-gap, 0.0);  // how far the surface pokes through the flat
+        } else {
           part.residual = std::max(part.residual, std::abs(gap));
+        }
       }
     }
     parts[static_cast<std::size_t>(thread)] = part;
