@@ -236,6 +236,7 @@ class DistributedRunner final : public StageRunner {
     std::vector<std::string> missing;
     if (stage.hardness) missing.push_back("a hardness (interface.hardness)");
     if (stage.adhesion) missing.push_back("adhesion (interface.adhesion)");
+    if (stage.stiffness) missing.push_back("the contact stiffness (compare = [\"stiffness\"])");
     for (const std::string& setting :
          undistributed_settings(bem_settings(), stage.settings, default_settings(bem_settings())))
       missing.push_back(setting);

@@ -71,6 +71,7 @@ std::string BemStage::name() const {
     else
       text << " rho " << adhesion->range << " m";
   }
+  if (stiffness) text << ", with the linearised stiffness";
   if (settings.extrapolate) text << ", again on twice the points a side for the extrapolated area";
   text << ")";
   return text.str();
@@ -78,6 +79,7 @@ std::string BemStage::name() const {
 
 bool BemStage::operator==(const BemStage& other) const {
   return periodic == other.periodic && hardness == other.hardness && adhesion == other.adhesion &&
+         stiffness == other.stiffness &&
          same_settings(bem_settings(), SettingScope::solve, settings, other.settings);
 }
 
@@ -113,6 +115,7 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
   products.solutions = std::move(loads.solutions);
   products.statistics = std::move(loads.statistics);
   products.adhesive = std::move(loads.adhesive);
+  products.stiffness = std::move(loads.stiffness);
   products.bytes_per_rank = loads.bytes_per_rank;
   if (stage.settings.extrapolate) {
     // The same surface on twice the points a side (the method's preflight refuses a non-periodic one):

@@ -46,7 +46,10 @@ struct BemStage {
   bool periodic = true;
   std::optional<Real> hardness;         // [Pa]: perfectly plastic pressure cap; absent = purely elastic
   std::optional<AdhesionLaw> adhesion;  // absent: non-adhesive (bem/adhesive_solver.hpp)
-  std::string name() const;             // e.g. "bem (active_set, periodic, tolerance 1e-08)"
+  // The contact stiffness of each converged state (bem/contact_stiffness.hpp): only when the scene compares
+  // it (Scene::compare), an extra linear solve per load.
+  bool stiffness = false;
+  std::string name() const;  // e.g. "bem (active_set, periodic, tolerance 1e-08)"
   // Methods that ask for equal solves share one.
   bool operator==(const BemStage& other) const;
 };
@@ -61,6 +64,7 @@ struct BemProducts {
   std::optional<Real> hardness;                              // the cap solved with [Pa]; none: elastic
   std::optional<AdhesionLaw> adhesion;                       // the attraction solved with; none: without
   std::vector<AdhesiveLoad> adhesive;                        // per load, with an attraction
+  std::vector<Real> stiffness;  // K = -dP/dd [Pa/m] per load, with BemStage::stiffness; empty otherwise
   // With BemStage::extrapolate: the same loads solved on twice the points a side (fields dropped too).
   std::vector<ContactSolution> fine_solutions;
   std::vector<AdhesiveLoad> fine_adhesive;
