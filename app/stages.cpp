@@ -123,8 +123,11 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
     Surface fine = refine(surface, 2 * nx, 2 * ny, context.threads);
     if (fine.grid().periodic != stage.periodic) fine = fine.with_periodic(stage.periodic);
     products.fine_points = fine.grid().points();
+    // The stiffness is the first grid's (as the mean gap): not solved again on the finer one.
+    BemStage fine_stage = stage;
+    fine_stage.stiffness = false;
     SolvedLoads fine_loads =
-        context.runner().solve_loads(stage, fine, estar, mean_pressures, connectivities, "", context);
+        context.runner().solve_loads(fine_stage, fine, estar, mean_pressures, connectivities, "", context);
     products.fine_solutions = std::move(fine_loads.solutions);
     products.fine_statistics = std::move(fine_loads.statistics);
     products.fine_adhesive = std::move(fine_loads.adhesive);
