@@ -66,6 +66,55 @@ std::string reference_uncertainty_text(const Comparison& comparison) {
              : " (its own error up to ± " + percent(largest, false) + ")";
 }
 
+const char* quantity_title(Quantity quantity) {
+  return quantity == Quantity::mean_gap ? "Mean gap u-bar [m]"
+                                        : "Contact stiffness per unit area K = -dP/dd [Pa/m]";
+}
+
+// For a compared quantity other than the area (Scene::compare[index]): each method's errors, then its
+// values load by load; "n/a" for a method that gives none.
+void write_quantity_tables(std::ostream& out, const SceneReport& report, const Comparison& comparison,
+                           std::size_t index) {
+  const Quantity quantity = report.scene.compare[index];
+  const std::size_t slot = index - 1;  // MethodComparison::quantities leaves out the area, always first
+  out << "\n"
+      << quantity_title(quantity) << " (docs/theory.md section 12)"
+      << (comparison.reference.empty() ? "" : ", relative to " + comparison.reference) << ":\n\n";
+  out << "| method | max abs error | rms error |\n|---|---:|---:|\n";
+  for (std::size_t m = 0; m < report.methods.size(); ++m) {
+    const MethodResult& r = report.methods[m];
+    const QuantityComparison& q = comparison.methods[m].quantities[slot];
+    out << "| " << r.label << r.note_suffix() << " | ";
+    if (!q.given)
+      out << "n/a (the method gives none) | |\n";
+    else if (r.label == comparison.reference)
+      out << "reference | |\n";
+    else
+      out << percent(q.max_abs_relative_error, false) << " | " << percent(q.rms_relative_error, false)
+          << " |\n";
+  }
+  out << "\n| P/(E* A0) |";
+  for (const MethodResult& r : report.methods)
+    out << ' ' << r.label << " |";
+  out << "\n|---:|";
+  for (std::size_t m = 0; m < report.methods.size(); ++m)
+    out << "---:|";
+  out << '\n';
+  for (std::size_t k = 0; k < report.loads().size(); ++k) {
+    out << "| " << table_number(report.loads()[k], "%.3g") << " |";
+    for (std::size_t m = 0; m < report.methods.size(); ++m) {
+      const MethodResult& r = report.methods[m];
+      const QuantityComparison& q = comparison.methods[m].quantities[slot];
+      const std::vector<Real>& values = r.curve.values(quantity);
+      out << ' ' << (values.empty() ? std::string("n/a") : table_number(values[k]));
+      if (!q.relative_error.empty() && r.label != comparison.reference)
+        out << " (" << percent(q.relative_error[k]) << ")";
+      out << " |";
+    }
+    out << '\n';
+  }
+}
+
 }  // namespace
 
 void write_curves_csv(std::ostream& out, const SceneReport& report, const Provenance& provenance) {
@@ -80,7 +129,17 @@ void write_curves_csv(std::ostream& out, const SceneReport& report, const Proven
   // What each method ran (for the BEM: its solver, boundary and tolerance), one comment line each.
   for (const MethodResult& m : report.methods)
     out << "# " << m.label << ": " << m.curve.parameters << '\n';
+  // The compared quantities beyond the area (Scene::compare), only when the scene names them: a scene of
+  // areas writes exactly the columns it wrote before.
+  std::vector<Quantity> others;
+  for (const Quantity q : report.scene.compare)
+    if (q != Quantity::area) others.push_back(q);
+  if (!others.empty())
+    out << "# mean_gap [m]: mean of the gap over the nominal area; stiffness [Pa/m]: K = -dP/dd per unit "
+           "area, d the flat's rigid approach (docs/theory.md section 12); empty: the method gives none\n";
   out << "method,separation,load,area_fraction,spots";
+  for (const Quantity q : others)
+    out << ',' << quantity_name(q);
   for (const std::string& name : extras)
     out << ',' << name;
   out << '\n';
@@ -89,6 +148,10 @@ void write_curves_csv(std::ostream& out, const SceneReport& report, const Proven
     for (std::size_t k = 0; k < loads.size(); ++k) {
       out << m.label << ',' << csv_number(m.curve.separation[k]) << ',' << csv_number(loads[k]) << ','
           << csv_number(m.curve.area_fraction[k]) << ',' << csv_number(m.curve.spots[k]);
+      for (const Quantity q : others) {
+        const std::vector<Real>& values = m.curve.values(q);
+        out << ',' << (values.empty() ? std::string() : csv_number(values[k]));
+      }
       for (const std::string& name : extras) {
         out << ',';
         for (const auto& [column, values] : m.curve.columns)
@@ -143,6 +206,20 @@ void write_summary_json(std::ostream& out, const SceneReport& report, const Comp
     o.add("area_fraction", std::span<const double>(r.curve.area_fraction));
     o.add("relative_error", std::span<const double>(c.relative_error));
     o.add("max_abs_relative_error", c.max_abs_relative_error).add("rms_relative_error", c.rms_relative_error);
+    // Each further compared quantity: its values, or "n/a" when the method gives none, and its errors.
+    for (const QuantityComparison& q : c.quantities) {
+      const std::string name(quantity_name(q.quantity));
+      if (!q.given) {
+        o.add(name, std::string_view("n/a"));
+        continue;
+      }
+      o.add(name, std::span<const double>(r.curve.values(q.quantity)));
+      if (!q.relative_error.empty()) {
+        o.add(name + "_relative_error", std::span<const double>(q.relative_error));
+        o.add(name + "_max_abs_relative_error", q.max_abs_relative_error);
+        o.add(name + "_rms_relative_error", q.rms_relative_error);
+      }
+    }
     // The columns the method repeats here (the BEM's extrapolated area), and its own error estimate.
     for (const std::string& name : r.curve.summary_columns)
       for (const auto& [column, values] : r.curve.columns)
@@ -220,6 +297,8 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
     }
     out << '\n';
   }
+  for (std::size_t index = 0; index < report.scene.compare.size(); ++index)
+    if (report.scene.compare[index] != Quantity::area) write_quantity_tables(out, report, comparison, index);
   out << "\nMethods as run, and the area each is compared by:\n\n";
   for (const MethodResult& r : report.methods)
     out << "- " << r.label << ": " << r.curve.parameters << "; compared area: " << r.compared_area << '\n';

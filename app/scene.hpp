@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "contactbench/app/compared_quantity.hpp"
 #include "contactbench/app/interface.hpp"
 #include "contactbench/app/scene_error.hpp"
 #include "contactbench/app/surface_source.hpp"
@@ -59,6 +60,9 @@ struct Scene {
   std::vector<Real> load_path;
   std::vector<MethodSpec> methods;  // in the order the file lists them
   std::string reference;            // label of the method the others are judged against
+  // `compare = [...]`: the quantities compared, the area always first (app/compared_quantity.hpp).
+  std::vector<Quantity> compare = {Quantity::area};
+  bool compares(Quantity quantity) const;
   const MethodSpec& method(std::string_view label) const;  // throws Error if absent
 };
 

@@ -34,7 +34,11 @@ ScenePlan plan_scene(const Scene& scene, const Grid& surface) {
       stages.sweep = index_of(plan.sweeps, *needs.sweep,
                               [](const SweepStage& a, const SweepStage& b) { return a.same_as(b); });
     if (needs.bem) {
-      stages.bem = index_of(plan.bems, PlannedBem{*needs.bem, {}},
+      // The stiffness of each state when the scene compares it (none with an attraction, whose change under
+      // an approach the linearised response leaves out: docs/theory.md section 12.2).
+      BemStage stage = *needs.bem;
+      stage.stiffness = scene.compares(Quantity::stiffness) && !stage.adhesion;
+      stages.bem = index_of(plan.bems, PlannedBem{stage, {}},
                             [](const PlannedBem& a, const PlannedBem& b) { return a.stage == b.stage; });
       plan.bems[static_cast<std::size_t>(stages.bem)].connectivities.insert(needs.bem_connectivity);
     }

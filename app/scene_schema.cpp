@@ -219,6 +219,36 @@ std::vector<MethodSpec> parse_methods(const Section& root, const std::optional<S
   return result;
 }
 
+// `compare = ["area", "mean_gap", "stiffness"]`: what the comparison judges besides the area, which it
+// always judges (app/compared_quantity.hpp). Absent: the area alone.
+std::vector<Quantity> parse_compare(const Section& root) {
+  const std::string accepted = "an array of quantity names: " + quantities_text();
+  std::vector<Quantity> compare = {Quantity::area};
+  const toml::node* node = root.find("compare");
+  if (!node) return compare;
+  const auto* array = node->as_array();
+  if (!array) {
+    root.wrong_type("compare", "an array of strings", accepted);
+    return compare;
+  }
+  for (std::size_t i = 0; i < array->size(); ++i) {
+    const toml::node& element = *array->get(i);
+    const std::string path = "compare[" + std::to_string(i) + "]";
+    const auto* name = element.as_string();
+    const auto quantity = name ? quantity_of(name->get()) : std::nullopt;
+    if (!name)
+      root.problems().add(line_of(element), path,
+                          "wrong type: expected a string, got " + std::string(type_name(element)), accepted);
+    else if (!quantity)
+      root.problems().add(line_of(element), path, "unknown quantity \"" + name->get() + "\"", accepted);
+    else if (std::find(compare.begin(), compare.end(), *quantity) == compare.end())
+      compare.push_back(*quantity);
+  }
+  // In the one order the outputs use, whatever the file's.
+  std::sort(compare.begin(), compare.end());
+  return compare;
+}
+
 std::string origin_name(const fs::path& origin) {
   return origin.empty() ? "<scene>" : origin.string();
 }
@@ -227,6 +257,10 @@ std::string origin_name(const fs::path& origin) {
 
 std::string_view MethodSpec::name() const {
   return method->name();
+}
+
+bool Scene::compares(Quantity quantity) const {
+  return std::find(compare.begin(), compare.end(), quantity) != compare.end();
 }
 
 const MethodSpec& Scene::method(std::string_view label) const {
@@ -255,8 +289,8 @@ Scene parse_scene(std::string_view toml_text, const std::filesystem::path& origi
 Scene parse_scene_table(const toml::table& document, const std::filesystem::path& origin) {
   Problems problems(origin_name(origin));
   const Section root(document, "", problems, true);
-  root.reject_unknown(
-      {"name", "description", "reference", "surface", "material", "interface", "loads", "methods"});
+  root.reject_unknown({"name", "description", "reference", "compare", "surface", "material", "interface",
+                       "loads", "methods"});
 
   Scene scene;
   const auto name =
@@ -266,6 +300,7 @@ Scene parse_scene_table(const toml::table& document, const std::filesystem::path
                  "letters, digits, '_', '-' and '.' (it names the output folder)");
   scene.name = name.value_or("");
   scene.description = root.string("description", false, "any text").value_or("");
+  scene.compare = parse_compare(root);
   const fs::path folder = origin.parent_path();
   const auto surface = read_surface_keys(root, folder);
   const auto material = parse_material(root, problems);

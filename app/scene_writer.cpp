@@ -34,6 +34,12 @@ SceneKeys scene_keys(const Scene& scene, bool with_estar) {
   root.put("name", scene.name);
   root.put("description", scene.description);
   root.put("reference", scene.reference);
+  if (scene.compare != std::vector<Quantity>{Quantity::area}) {  // the default is not written: old scenes
+    std::vector<std::string> names;                              // read back exactly as before
+    for (const Quantity q : scene.compare)
+      names.emplace_back(quantity_name(q));
+    root.put("compare", names);
+  }
   write_surface_keys(scene.surface, root);
   write_material_keys(scene.material, with_estar, root);
   write_interface(scene.interface, root);

@@ -1,11 +1,13 @@
 // The stages in this process (app/stage_runner.hpp): every BEM option and the sweep as the libraries have
 // them, nothing refused.
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <sstream>
 
 #include "contactbench/app/stage_runner.hpp"
 #include "contactbench/app/stages.hpp"
+#include "contactbench/bem/contact_stiffness.hpp"
 #include "contactbench/core/labelling.hpp"
 #include "contactbench/core/topography_io.hpp"
 
@@ -57,6 +59,15 @@ class SerialRunner final : public StageRunner {
       }
       for (auto& [c, labeller] : labellers)
         done.statistics[c].push_back(contact_statistics(solution, labeller));
+      if (stage.stiffness) {  // the linearised response of the converged state (docs/theory.md 12.2)
+        const ContactStiffness response =
+            contact_stiffness(solved.grid(), estar, solution.pressure, stage.hardness, context.threads);
+        if (!response.converged)
+          observer.warn(name + ": load " + std::to_string(k + 1) +
+                        ": the stiffness solve stopped unconverged at a relative residual of " +
+                        std::to_string(response.residual) + "; its stiffness is left out (NaN)");
+        done.stiffness.push_back(response.converged ? response.stiffness : std::nan(""));
+      }
       if (!fields.empty()) {  // as each load is solved, so that a long run leaves what it has done
         write_surface(field_path(fields, k + 1, "pressure"), Surface(solved.grid(), solution.pressure));
         write_surface(field_path(fields, k + 1, "gap"), Surface(solved.grid(), solution.gap));

@@ -28,6 +28,7 @@ struct SolvedLoads {
   std::vector<ContactSolution> solutions;  // with an attraction: the repulsive pressure, the net load
   std::map<int, std::vector<ContactStatistics>> statistics;  // by connectivity
   std::vector<AdhesiveLoad> adhesive;                        // with an attraction, per load
+  std::vector<Real> stiffness;     // with BemStage::stiffness: K = -dP/dd [Pa/m] per load
   std::size_t bytes_per_rank = 0;  // the largest memory one rank held; 0 when solved by one process
 };
 

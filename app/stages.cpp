@@ -71,6 +71,7 @@ std::string BemStage::name() const {
     else
       text << " rho " << adhesion->range << " m";
   }
+  if (stiffness) text << ", with the linearised stiffness";
   if (settings.extrapolate) text << ", again on twice the points a side for the extrapolated area";
   if (settings.extrapolate && settings.error_estimate == ErrorEstimate::gci3)
     text << " and on a third grid for its error bar";
@@ -84,6 +85,7 @@ std::string BemStage::name() const {
 bool BemStage::operator==(const BemStage& other) const {
   return periodic == other.periodic && hardness == other.hardness && adhesion == other.adhesion &&
          load_path == other.load_path &&
+         stiffness == other.stiffness &&
          same_settings(bem_settings(), SettingScope::solve, settings, other.settings);
 }
 
@@ -125,6 +127,7 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
   products.solutions = std::move(loads.solutions);
   products.statistics = std::move(loads.statistics);
   products.adhesive = std::move(loads.adhesive);
+  products.stiffness = std::move(loads.stiffness);
   products.bytes_per_rank = loads.bytes_per_rank;
   if (stage.settings.extrapolate) {
     // The same surface on twice the points a side (the method's preflight refuses a non-periodic one):
@@ -132,8 +135,11 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
     Surface fine = refine(surface, 2 * nx, 2 * ny, context.threads);
     if (fine.grid().periodic != stage.periodic) fine = fine.with_periodic(stage.periodic);
     products.fine_points = fine.grid().points();
+    // The stiffness is the first grid's (as the mean gap): not solved again on the finer one.
+    BemStage fine_stage = stage;
+    fine_stage.stiffness = false;
     SolvedLoads fine_loads =
-        context.runner().solve_loads(stage, fine, estar, mean_pressures, connectivities, "", context);
+        context.runner().solve_loads(fine_stage, fine, estar, mean_pressures, connectivities, "", context);
     products.fine_solutions = std::move(fine_loads.solutions);
     products.fine_statistics = std::move(fine_loads.statistics);
     products.fine_adhesive = std::move(fine_loads.adhesive);

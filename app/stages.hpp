@@ -50,6 +50,9 @@ struct BemStage {
   // ascending. With a hardness the surface keeps its plastic deformation along it
   // (BemSolverOptions::keep_plastic_deformation; docs/solvers.md "Hardness").
   std::vector<Real> load_path;
+  // The contact stiffness of each converged state (bem/contact_stiffness.hpp): only when the scene compares
+  // it (Scene::compare), an extra linear solve per load.
+  bool stiffness = false;
   std::string name() const;  // e.g. "bem (active_set, periodic, tolerance 1e-08)"
   // Methods that ask for equal solves share one.
   bool operator==(const BemStage& other) const;
@@ -67,6 +70,7 @@ struct BemProducts {
   std::vector<Real>
       load_path;  // the path solved (BemStage::load_path): solutions are in its order; empty: none
   std::vector<AdhesiveLoad> adhesive;  // per load, with an attraction
+  std::vector<Real> stiffness;  // K = -dP/dd [Pa/m] per load, with BemStage::stiffness; empty otherwise
   // With BemStage::extrapolate: the same loads solved on twice the points a side (fields dropped too).
   std::vector<ContactSolution> fine_solutions;
   std::vector<AdhesiveLoad> fine_adhesive;

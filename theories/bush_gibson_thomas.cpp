@@ -221,6 +221,10 @@ Real BushGibsonThomas::load(Real d) const {
   return std::exp(log_load(d));
 }
 
+Real BushGibsonThomas::stiffness(Real d) const {
+  return 1.5 / s_ * std::exp(log_sum(log_load_weight_, 0.5, d));
+}
+
 Real BushGibsonThomas::solve_separation(Real load) const {
   if (!(std::isfinite(load) && load > 0))
     throw Error("bgt: a load P/(E* A0) must be finite and > 0, got " + format_number(load));

@@ -86,6 +86,9 @@ class BushGibsonThomas {
   Real log_area_fraction(Real d) const;
   Real load(Real d) const;
   Real log_load(Real d) const;
+  // The contact stiffness K/E* = -d(P/(E* A0))/dd [1/m] at separation d: with dF_{3/2}/dt = -(3/2) F_{1/2},
+  // int w c_P (3/2) s^(1/2) F_{1/2}(t) (docs/theory.md section 12.4).
+  Real stiffness(Real d) const;
 
   // The separation d [m] in [kBgtMinSeparation, kBgtMaxSeparation] sqrt(m0) at which P/(E* A0) = load, solved
   // with Brent's method on ln P to 1e-13. Throws Error naming the load and the reachable limit beyond range.

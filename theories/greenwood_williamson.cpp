@@ -120,6 +120,9 @@ Real gw_area_fraction(const GwParameters& gw, Real t) {
 Real gw_log_load(const GwParameters& gw, Real t) {
   return log_load_prefactor(gw) + log_gaussian_tail_integral(1.5, t);
 }
+Real gw_stiffness(const GwParameters& gw, Real t) {
+  return 2 * gw.eta * std::sqrt(gw.beta * gw.sigma_s) * gaussian_tail_integral(0.5, t);
+}
 Real gw_load(const GwParameters& gw, Real t) {
   return std::exp(gw_log_load(gw, t));
 }

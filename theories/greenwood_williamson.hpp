@@ -45,6 +45,9 @@ Real gw_area_fraction(const GwParameters& gw, Real t);
 // underflows).
 Real gw_load(const GwParameters& gw, Real t);
 Real gw_log_load(const GwParameters& gw, Real t);
+// The contact stiffness K/E* = -d(P/(E* A0))/dd = 2 eta beta^(1/2) sigma_s^(1/2) F_{1/2}(t) [1/m]
+// (dF_{3/2}/dt = -(3/2) F_{1/2}; docs/theory.md section 12.4).
+Real gw_stiffness(const GwParameters& gw, Real t);
 
 // McCool's parameters (Wear 107, 1986) from isotropic profile moments m0, m2, m4 and alpha = m0 m4/m2^2:
 //   eta = m4/(6 pi sqrt3 m2),  beta = (3/8) sqrt(pi/m4),  sigma_s^2 = (1 - 0.8968/alpha) m0,  ys = 4

@@ -250,6 +250,14 @@ class BemMethod final : public Method {
                      {"mean_gap", mean_gap},         {"max_pressure", max_pressure},
                      {"iterations", iterations},     {"residual", residual},
                      {"converged", converged},       {"solve_seconds", seconds}};
+    // Compared (docs/theory.md section 12): the mean gap is the gap field's mean, already computed with the
+    // statistics, and then a typed field rather than the method's own column; the stiffness is the
+    // linearised response of each converged state, solved only when the scene compares it.
+    if (in.scene.compares(Quantity::mean_gap)) {
+      curve.mean_gap = mean_gap;
+      curve.columns.erase(curve.columns.begin() + 2);
+    }
+    if (in.scene.compares(Quantity::stiffness)) curve.stiffness = products.stiffness;
     if (products.hardness) {
       curve.columns.emplace_back("plastic_fraction", plastic);  // nodes at p = H / all
       curve.columns.emplace_back("plastic_load_fraction", plastic_load);

@@ -3,6 +3,7 @@
 
 #include "contactbench/app/methods/theory_method.hpp"
 #include "contactbench/theories/bush_gibson_thomas.hpp"
+#include "contactbench/theories/isotropic_moments.hpp"
 
 namespace contactbench {
 
@@ -12,7 +13,14 @@ std::unique_ptr<Method> make_bgt_method() {
       [](const SpectralMoments& m, std::span<const Real> loads, Real area) {
         return bgt_curve(m, loads, area);
       },
-      true);
+      true,
+      // As GW's (docs/theory.md 12.4): the separation as the mean gap, the analytic -dP/dd.
+      [](const SpectralMoments& m, const MethodInputs& in, MethodCurve& curve) {
+        const BushGibsonThomas model(isotropic_moments(m, "bgt"));
+        curve.mean_gap = curve.separation;
+        for (const Real d : curve.separation)
+          curve.stiffness.push_back(in.scene.material.estar * model.stiffness(d));
+      });
 }
 
 }  // namespace contactbench

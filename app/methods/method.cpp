@@ -11,6 +11,18 @@ void MethodCheck::problem(std::string_view key_suffix, std::string_view reason,
   problems.add(0, key_suffix.empty() ? key : key + "." + std::string(key_suffix), reason, accepted);
 }
 
+const std::vector<Real>& MethodCurve::values(Quantity quantity) const {
+  switch (quantity) {
+    case Quantity::mean_gap:
+      return mean_gap;
+    case Quantity::stiffness:
+      return stiffness;
+    case Quantity::area:
+      break;
+  }
+  return area_fraction;
+}
+
 MethodCurve MethodCurve::from(const LoadAreaCurve& curve, const std::vector<Real>& loads) {
   // The library solves each load to 1e-12 relative (e.g. theories/greenwood_williamson.hpp); a curve at other
   // loads is a bug, never something to line up silently.

@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "contactbench/app/compared_quantity.hpp"
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/stages.hpp"
 #include "contactbench/core/load_area_curve.hpp"
@@ -76,7 +77,14 @@ struct MethodCurve {
   std::vector<Real> area_fraction;  // A/A0: the area the comparison uses (compared_area() says which)
   std::vector<Real> separation;     // [m] from the mean plane of the heights; NaN where the method has none
   std::vector<Real> spots;          // NaN where the method counts none
-  std::string parameters;           // the method as run, for the report
+  // Filled only when the scene compares them (Scene::compare; docs/theory.md section 12): the mean gap u-bar
+  // [m] and the contact stiffness per unit area K = -dP/dd [Pa/m], d the rigid approach of the flat. Empty:
+  // the method cannot give the quantity (the tables say "n/a", never 0); NaN at a load without an answer.
+  std::vector<Real> mean_gap;
+  std::vector<Real> stiffness;
+  // The values of a compared quantity: area_fraction, mean_gap or stiffness.
+  const std::vector<Real>& values(Quantity quantity) const;
+  std::string parameters;  // the method as run, for the report
   // The node count, contact nodes / all nodes, where the method has it beside its compared area (the tables'
   // "kappa (nodes ...)"); empty when it has none.
   std::vector<Real> area_fraction_nodes;

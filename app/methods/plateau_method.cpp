@@ -2,7 +2,9 @@
 // docs/theory.md section 4): one sweep of the surface, the model's load at each level, read at the loads.
 #include "contactbench/app/methods/plateau_method.hpp"
 
+#include <cmath>
 #include <memory>
+#include <numbers>
 
 #include "contactbench/app/methods/refine_key.hpp"
 #include "contactbench/app/scene_keys.hpp"
@@ -13,6 +15,7 @@ namespace contactbench {
 
 namespace {
 
+constexpr Real pi = std::numbers::pi;
 constexpr std::string_view kLevelsAccepted = "\"exact\", \"paper\" or an integer count >= 1";
 
 }  // namespace
@@ -82,6 +85,13 @@ void PlateauMethod::preflight(const MethodCheck& check) const {
 }
 
 void PlateauMethod::complete(MethodCurve& curve, const MethodInputs& in) const {
+  // The cut level's mean gap (docs/theory.md section 12.5): outside the spots the surface is undeformed,
+  // on them the gap is 0, so u-bar = mean of (z - h)+ over the scene's surface, z the curve's separation.
+  if (in.scene.compares(Quantity::mean_gap)) {
+    const HeightMap& h = in.surface.heights();
+    for (const Real z : curve.separation)
+      curve.mean_gap.push_back(std::isfinite(z) ? (z - h).max(0.0).mean() : std::nan(""));
+  }
   if (refine_ > 0)
     curve.parameters +=
         ", on the surface Fourier-refined to " + std::to_string(refine_) + " x " + std::to_string(refine_);
@@ -92,6 +102,12 @@ MethodCurve PlateauMethod::evaluate(const MethodInputs& in) const {
   MethodCurve curve = MethodCurve::from(
       plateau_curve_at_loads(in.sweep->sweep, in.sweep->model, in.scene.loads), in.scene.loads);
   complete(curve, in);
+  // The model's own dP/dd (its eq. 2): K = 2 E* sqrt(A_c N / pi) / A0 with the level's area and spots.
+  if (in.scene.compares(Quantity::stiffness)) {
+    const Real a0 = in.surface.grid().nominal_area(), estar = in.scene.material.estar;
+    for (std::size_t k = 0; k < curve.area_fraction.size(); ++k)
+      curve.stiffness.push_back(2 * estar * std::sqrt(curve.area_fraction[k] * curve.spots[k] / (pi * a0)));
+  }
   curve.area_fraction_nodes = curve.area_fraction;  // the model's area is the bearing area, a node count
   curve.columns.emplace_back("area_fraction_nodes", curve.area_fraction);
   return curve;

@@ -61,6 +61,12 @@ MethodCurve AnalyticTheoryMethod::evaluate(const MethodInputs& in) const {
   const SpectralMoments moments = seen(in.moments);
   MethodCurve curve =
       MethodCurve::from(curve_(moments, in.scene.loads, in.surface.grid().nominal_area()), in.scene.loads);
+  const bool gap = in.scene.compares(Quantity::mean_gap), stiffness = in.scene.compares(Quantity::stiffness);
+  if (beyond_ && (gap || stiffness)) {
+    beyond_(moments, in, curve);
+    if (!gap) curve.mean_gap.clear();
+    if (!stiffness) curve.stiffness.clear();
+  }
   if (average_anisotropy_)
     curve.parameters += "; anisotropy averaged: the equivalent isotropic surface of m2x/m2y = " +
                         std::to_string(in.moments.m2x / in.moments.m2y) +

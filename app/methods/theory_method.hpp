@@ -17,8 +17,12 @@ class AnalyticTheoryMethod : public Method {
   // curve(moments, loads, nominal area [m^2]): the theory's library function, which throws Error for what
   // it refuses. uses_m4: whether the theory reads m4 (then both m2 and m4 must be isotropic).
   using Curve = std::function<LoadAreaCurve(const SpectralMoments&, std::span<const Real>, Real)>;
-  AnalyticTheoryMethod(std::string name, Curve curve, bool uses_m4)
-      : name_(std::move(name)), curve_(std::move(curve)), uses_m4_(uses_m4) {}
+  // beyond(moments seen, inputs, curve): fills curve.mean_gap and curve.stiffness [Pa/m] at the scene's
+  // loads for a theory that gives them (docs/theory.md section 12), called only when the scene compares
+  // either; none: the theory gives neither (the tables say n/a).
+  using Beyond = std::function<void(const SpectralMoments&, const MethodInputs&, MethodCurve&)>;
+  AnalyticTheoryMethod(std::string name, Curve curve, bool uses_m4, Beyond beyond = nullptr)
+      : name_(std::move(name)), curve_(std::move(curve)), uses_m4_(uses_m4), beyond_(std::move(beyond)) {}
 
   std::string_view name() const override { return name_; }
   std::string compared_area() const override { return "the theory's A/A0 (a continuum: no grid)"; }
@@ -37,6 +41,7 @@ class AnalyticTheoryMethod : public Method {
   std::string name_;
   Curve curve_;
   bool uses_m4_ = true;
+  Beyond beyond_;
   bool average_anisotropy_ = false;  // anisotropy = "refuse" (default) | "average"
 };
 
