@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <regex>
@@ -10,6 +11,7 @@
 
 #include "cli_runner.hpp"
 #include "contactbench/app/field_picture.hpp"
+#include "contactbench/app/load_area_plots.hpp"
 #include "contactbench/app/run_observer.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/topography_io.hpp"
@@ -215,6 +217,64 @@ TEST_F(FieldPictures, ProgressOnlyWhenAskedOffTheTerminal) {
   std::istringstream lines(told.err);
   for (std::string line; std::getline(lines, line);)
     EXPECT_LE(line.size(), 100u) << line;  // one short line each (the issue: 222 characters before)
+}
+
+// The load-area script from a report made by hand: a reference with an error estimate, a method that stops.
+TEST(LoadAreaPlot, BandErrorPanelBoundedAxesAndWhereAMethodStops) {
+  SceneReport report;
+  report.scene.name = "plot";
+  report.scene.reference = "bem";
+  report.scene.loads = {1e-3, 1e-2, 2e-2};
+  MethodResult bem;
+  bem.label = "bem";
+  bem.curve.area_fraction = {0.01, 0.08, 0.15};
+  bem.curve.area_fraction_error = {1e-4, 2e-4, 3e-4};
+  MethodResult theory;
+  theory.label = "stops_early";
+  theory.curve.area_fraction = {0.02, 0.1, std::nan("")};
+  report.methods = {bem, theory};
+  std::ostringstream script;
+  write_gnuplot_script(script, report, "a.png", "a.svg");
+  const std::string text = script.str();
+  // The band [A - error, A + error] from the reference's data block, and the relative error A/A_ref - 1.
+  EXPECT_NE(text.find("$method0 using 1:3:4 with filledcurves"), std::string::npos) << text;
+  EXPECT_NE(text.find("$method1 using 1:5 with linespoints"), std::string::npos) << text;
+  // The first row of each block: load, A, A - error, A + error, A/A_ref - 1, error_ref/A_ref (NaN: none).
+  // Written as the shortest decimals that read back to the same doubles: compared to 1e-15 relative (a few
+  // roundings of the subtraction and division).
+  const auto first_row = [&](const std::string& block) {
+    std::istringstream rows(text.substr(text.find(block + " << EOD\n") + block.size() + 8));
+    std::vector<double> values;
+    for (int column = 0; column < 6; ++column) {
+      std::string cell;
+      rows >> cell;
+      values.push_back(cell == "NaN" ? std::nan("") : std::stod(cell));
+    }
+    return values;
+  };
+  const std::vector<double> reference = first_row("$method0"), stops = first_row("$method1");
+  const std::vector<double> expected_reference{1e-3, 0.01, 0.0099, 0.0101, 0, 0.01};
+  for (std::size_t c = 0; c < 6; ++c)
+    EXPECT_NEAR(reference[c], expected_reference[c], 1e-15) << "column " << c + 1;
+  EXPECT_NEAR(stops[1], 0.02, 1e-15);
+  EXPECT_TRUE(std::isnan(stops[2]) && std::isnan(stops[3]));  // no error estimate of its own
+  EXPECT_NEAR(stops[4], 1.0, 1e-15);                          // 0.02 / 0.01 - 1
+  EXPECT_NEAR(stops[5], 0.01, 1e-15);                         // the reference's 1e-4 / 0.01
+  // Log axes a tenth of a decade (factor 1.26) beyond the data: loads 1e-3 ... 2e-2, areas 0.01 ... 0.15.
+  const std::regex log_range(
+      R"(set title '\(b\) logarithmic axes'\nset xrange \[([^:]+):([^\]]+)\]\nset yrange \[([^:]+):([^\]]+)\])");
+  std::smatch range;
+  ASSERT_TRUE(std::regex_search(text, range, log_range)) << text;
+  EXPECT_NEAR(std::stod(range[1]), 1e-3 / 1.26, 1e-17);  // shortest round trip: exact to the last bit
+  EXPECT_NEAR(std::stod(range[2]), 2e-2 * 1.26, 1e-16);
+  EXPECT_NEAR(std::stod(range[3]), 0.01 / 1.26, 1e-17);
+  EXPECT_NEAR(std::stod(range[4]), 0.15 * 1.26, 1e-16);
+  // Where a method stops, in its legend entry; the legend is a panel of its own (no key on the data panels).
+  EXPECT_NE(text.find("title \"stops_early\\n    no value above P/(E* A0) = 0.01\" noenhanced"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("set key off"), std::string::npos);
+  EXPECT_NE(text.find("{/:Italic P} / ({/:Italic E}^*{/:Italic A}_0)"), std::string::npos);  // typeset label
 }
 
 }  // namespace
