@@ -174,6 +174,36 @@ TEST_F(FieldPictures, SceneFieldsLandInTheOutputFolderWithMaps) {
   EXPECT_TRUE(((pressure.values.heights() > 0).cast<Real>() == contact.values.heights()).all());
 }
 
+// With adhesion the contact set has a third class, the attracted zone out of contact (a > 0, p = 0), and the
+// attraction is written as a field of its own; the net traction is p - a.
+TEST_F(FieldPictures, AdhesiveFieldsShowTheAttractiveZone) {
+  const auto surface = folder_ / "s.txt";
+  ASSERT_EQ(run("generate --sigma 0.5e-6 --hurst 0.5 --qr 3.14e4 --size 200e-6 --grid 32 --seed 4 --out " +
+                surface.string())
+                .status,
+            0);
+  const auto result =
+      run("bem " + surface.string() + " --loads 0.001 --modulus 4e6 --out " + (folder_ / "b.csv").string() +
+          " --adhesion dugdale,work=0.05,stress=1e5 --fields " + (folder_ / "f").string());
+  ASSERT_EQ(result.status, 0) << result.err;
+  const Field pressure = read_field(folder_ / "f_load1_pressure.txt");
+  const Field attraction = read_field(folder_ / "f_load1_attraction.txt");
+  const Field contact = read_field(folder_ / "f_load1_contact.txt");
+  EXPECT_EQ(attraction.unit, "Pa");
+  const HeightMap& p = pressure.values.heights();
+  const HeightMap& a = attraction.values.heights();
+  const HeightMap& c = contact.values.heights();
+  // Dugdale: the attraction is 0 or sigma0 = 1e5 Pa (to the rounding of p - t, 1e-6 relative of the
+  // pressures around it).
+  EXPECT_TRUE((a.abs() < 1e-1 || (a - 1e5).abs() < 1e-1).all());
+  EXPECT_TRUE(((p > 0).cast<Real>() == (c == 1).cast<Real>()).all());            // contact
+  EXPECT_TRUE(((p <= 0 && a > 0).cast<Real>() == (c == 2).cast<Real>()).all());  // attracted
+  EXPECT_GT((c == 2).count(), 0);  // this load has an attractive zone
+  if (gnuplot_available()) {
+    EXPECT_GT(png_size(folder_ / "f_load1_attraction.png")[0], 0u);
+  }
+}
+
 TEST_F(FieldPictures, SceneFieldsOutsideTheOutputFolderAreRefused) {
   for (const char* prefix : {"../f", "/tmp/f"}) {
     const auto scene =

@@ -411,7 +411,8 @@ ignore = ["hardness"]
       << summary.str();
   EXPECT_NE(summary.str().find("\"ignored_effects\": [\"hardness\"]"), std::string::npos) << summary.str();
   EXPECT_NE(summary.str().find("\"interface\": {"), std::string::npos) << "the scene as understood";
-  EXPECT_NE(plot.str().find("title 'persson (elastic: ignores hardness)'"), std::string::npos) << plot.str();
+  EXPECT_NE(plot.str().find("title \"persson (elastic: ignores hardness)\""), std::string::npos)
+      << plot.str();
 }
 
 // Adhesion on the scene: the BEM solves it and says what it adds per load; a BEM that ignores it runs without
