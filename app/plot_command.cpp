@@ -79,7 +79,7 @@ void add_plot_command(CLI::App& parent) {
       "--fields` "
       "and a scene's `fields`) or any surface file (as a height map): a map with a colour bar in the field's "
       "unit, as PNG and SVG (gnuplot).");
-  options->topography.add_to(*command, "(nothing for the picture)");
+  options->topography.add_to(*command, "nothing for the picture");
   command
       ->add_option("--out", options->out,
                    "the picture, FILE.png or FILE.svg (default: both, beside FILE, its extension replaced)")
