@@ -48,6 +48,7 @@ struct BemOptions {
   std::string out;
   std::string fftw_wisdom;  // --fftw-wisdom FILE (app/fftw_wisdom_file.hpp); empty: the default
   int threads = 1;
+  bool progress = false;  // --progress (app/cli.hpp terminal_observer)
 };
 
 FlagNames flag_names(const BemOptions& o) {
@@ -189,7 +190,7 @@ void run_bem(const BemOptions& o, const CommandContext& context) {
   if (!o.out.empty()) check_output_file(o.out, o.topography.file, "--out");
   const Scene scene = scene_from_flags(document, command, flags);
   if (!o.approach_retract.empty()) return run_approach_retract(o, scene, command);
-  const RunObserver observer = terminal_observer(command);
+  const RunObserver observer = terminal_observer(command, o.progress);
   FftwWisdomFile wisdom(fftw_wisdom_path(o.fftw_wisdom, o.threads), o.threads, observer.warning);
   const double planning_before = fftw_planning_seconds();
   SceneReport report;
@@ -244,6 +245,7 @@ void add_bem_command(CLI::App& parent, const CommandContext& context) {
   command->add_option("--out", options->out, "CSV file (default: standard output)")
       ->check(refuse_empty_output_name);
   add_threads_option(*command, options->threads);
+  add_progress_option(*command, options->progress);
   add_fftw_wisdom_option(*command, options->fftw_wisdom);
   command->callback([options, &context] { run_bem(*options, context); });
 }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include <omp.h>
+#include <unistd.h>
 
 #if CONTACTBENCH_WITH_MPI
 #include "contactbench/app/distributed_stages.hpp"
@@ -23,13 +24,25 @@ void add_threads_option(CLI::App& command, int& threads) {
       ->check(CLI::Range(1, 1024));
 }
 
-RunObserver terminal_observer(const std::string& command) {
+void add_progress_option(CLI::App& command, bool& progress) {
+  command.add_flag("--progress", progress,
+                   "one line per stage and per load solved on stderr, even when it is not a terminal "
+                   "(default: on a terminal, for stages longer than 2 s; otherwise none)");
+}
+
+RunObserver terminal_observer(const std::string& command, bool progress) {
   RunObserver observer;
-  observer.stage_finished = [command](const std::string& stage, double seconds) {
-    if (seconds > kProgressAfterSeconds)
-      std::cerr << command << ": " << stage << ": done in " << seconds << " s\n";
-  };
-  observer.progress = [command](const std::string& text) { std::cerr << command << ": " << text << '\n'; };
+  const bool terminal = ::isatty(STDERR_FILENO) != 0;
+  if (progress || terminal) {
+    observer.stage_finished = [command, progress](const std::string& stage, double seconds) {
+      if (progress || seconds > kProgressAfterSeconds)
+        std::cerr << command << ": " << stage_done_line(stage, seconds) << '\n';
+    };
+    observer.load_solved = [command, progress](const LoadProgress& load) {
+      if (progress || load.stage_seconds > kProgressAfterSeconds)
+        std::cerr << command << ": " << progress_line(load) << '\n';
+    };
+  }
   observer.warning = [command](const std::string& text) {
     std::cerr << command << ": warning: " << text << '\n';
   };
@@ -49,6 +62,7 @@ int run_cli(int argc, char** argv) {
   add_bem_command(app, context);
   add_run_command(app, context);
   add_convert_command(app);
+  add_plot_command(app);
   auto parse_and_run = [&]() -> int {
     try {
       app.parse(argc, argv);

@@ -7,6 +7,7 @@
 
 #include <mpi.h>
 
+#include "contactbench/app/load_fields.hpp"
 #include "contactbench/app/stages.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/topography_io.hpp"
@@ -151,8 +152,7 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
       const HeightMap pressure = mpi::gather_to_root(solved.pressure, slab, kWorld);
       const HeightMap gap = mpi::gather_to_root(solved.gap, slab, kWorld);
       if (is_root()) try {
-          write_surface(field_path(fields, k + 1, "pressure"), Surface(grid, pressure));
-          write_surface(field_path(fields, k + 1, "gap"), Surface(grid, gap));
+          write_load_fields(fields, k + 1, grid, {.pressure = &pressure, .gap = &gap}, warning);
         } catch (...) {
           failure = std::current_exception();
         }

@@ -1,5 +1,6 @@
 // Load-area plots of a scene's run, like the paper's Figs. 6, 7 and 9: A/A0 against P/(E* A0) for every
-// method, on linear and on logarithmic axes, as PNG and SVG, drawn by gnuplot from curves.csv.
+// method on linear and on logarithmic axes (bounded by the data), the reference's error band, the relative
+// error against the reference, and the legend in a panel of its own, as PNG and SVG, drawn by gnuplot.
 #pragma once
 
 #include <filesystem>

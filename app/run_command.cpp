@@ -3,6 +3,9 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <system_error>
+
+#include <unistd.h>
 
 #include "contactbench/app/cli.hpp"
 #include "contactbench/app/comparison.hpp"
@@ -26,8 +29,36 @@ struct RunCommandOptions {
   std::string out;          // default runs/<name>/ (untracked; results/ holds the published record)
   std::string fftw_wisdom;  // --fftw-wisdom FILE (app/fftw_wisdom_file.hpp); empty: the default
   int threads = 1;
+  bool progress = false;  // --progress (app/cli.hpp terminal_observer)
   bool plots = true;
   bool quiet = false;
+};
+
+// The folder `.<name>.fields.<pid>` beside the output folder `<name>`: made at once, removed when empty at
+// the end (a run whose scene asks for no fields); a failed run leaves its fields there.
+class FieldsWorkFolder {
+ public:
+  explicit FieldsWorkFolder(const std::filesystem::path& output) {
+    const std::filesystem::path absolute = std::filesystem::absolute(output).lexically_normal();
+    const std::filesystem::path named = absolute.has_filename() ? absolute : absolute.parent_path();
+    path_ = named.parent_path() / ("." + named.filename().string() + ".fields." + std::to_string(::getpid()));
+    std::filesystem::create_directories(path_);
+  }
+  FieldsWorkFolder(const FieldsWorkFolder&) = delete;
+  FieldsWorkFolder& operator=(const FieldsWorkFolder&) = delete;
+  ~FieldsWorkFolder() {
+    std::error_code ignored;
+    std::filesystem::remove(path_, ignored);  // only when empty: what a failed run solved is kept
+  }
+  const std::filesystem::path& path() const { return path_; }
+  // Moves every file and folder written into `staging` (the same file system: renames).
+  void move_into(const std::filesystem::path& staging) const {
+    for (const auto& entry : std::filesystem::directory_iterator(path_))
+      std::filesystem::rename(entry.path(), staging / entry.path().filename());
+  }
+
+ private:
+  std::filesystem::path path_;
 };
 
 void run_command(const RunCommandOptions& o, const CommandContext& context) {
@@ -39,12 +70,17 @@ void run_command(const RunCommandOptions& o, const CommandContext& context) {
   if (!o.plots) command += " --no-plots";
 
   check_replaceable_folder(folder);  // before any work, and again when the output is moved into place
-  const RunObserver observer = terminal_observer("contactbench run");
+  const RunObserver observer = terminal_observer("contactbench run", o.progress);
   // Warnings about the wisdom file are shown even with --quiet: they say why a run plans again.
   FftwWisdomFile wisdom(fftw_wisdom_path(o.fftw_wisdom, o.threads), o.threads, observer.warning);
   const double planning_before = fftw_planning_seconds();
-  SceneReport report = run_scene(
-      scene, {.threads = o.threads, .observer = o.quiet ? nullptr : &observer, .runner = context.runner});
+  // A scene's fields are written, load by load, into a work folder beside the output (a run that fails
+  // leaves there what it solved) and moved into the output folder with the rest.
+  const FieldsWorkFolder fields(folder);
+  SceneReport report = run_scene(scene, {.threads = o.threads,
+                                         .observer = o.quiet ? nullptr : &observer,
+                                         .runner = context.runner,
+                                         .fields_folder = fields.path()});
   wisdom.save();
   // Planning as a line of its own in "Stages that ran", its time also counted in the stages that planned.
   report.stages.push_back({"fftw planning (included in the stages above; " + wisdom.describe() + ")",
@@ -53,6 +89,7 @@ void run_command(const RunCommandOptions& o, const CommandContext& context) {
   const Provenance provenance = current_provenance(o.threads, command);
   write_folder_atomically(folder, [&](const std::filesystem::path& staging) {
     write_report(staging, report, comparison, provenance);
+    fields.move_into(staging);
     if (o.plots) draw_load_area_plots(staging, report, std::cerr);
   });
   if (!o.quiet) {
@@ -79,6 +116,7 @@ void add_run_command(CLI::App& parent, const CommandContext& context) {
   command->add_flag("!--no-plots", options->plots, "do not draw the plots (no gnuplot run)");
   command->add_flag("--quiet", options->quiet, "no progress and no table on the terminal");
   add_threads_option(*command, options->threads);
+  add_progress_option(*command, options->progress);
   add_fftw_wisdom_option(*command, options->fftw_wisdom);
   command->callback([options, &context] { run_command(*options, context); });
 }

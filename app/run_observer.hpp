@@ -1,18 +1,30 @@
-// What a run tells the application while it works: stages as they start and finish, progress of long stages,
-// warnings (a solve that did not converge). The application owns where it goes (stderr for the command line,
-// a record in tests); the libraries and the pipeline never write to a stream themselves.
+// What a run tells the application while it works: stages as they start and finish, each solved load of a
+// long stage, warnings (a solve that did not converge). The application owns where it goes (stderr for the
+// command line, a record in tests); the libraries and the pipeline never write to a stream themselves.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <string>
 
 namespace contactbench {
 
+// One load of a stage solved: what a progress line says.
+struct LoadProgress {
+  std::string stage;         // the stage's short label (stage_label), e.g. "bem 256 x 256"
+  std::size_t load = 0;      // 1-based, in the order solved
+  std::size_t loads = 0;     // of the stage
+  double load_value = 0;     // P/(E* A0)
+  long long iterations = 0;  // of this load's solve
+  double seconds = 0;        // of this load's solve
+  double stage_seconds = 0;  // since the stage started
+};
+
 struct RunObserver {
   std::function<void(const std::string& stage)> stage_started;
   std::function<void(const std::string& stage, double seconds)> stage_finished;
-  std::function<void(const std::string& text)> progress;  // one line of progress, no newline
-  std::function<void(const std::string& text)> warning;   // one line, no newline
+  std::function<void(const LoadProgress& load)> load_solved;
+  std::function<void(const std::string& text)> warning;  // one line, no newline
 
   void started(const std::string& stage) const {
     if (stage_started) stage_started(stage);
@@ -20,15 +32,25 @@ struct RunObserver {
   void finished(const std::string& stage, double seconds) const {
     if (stage_finished) stage_finished(stage, seconds);
   }
-  void say(const std::string& text) const {
-    if (progress) progress(text);
+  void solved(const LoadProgress& load) const {
+    if (load_solved) load_solved(load);
   }
   void warn(const std::string& text) const {
     if (warning) warning(text);
   }
 };
 
-// Long stages report progress after this many seconds (shorter ones say nothing).
+// Without --progress, the terminal hears of a stage only once it has run this long (short runs say nothing).
 inline constexpr double kProgressAfterSeconds = 2;
+
+// A stage's name up to its settings in parentheses: "bem (active_set, periodic, ...)" -> "bem"; the whole
+// name is in the report's "Stages that ran".
+std::string stage_label(const std::string& stage);
+
+// "bem 256 x 256: load 3/12 (25 %), P/(E* A0) = 0.005, 142 iterations in 1.3 s": one short line, no newline.
+std::string progress_line(const LoadProgress& load);
+
+// "surface: done in 1.3 s".
+std::string stage_done_line(const std::string& stage, double seconds);
 
 }  // namespace contactbench

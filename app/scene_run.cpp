@@ -93,7 +93,8 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
                                     .surface = surface,
                                     .moments = report.moments,
                                     .key = "methods." + m.label,
-                                    .problems = problems});
+                                    .problems = problems,
+                                    .fields_folder = options.fields_folder});
   }
   // A BEM stage the runner cannot do (e.g. an option the distributed solver lacks) is refused here, before
   // any work, with the reason: never run with another solver than the scene says.
@@ -106,7 +107,10 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
         problems.add(0, "methods." + scene.methods[m].label, refusal);
   problems.throw_if_any();
 
-  const StageContext context{.threads = options.threads, .observer = &observer, .stage_runner = &runner};
+  const StageContext context{.threads = options.threads,
+                             .observer = &observer,
+                             .stage_runner = &runner,
+                             .fields_folder = options.fields_folder};
   std::vector<SweepProducts> sweeps(plan.sweeps.size());
   for (std::size_t s = 0; s < plan.sweeps.size(); ++s)
     run_stage(report, observer, plan.sweeps[s].name(),

@@ -60,6 +60,10 @@ struct RunOptions {
   int threads = 1;
   const RunObserver* observer = nullptr;  // stages, progress and warnings; null: quiet
   const StageRunner* runner = nullptr;    // where the heavy stages run; null: this process
+  // Where a scene's `fields` (a relative prefix) are written: the run's output folder, or the folder whose
+  // files are moved there (app/run_command.cpp). Empty: prefixes are paths as given (relative to the working
+  // directory), as `contactbench bem --fields` has them.
+  std::filesystem::path fields_folder = {};
 };
 
 // Throws SceneError listing every problem the preflights found (then no sweep, solve or theory has run).

@@ -3,8 +3,8 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
-#include <sstream>
 
+#include "contactbench/app/load_fields.hpp"
 #include "contactbench/app/stage_runner.hpp"
 #include "contactbench/app/stages.hpp"
 #include "contactbench/bem/contact_stiffness.hpp"
@@ -50,10 +50,12 @@ class SerialRunner final : public StageRunner {
     SolvedLoads done;
     for (std::size_t k = 0; k < mean_pressures.size(); ++k) {
       ContactSolution solution;
+      HeightMap attraction;  // a = p - t of an adhesive state, for its fields
       if (adhesive) {
         const AdhesiveSolution& state = adhesive->solve(mean_pressures[k]);
         solution = state.contact();
         done.adhesive.push_back(state.adhesive());
+        if (!fields.empty()) attraction = state.pressure - state.traction;
       } else {
         solution = solver->solve(mean_pressures[k]);
       }
@@ -69,18 +71,22 @@ class SerialRunner final : public StageRunner {
         done.stiffness.push_back(response.converged ? response.stiffness : std::nan(""));
       }
       if (!fields.empty()) {  // as each load is solved, so that a long run leaves what it has done
-        write_surface(field_path(fields, k + 1, "pressure"), Surface(solved.grid(), solution.pressure));
-        write_surface(field_path(fields, k + 1, "gap"), Surface(solved.grid(), solution.gap));
+        write_load_fields(fields, k + 1, solved.grid(),
+                          {.pressure = &solution.pressure,
+                           .gap = &solution.gap,
+                           .attraction = adhesive ? &attraction : nullptr},
+                          [&](const std::string& text) { observer.warn(text); });
       }
       solution.pressure.resize(0, 0);
       solution.gap.resize(0, 0);
-      if (std::chrono::duration<double>(Clock::now() - start).count() > kProgressAfterSeconds) {
-        std::ostringstream line;
-        line << name << ": " << solved.grid().nx << " x " << solved.grid().ny << ": load " << k + 1 << " of "
-             << mean_pressures.size() << " (P/(E* A0) = " << mean_pressures[k] / estar
-             << "): " << solution.iterations << " iterations, " << solution.seconds << " s";
-        observer.say(line.str());
-      }
+      observer.solved({.stage = stage_label(name) + " " + std::to_string(solved.grid().nx) + " x " +
+                                std::to_string(solved.grid().ny),
+                       .load = k + 1,
+                       .loads = mean_pressures.size(),
+                       .load_value = mean_pressures[k] / estar,
+                       .iterations = static_cast<long long>(solution.iterations),
+                       .seconds = solution.seconds,
+                       .stage_seconds = std::chrono::duration<double>(Clock::now() - start).count()});
       done.solutions.push_back(std::move(solution));
     }
     // The residual topography: the surface as the path left it (its plastic flow kept), heights from the

@@ -122,8 +122,14 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
   for (const Real load : stage.load_path)
     path_pressures.push_back(load * estar);
   const std::vector<Real>& solved_pressures = stage.load_path.empty() ? mean_pressures : path_pressures;
-  SolvedLoads loads = context.runner().solve_loads(stage, solved, estar, solved_pressures, connectivities,
-                                                   stage.settings.fields, context);
+  std::string fields = stage.settings.fields;
+  if (!fields.empty() && !context.fields_folder.empty()) {  // inside the run's output folder
+    const std::filesystem::path prefix = context.fields_folder / fields;
+    std::filesystem::create_directories(prefix.parent_path());
+    fields = prefix.string();
+  }
+  SolvedLoads loads =
+      context.runner().solve_loads(stage, solved, estar, solved_pressures, connectivities, fields, context);
   products.solutions = std::move(loads.solutions);
   products.statistics = std::move(loads.statistics);
   products.adhesive = std::move(loads.adhesive);

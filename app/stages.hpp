@@ -4,6 +4,7 @@
 // its products. Running them reports through the run's observer (app/run_observer.hpp) and nothing else.
 #pragma once
 
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <set>
@@ -92,6 +93,7 @@ struct StageContext {
   int threads = 1;
   const RunObserver* observer = nullptr;      // may be null: quiet
   const StageRunner* stage_runner = nullptr;  // where the stages run; null: this process
+  std::filesystem::path fields_folder = {};   // RunOptions::fields_folder
   const StageRunner& runner() const;
 };
 

@@ -21,6 +21,7 @@ struct SweepOptions {
   std::optional<int> connectivity;
   std::string out;
   int threads = 1;
+  bool progress = false;  // --progress (app/cli.hpp terminal_observer)
 };
 
 const FlagNames kFlags = {{"surface.file", "FILE"},
@@ -52,7 +53,7 @@ void run_sweep(const SweepOptions& o, const CommandContext& context) {
   const std::string command = "contactbench sweep";
   if (!o.out.empty()) check_output_file(o.out, o.topography.file, "--out");
   const Scene scene = scene_from_flags(scene_of(o), command, kFlags);
-  const RunObserver observer = terminal_observer(command);
+  const RunObserver observer = terminal_observer(command, o.progress);
   SceneReport report;
   try {
     report = run_scene(scene, {.threads = o.threads, .observer = &observer, .runner = context.runner});
@@ -83,6 +84,7 @@ void add_sweep_command(CLI::App& parent, const CommandContext& context) {
   command->add_option("--out", options->out, "CSV file (default: standard output)")
       ->check(refuse_empty_output_name);
   add_threads_option(*command, options->threads);
+  add_progress_option(*command, options->progress);
   command->callback([options, &context] { run_sweep(*options, context); });
 }
 

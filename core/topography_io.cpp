@@ -156,6 +156,18 @@ TopographyReading read_topography_reading(const std::filesystem::path& path,
                            options.fill,       options.level, "m",      crop,       options.align_rows};
 }
 
+Field read_field(const std::filesystem::path& path) {
+  const std::string content = read_whole_file(path);
+  formats::check_is_text(path, content);
+  const std::vector<formats::Line> lines = formats::non_blank_lines(content);
+  if (lines.empty() || !lines.front().text.starts_with(formats::project_prefix))
+    throw InputError(path, lines.empty() ? 0 : lines.front().number,
+                     "is not a field file of contactbench (first line " +
+                         std::string(formats::project_magic) +
+                         "); fields are written by `contactbench bem --fields` and a scene's `fields` key");
+  return formats::read_project_field(path, lines);
+}
+
 Surface read_topography(const std::filesystem::path& path, const TopographyReadOptions& options) {
   return read_topography_reading(path, options).surface;
 }

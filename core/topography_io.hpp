@@ -107,6 +107,23 @@ TopographyFormat detect_topography_format(const std::filesystem::path& path);
 // Written to a temporary file and renamed.
 void write_surface(const std::filesystem::path& path, const Surface& surface);
 
+// A map of one quantity on a surface's grid (a solution's pressure, gap, contact set), as a field file holds
+// it: the values in `unit` (no scaling), on `values.grid()`.
+struct Field {
+  Surface values;
+  std::string quantity;  // "pressure", "gap", "contact", ...; "height" for a surface file
+  std::string unit;      // "Pa", "m", "1"
+};
+
+// Writes a field in the project's format: the header adds quantity=<quantity> and says its unit (a pressure
+// field unit=Pa, not metres); values printed as write_surface prints heights (lossless). read_topography
+// reads a field in metres (the gap) as heights and refuses any other with the command that draws it.
+void write_field(const std::filesystem::path& path, const Field& field);
+
+// Reads a field file (or a project surface file, as quantity "height" in m). InputError naming the file and
+// line for anything else.
+Field read_field(const std::filesystem::path& path);
+
 // The extensions write_topography writes, with what each holds: ".x3p (ISO 25178-72, float64), ...".
 std::string writable_topography_extensions();
 

@@ -468,7 +468,10 @@ TEST_F(BemCommand, HardnessFloatAndFields) {
     EXPECT_EQ(table[k].at("converged"), "1");
     EXPECT_LE(number(k, "max_pressure"), 2e9 * (1 + 1e-6));
     // The fields of row k (the loads in increasing order), read back with their grid.
-    const Surface pressure = read_topography(prefix + "_load" + std::to_string(k + 1) + "_pressure.txt");
+    // The pressure field says its unit (Pa), so it reads as a field, not as heights.
+    const Field pressure_field = read_field(prefix + "_load" + std::to_string(k + 1) + "_pressure.txt");
+    EXPECT_EQ(pressure_field.unit, "Pa");
+    const Surface& pressure = pressure_field.values;
     const Surface gap = read_topography(prefix + "_load" + std::to_string(k + 1) + "_gap.txt");
     EXPECT_EQ(pressure.grid().nx, 64);
     EXPECT_TRUE(pressure.grid().periodic);

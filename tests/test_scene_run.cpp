@@ -271,7 +271,7 @@ method = "gw_mccool"
   for (const std::string& row : {std::string("| hertz (Hertz-consistent plateaus, this project) |"),
                                  std::string("| gw (elastic: ignores hardness) |")})
     EXPECT_NE(table.str().find(row), std::string::npos) << row << " in\n" << table.str();
-  EXPECT_NE(plot.str().find("title 'gw (elastic: ignores hardness)'"), std::string::npos) << plot.str();
+  EXPECT_NE(plot.str().find("title \"gw (elastic: ignores hardness)\""), std::string::npos) << plot.str();
   EXPECT_NE(table.str().find("(not converged)"), std::string::npos) << table.str();
   EXPECT_EQ(unconverged_loads(report.methods[2].curve), (std::vector<std::size_t>{1}));
 }
@@ -411,7 +411,8 @@ ignore = ["hardness"]
       << summary.str();
   EXPECT_NE(summary.str().find("\"ignored_effects\": [\"hardness\"]"), std::string::npos) << summary.str();
   EXPECT_NE(summary.str().find("\"interface\": {"), std::string::npos) << "the scene as understood";
-  EXPECT_NE(plot.str().find("title 'persson (elastic: ignores hardness)'"), std::string::npos) << plot.str();
+  EXPECT_NE(plot.str().find("title \"persson (elastic: ignores hardness)\""), std::string::npos)
+      << plot.str();
 }
 
 // Adhesion on the scene: the BEM solves it and says what it adds per load; a BEM that ignores it runs without

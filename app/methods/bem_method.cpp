@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 
+#include "contactbench/app/load_fields.hpp"
 #include "contactbench/app/methods/bem_settings.hpp"
 #include "contactbench/app/methods/method.hpp"
 #include "contactbench/app/methods/refine_key.hpp"
@@ -102,9 +103,10 @@ class BemMethod final : public Method {
     settings_ = default_settings(bem_settings());
     const std::vector<std::string> given = read_settings(s, bem_settings(), settings_);
     settings_.refine = read_refine_key(s, context, settings_.refine);
-    // Relative to the scene file's folder, as the surface file is; stored resolved.
+    // Stored as written: `contactbench run` writes it inside the output folder (RunOptions::fields_folder),
+    // `contactbench bem --fields` where the path says.
     if (const auto fields = s.string("fields", false, find_setting(bem_settings(), "fields")->accepted))
-      settings_.fields = (context.folder / *fields).lexically_normal().string();
+      settings_.fields = *fields;
     if (const auto residual = s.string("residual_topography", false,
                                        find_setting(bem_settings(), "residual_topography")->accepted))
       settings_.residual_topography = (context.folder / *residual).lexically_normal().string();
@@ -135,12 +137,21 @@ class BemMethod final : public Method {
   void preflight(const MethodCheck& check) const override {
     const bool path = !check.scene.load_path.empty();
     const std::size_t solves = path ? check.scene.load_path.size() : check.scene.loads.size();
-    if (!settings_.fields.empty()) {
+    if (!settings_.fields.empty() && !check.fields_folder.empty()) {
+      // Inside the run's output folder, which the run makes new: a relative prefix that stays inside it.
+      const std::filesystem::path prefix(settings_.fields);
+      const bool inside =
+          prefix.is_relative() && prefix.has_filename() &&
+          std::none_of(prefix.begin(), prefix.end(), [](const auto& part) { return part == ".."; });
+      if (!inside)
+        check.problem("fields", "'" + settings_.fields + "' leaves the run's output folder",
+                      "a relative prefix inside the output folder, such as \"fields\" or \"maps/surface\"");
+    } else if (!settings_.fields.empty()) {
       // Field files are never written over a device, a link or a folder (app/output.hpp).
       try {
         check_output_prefix(settings_.fields, "fields");
         for (std::size_t k = 0; k < solves; ++k)
-          for (const char* field : {"pressure", "gap"})
+          for (const char* field : field_quantities(check.interface.adhesion.has_value()))
             check_replaceable_file(field_path(settings_.fields, k + 1, field));
       } catch (const Error& e) {
         check.problem("fields", e.what(), "a prefix of new or regular files in an existing folder");

@@ -89,11 +89,11 @@ SettingTable<BemSettings> make_table() {
   table.push_back(bind(
       Row{.key = "fields",
           .kind = SettingKind::text,
-          .accepted = "a path prefix (relative: to the scene file's folder)",
+          .accepted = "a relative path prefix inside the run's output folder (`bem --fields`: any path)",
           .default_text = "none",
           .doc =
-              "write the pressure [Pa] and gap [m] of the k-th load to `<prefix>_load<k>_pressure.txt` and "
-              "`_gap.txt`",
+              "write the pressure [Pa], gap [m] and contact set (with adhesion also the attraction [Pa]) of "
+              "the k-th load to `<prefix>_load<k>_<quantity>.txt`, each with its PNG and SVG map",
           .flag = {"--fields"},
           .distributed = true,
           .owner_reads = true},

@@ -59,6 +59,8 @@ struct MethodCheck {
   const SpectralMoments& moments;
   std::string key;  // "methods.<label>"
   Problems& problems;
+  // RunOptions::fields_folder: where a relative `fields` prefix lands (empty: the working directory).
+  std::filesystem::path fields_folder = {};
   void problem(std::string_view key_suffix, std::string_view reason, std::string_view accepted = {}) const;
 };
 

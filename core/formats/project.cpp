@@ -16,8 +16,18 @@ namespace contactbench::formats {
 
 namespace fs = std::filesystem;
 
-Surface read_project(const fs::path& path, std::span<const Line> lines,
-                     const TopographyReadOptions& options) {
+namespace {
+
+// The project format's values with the quantity and unit its header names: heights (no quantity, unit=m)
+// or a field (quantity=pressure unit=Pa, quantity=gap unit=m, ...), written by write_surface / write_field.
+struct ProjectValues {
+  Surface values;
+  std::string quantity;  // empty: heights
+  std::string unit;
+};
+
+ProjectValues read_project_values(const fs::path& path, std::span<const Line> lines,
+                                  const TopographyReadOptions& options) {
   const Line& magic = lines.front();
   if (magic.text != project_magic)
     throw InputError(path, magic.number,
@@ -28,7 +38,7 @@ Surface read_project(const fs::path& path, std::span<const Line> lines,
         path, magic.number,
         "the project format needs a second line '# nx=... ny=... lx=... ly=... periodic=... unit=m'");
   const Line& header = lines[1];
-  HeaderEntry nx, ny, lx, ly, periodic, unit;
+  HeaderEntry nx, ny, lx, ly, periodic, unit, quantity;
   for (const std::string_view token : split_tokens(header.text.substr(1), is_blank)) {
     const std::size_t equals = token.find('=');
     if (equals == token.npos)
@@ -41,17 +51,19 @@ Surface read_project(const fs::path& path, std::span<const Line> lines,
                          : key == "ly"       ? &ly
                          : key == "periodic" ? &periodic
                          : key == "unit"     ? &unit
+                         : key == "quantity" ? &quantity
                                              : nullptr;
     if (entry == nullptr)
       throw InputError(path, header.number,
-                       "unknown header key " + quoted(key) + "; expected nx, ny, lx, ly, periodic, unit");
+                       "unknown header key " + quoted(key) +
+                           "; expected nx, ny, lx, ly, periodic, unit (and quantity, in a field file)");
     store_entry(path, header, key, value, *entry);
   }
   for (const auto& [key, entry] :
        {std::pair{"nx", nx}, std::pair{"ny", ny}, std::pair{"lx", lx}, std::pair{"ly", ly},
         std::pair{"periodic", periodic}, std::pair{"unit", unit}})
     if (entry.line == 0) throw InputError(path, header.number, "header has no " + std::string(key) + "=");
-  if (unit.value != "m")
+  if (quantity.line == 0 && unit.value != "m")
     throw InputError(path, header.number,
                      "the project format stores metres (unit=m), got unit=" + quoted(unit.value));
   if (periodic.value != "true" && periodic.value != "false")
@@ -73,8 +85,29 @@ Surface read_project(const fs::path& path, std::span<const Line> lines,
                                "nx=" + std::to_string(columns) + where, header.number};
   // Scale 1: multiplying by 1.0 is exact, so the heights stay bit for bit what was written.
   DataBlock block = parse_data(path, lines.subspan(2), 1.0, promised, " after the header");
-  return make_surface(std::move(block), *size_x, *size_y,
-                      options.periodic.value_or(periodic.value == "true"));
+  return {
+      make_surface(std::move(block), *size_x, *size_y, options.periodic.value_or(periodic.value == "true")),
+      std::string(quantity.value), std::string(unit.value)};
+}
+
+}  // namespace
+
+Surface read_project(const fs::path& path, std::span<const Line> lines,
+                     const TopographyReadOptions& options) {
+  ProjectValues read = read_project_values(path, lines, options);
+  // A field in metres (the gap) reads as heights; any other is not a surface.
+  if (read.unit != "m")
+    throw InputError(
+        path, 2,
+        "is a " + read.quantity + " field [" + read.unit +
+            "] written by contactbench, not heights in metres; draw it with `contactbench plot " +
+            path.string() + "`");
+  return std::move(read.values);
+}
+
+Field read_project_field(const fs::path& path, std::span<const Line> lines) {
+  ProjectValues read = read_project_values(path, lines, {});
+  return {std::move(read.values), read.quantity.empty() ? "height" : read.quantity, read.unit};
 }
 
 }  // namespace contactbench::formats

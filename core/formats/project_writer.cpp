@@ -1,10 +1,13 @@
 // Writing the project's text format (docs/formats.md "The text formats"): read_project returns the same
 // doubles.
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <string>
 
 #include "contactbench/core/atomic_file.hpp"
+#include "contactbench/core/error.hpp"
 #include "contactbench/core/formats/text_readers.hpp"
 #include "contactbench/core/formats/text_values.hpp"
 #include "contactbench/core/topography_io.hpp"
@@ -26,12 +29,17 @@ void append_row(std::string& text, const HeightMap& heights, Index row) {
 
 }  // namespace
 
-void write_surface(const std::filesystem::path& path, const Surface& surface) {
+namespace {
+
+// The header and rows; `quantity` empty for heights (the header then has no quantity key).
+void write_values(const std::filesystem::path& path, const Surface& surface, const std::string& quantity,
+                  const std::string& unit) {
   const Grid& grid = surface.grid();
   const std::string header = std::string(formats::project_magic) + "\n# nx=" + std::to_string(grid.nx) +
                              " ny=" + std::to_string(grid.ny) + " lx=" + formats::format_real(grid.lx) +
                              " ly=" + formats::format_real(grid.ly) +
-                             " periodic=" + (grid.periodic ? "true" : "false") + " unit=m\n";
+                             " periodic=" + (grid.periodic ? "true" : "false") +
+                             (quantity.empty() ? "" : " quantity=" + quantity) + " unit=" + unit + "\n";
   write_file_atomically(path, [&](std::ostream& out) {
     out.write(header.data(), static_cast<std::streamsize>(header.size()));
     // Row by row: a large surface never needs its whole text in memory.
@@ -42,6 +50,26 @@ void write_surface(const std::filesystem::path& path, const Surface& surface) {
       out.write(row_text.data(), static_cast<std::streamsize>(row_text.size()));
     }
   });
+}
+
+// A header value is one token of letters, digits and underscores (the reader splits at blanks and '=').
+void check_token(const std::string& what, const std::string& value) {
+  const bool plain = !value.empty() && std::all_of(value.begin(), value.end(), [](unsigned char c) {
+    return std::isalnum(c) || c == '_' || c == '*' || c == '/';
+  });
+  if (!plain) throw Error("write_field: the " + what + " '" + value + "' is not one plain word");
+}
+
+}  // namespace
+
+void write_surface(const std::filesystem::path& path, const Surface& surface) {
+  write_values(path, surface, "", "m");
+}
+
+void write_field(const std::filesystem::path& path, const Field& field) {
+  check_token("quantity", field.quantity);
+  check_token("unit", field.unit);
+  write_values(path, field.values, field.quantity, field.unit);
 }
 
 }  // namespace contactbench

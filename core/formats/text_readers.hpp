@@ -21,6 +21,9 @@ inline constexpr std::string_view project_prefix = "# contactbench surface";
 
 Surface read_project(const std::filesystem::path& path, std::span<const Line> lines,
                      const TopographyReadOptions& options);
+// A field file of the project's format (write_field): its values as they are, with quantity and unit; a
+// surface file reads as quantity "height", unit "m".
+Field read_project_field(const std::filesystem::path& path, std::span<const Line> lines);
 Surface read_interferometer(const std::filesystem::path& path, std::span<const Line> lines,
                             const TopographyReadOptions& options);
 Surface read_gwyddion(const std::filesystem::path& path, std::span<const Line> lines,

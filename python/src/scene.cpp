@@ -35,7 +35,7 @@ struct ReportMethod {
 
 SceneReport run(const Scene& scene, int threads, bool progress) {
   checked_threads(threads);
-  const RunObserver observer = terminal_observer("contactbench (python)");
+  const RunObserver observer = terminal_observer("contactbench (python)", progress);
   py::gil_scoped_release unlocked;
   return run_scene(scene, {.threads = threads, .observer = progress ? &observer : nullptr});
 }

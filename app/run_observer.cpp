@@ -1,0 +1,37 @@
+#include "contactbench/app/run_observer.hpp"
+
+#include <sstream>
+
+namespace contactbench {
+
+namespace {
+
+// Seconds as a person reads them: 3 significant digits.
+std::string seconds_text(double seconds) {
+  std::ostringstream text;
+  text.precision(3);
+  text << seconds << " s";
+  return text.str();
+}
+
+}  // namespace
+
+std::string stage_label(const std::string& stage) {
+  const std::size_t settings = stage.find(" (");
+  return settings == std::string::npos ? stage : stage.substr(0, settings);
+}
+
+std::string progress_line(const LoadProgress& load) {
+  std::ostringstream line;
+  const auto percent = load.loads == 0 ? 0 : (100 * load.load) / load.loads;
+  line << load.stage << ": load " << load.load << "/" << load.loads << " (" << percent << " %), P/(E* A0) = ";
+  line.precision(4);
+  line << load.load_value << ", " << load.iterations << " iterations in " << seconds_text(load.seconds);
+  return line.str();
+}
+
+std::string stage_done_line(const std::string& stage, double seconds) {
+  return stage_label(stage) + ": done in " + seconds_text(seconds);
+}
+
+}  // namespace contactbench
