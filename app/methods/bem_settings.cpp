@@ -168,7 +168,8 @@ SettingTable<BemSettings> make_table() {
           .accepted = "`\"gci3\"`, `\"gci2\"`",
           .default_value = std::string("gci3"),
           .doc =
-              "with `extrapolate = true`, the error bar `area_fraction_error` of the reference's area "
+              "with `extrapolate = true` (unused without it), the error bar `area_fraction_error` of the "
+              "reference's area "
               "(docs/solvers.md \"Error bar of the reference\"): `\"gci3\"` Roache's grid convergence index "
               "from three grids, the observed order (at most 1) and the factor 1.25, or 3 when the order is "
               "more than 10 % off 1 (a third solve: on half the points a "
@@ -226,9 +227,6 @@ void finish_bem_settings(
       problem("tolerance", "out of range: got " + exact_number(settings.solver.tolerance),
               "a number in [1e-06, 0.01] (single precision cannot resolve less)");
   }
-  if (was_given("error_estimate") && !settings.extrapolate)
-    problem("error_estimate", "the error bar is made from the grids of extrapolate = true, which is false",
-            "extrapolate = true with error_estimate, or no error_estimate");
   if (settings.node_area && settings.extrapolate)
     problem("area", "area = \"nodes\" and extrapolate = true ask for two different compared areas",
             "area = \"corrected\" (the default) with extrapolate = true, or extrapolate = false");

@@ -252,10 +252,12 @@ def main():
             r["family"], r["seed"] + 100, r["load"], r["value"], r["bar"],
             r["truth"], r["error"] / r["bar"] if r["bar"] > 0 else math.inf, r["order"]))
     md += ["", "![true error against the estimate](estimate.png)", "",
-           "Solves: {:.0f} s{}.".format(elapsed, " (read back from raw.csv)" if args.reuse else ""), "",
+           ("Solves read back from raw.csv (its first line: the commit and date they were made at)." if args.reuse
+            else "Solves: {:.0f} s.".format(elapsed)), "",
            "Made by `PYTHONPATH=build/release/python /usr/bin/python3 scripts/studies/error_bar.py --threads {} "
-           "--base {} --truth {} --seeds {}` ({}, {} threads).".format(args.threads, args.base, args.truth,
-                                                                      args.seeds, stamp(), args.threads), ""]
+           "--base {} --truth {} --seeds {}{}` ({}, {} threads).".format(
+               args.threads, args.base, args.truth, args.seeds, " --reuse" if args.reuse else "", stamp(),
+               args.threads), ""]
     write_atomically(os.path.join(OUT, "table.md"), "\n".join(md))
     csv = ["# error_bar study: scripts/studies/error_bar.py ({})".format(stamp()),
            "family,seed,load,estimate,value,bar,order,truth,truth_uncertainty,truth_order,true_error,covered"]
