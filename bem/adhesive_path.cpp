@@ -8,6 +8,12 @@
 
 namespace contactbench {
 
+namespace {
+// Two states at one separation are the same when their loads differ by less than this fraction of the path's
+// load range: far above the solver's tolerance, far below a jump's change of load.
+constexpr Real kSameLoad = 1e-3;
+}  // namespace
+
 AdhesivePath approach_retract(AdhesiveBemSolver& solver, const AdhesivePathOptions& options) {
   const auto& [start, turn, steps, jump_fraction] = options;
   if (!std::isfinite(start) || !std::isfinite(turn) || !(turn < start) || steps < 2 || !(jump_fraction > 0)) {
@@ -56,8 +62,23 @@ AdhesivePath approach_retract(AdhesiveBemSolver& solver, const AdhesivePathOptio
     lowest = std::min(lowest, after.energy);
     highest = std::max(highest, after.energy);
   }
+  // A jump leaves the two legs in different states at the same separation (the hysteresis); a step traversed
+  // the same way down and up released nothing, whatever its trapezoid error (a coarse step over a steep
+  // rise of the load misjudges the work both ways, with opposite signs). The legs share their separations:
+  // state k of the approach and state 2 steps - k of the retract.
+  Real least_load = 0, most_load = 0;
+  for (const AdhesivePathState& s : states) {
+    least_load = std::min(least_load, s.mean_pressure);
+    most_load = std::max(most_load, s.mean_pressure);
+  }
+  const std::size_t last = states.size() - 1;
+  const auto legs_differ = [&](std::size_t k) {
+    return std::abs(states[k].mean_pressure - states[last - k].mean_pressure) >
+           kSameLoad * (most_load - least_load);
+  };
   for (std::size_t k = 1; k < states.size(); ++k) {
     if (!(released[k] > jump_fraction * (highest - lowest))) continue;
+    if (!legs_differ(k - 1) && !legs_differ(k)) continue;
     const AdhesivePathState &before = states[k - 1], &after = states[k];
     path.jumps.push_back({.into_contact = after.approaching,
                           .after = static_cast<Index>(k),

@@ -8,7 +8,10 @@
 // falls by the work the load does, ΔU = -∫ P/A0 dd (trapezoid rule over the step, error O(Δd^3)); at a jump
 // the state changes at fixed d and releases energy that no load did. A step is a jump when that released
 // energy, -(ΔU + trapezoid), exceeds `jump_fraction` of the path's energy range (max U - min U): the steps of
-// a continuous branch release only the trapezoid's error, a jump a share of the hysteresis.
+// a continuous branch release only the trapezoid's error, a jump a share of the hysteresis. And a jump leaves
+// the legs in different states at one separation: a step whose ends the other leg passes through with the
+// same loads (to 1e-3 of the load range) is no jump, however coarse (its trapezoid error, of opposite sign on
+// the way back, can exceed the threshold).
 // Summed over a closed cycle the released energies are the hysteresis: the work the machine does around the
 // cycle, -∮ P/A0 dd (tests/test_adhesive_path.cpp checks the two agree).
 #pragma once
