@@ -84,8 +84,7 @@ std::string BemStage::name() const {
 
 bool BemStage::operator==(const BemStage& other) const {
   return periodic == other.periodic && hardness == other.hardness && adhesion == other.adhesion &&
-         load_path == other.load_path &&
-         stiffness == other.stiffness &&
+         load_path == other.load_path && stiffness == other.stiffness &&
          same_settings(bem_settings(), SettingScope::solve, settings, other.settings);
 }
 

@@ -23,7 +23,7 @@ struct BemSettings {
   BemSolverOptions solver = {};  // tolerance, iteration cap, precision, iteration (hardness: the interface's)
   std::string fields;            // prefix of per-load pressure and gap files; empty: none written
   std::string residual_topography;  // the surface after the load path, written there; empty: not written
-  bool extrapolate = false;      // solve again on twice the points a side (docs/theory.md section 9)
+  bool extrapolate = false;         // solve again on twice the points a side (docs/theory.md section 9)
   ErrorEstimate error_estimate = ErrorEstimate::gci3;  // the error bar's grids (with extrapolate)
   int connectivity = 4;                                // for counting contact spots
   bool node_area = false;  // area = "nodes": compared by the node count (a node-based FE model's area)
