@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Renders a Google Benchmark JSON of contactbench (bench_labelling, bench_sweep, bench_bem or
-bench_bem_solvers, bench_bem_adhesion) as Markdown tables.
+bench_bem_solvers, bench_bem_adhesion, bench_fill) as Markdown tables.
 
 Medians of the repetitions, in milliseconds, and ratios to the references measured in the same run.
 Usage: render_bench.py results/bench/labelling.json > results/bench/labelling.md
@@ -372,11 +372,39 @@ def bem_adhesion(data):
     return lines
 
 
+def fill(data):
+    """bench_fill: the harmonic fill of invalid points against one memory pass over the same grid."""
+    rows = median_rows(data)
+    passes = {int(parse(n)[1]["n"]): r for n, r in rows.items() if n.startswith("fill/memory_pass/")}
+    lines = header(data, "The harmonic fill of invalid points", "scripts/bench.sh fill")
+    lines.append("The multigrid-preconditioned conjugate gradient (core/formats/harmonic_fill.cpp, one thread) on holes "
+                 "of four shapes (bench/bench_fill.cpp): random_half, each point invalid with probability 1/2; "
+                 "half_plane, the left half; squares_64, a checkerboard of 64-pixel squares; sparse_valid, 97 % "
+                 "invalid. Memory pass: one read and write of the grid on 2 threads, the floor. Medians of the "
+                 "repetitions, wall time.")
+    lines.append("")
+    lines.append("| holes | n | unknowns | iterations | levels | fill [ms] | memory pass [ms] | fill / memory pass "
+                 "| ns per unknown |")
+    lines.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+    fills = [(n.split("/")[2], int(parse(n)[1]["n"]), r) for n, r in rows.items() if n.startswith("fill/harmonic/")]
+    scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
+    for holes, n, r in sorted(fills, key=lambda item: (item[0], item[1])):
+        ms = r["real_time"] * scale[r["time_unit"]]
+        floor = passes.get(n)
+        floor_ms = floor["real_time"] * scale[floor["time_unit"]] if floor else None
+        lines.append(f"| {holes} | {n} | {r['unknowns']:.0f} | {r['iterations']:.0f} | {r['levels']:.0f} | {fmt(ms)} "
+                     f"| {fmt(floor_ms)} | {fmt(ms / floor_ms if floor_ms else None)} "
+                     f"| {fmt(ms * 1e6 / r['unknowns'])} |")
+    return lines
+
+
 def main():
     with open(sys.argv[1]) as f:
         data = json.load(f)
     names = [b["name"] for b in data["benchmarks"]]
-    if names and names[0].startswith("bem_adhesion/"):
+    if names and names[0].startswith("fill/"):
+        lines = fill(data)
+    elif names and names[0].startswith("bem_adhesion/"):
         lines = bem_adhesion(data)
     elif names and names[0].startswith("labelling/"):
         lines = labelling(data)

@@ -38,8 +38,8 @@ const std::vector<std::string_view>& fill_method_names();
 const std::vector<std::string_view>& levelling_names();
 
 // The most invalid points the harmonic fill takes (core/formats/harmonic_fill.hpp): its cost grows like the
-// count (docs/formats.md: about 0.3 s per million points and 200 bytes a point), so this bound (a 2048^2 grid
-// all but unmeasured: a few seconds, under 1 GB) keeps a fill from running unseen for minutes; more are
+// count (docs/formats.md: 1 to 2 s per million points and about 200 bytes a point), so this bound (a 2048^2
+// grid all but unmeasured: about 6 s, under 1 GB) keeps a fill from running unseen for minutes; more are
 // refused, with the ways out.
 inline constexpr Index kMaxHarmonicFillPoints = Index{1} << 22;
 
