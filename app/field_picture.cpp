@@ -6,36 +6,13 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "contactbench/app/gnuplot_text.hpp"
 #include "contactbench/core/atomic_file.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench {
 
 namespace {
-
-// A path inside single quotes for the shell: a quote in it becomes '\''.
-std::string shell_quote(const std::string& text) {
-  std::string quoted = "'";
-  for (const char ch : text)
-    quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  return quoted + "'";
-}
-
-// Text inside gnuplot's single quotes, where a quote is written twice.
-std::string gnuplot_quote(const std::string& text) {
-  std::string quoted = "'";
-  for (const char ch : text)
-    quoted += ch == '\'' ? std::string("''") : std::string(1, ch);
-  return quoted + "'";
-}
-
-// A number as gnuplot reads it back exactly enough for a scale (17 significant digits).
-std::string number(double value) {
-  std::ostringstream text;
-  text.precision(17);
-  text << value;
-  return text.str();
-}
 
 bool is_contact_set(const Field& field) {
   return field.quantity == "contact";
@@ -59,12 +36,13 @@ void write_map(std::ostream& out, const Field& field, const std::string& data, c
   const double dy = grid.ly / static_cast<double>(grid.ny) * lateral.factor;
   out << "set title " << gnuplot_quote(title) << "\n";
   out << "set size ratio -1\nunset key\nset tics out\n";
-  out << "set xrange [0:" << number(grid.nx * dx) << "]\nset yrange [0:" << number(grid.ny * dy) << "]\n";
+  out << "set xrange [0:" << gnuplot_number(grid.nx * dx)
+      << "]\nset yrange [0:" << gnuplot_number(grid.ny * dy) << "]\n";
   out << "set xlabel " << gnuplot_quote("x [" + lateral.label + "]") << "\nset ylabel "
       << gnuplot_quote("y [" + lateral.label + "]") << "\n";
   // Pixel (column i, row j) covers [i dx, (i+1) dx] x [j dy, (j+1) dy]: gnuplot's matrix gives i as $1, j
   // as $2 and draws an image pixel centred on the point given.
-  const std::string where = "(($1+0.5)*" + number(dx) + "):(($2+0.5)*" + number(dy) + ")";
+  const std::string where = "(($1+0.5)*" + gnuplot_number(dx) + "):(($2+0.5)*" + gnuplot_number(dy) + ")";
   if (is_contact_set(field)) {
     // One flat colour per class (maxcolors): the attractive zone only when the file has one.
     const bool attraction = field.values.heights().maxCoeff() > 1;
@@ -80,10 +58,11 @@ void write_map(std::ostream& out, const Field& field, const std::string& data, c
   // Viridis (perceptually uniform, readable in grey): eight of its stops.
   out << "set palette defined (0 '#440154', 1 '#46327e', 2 '#365c8d', 3 '#277f8e', 4 '#1fa187', 5 '#4ac16d', "
          "6 '#a0da39', 7 '#fde725')\n";
-  out << "set cbrange [" << number(scale.low) << ":" << number(scale.high) << "]\nset cbtics auto\n";
+  out << "set cbrange [" << gnuplot_number(scale.low) << ":" << gnuplot_number(scale.high)
+      << "]\nset cbtics auto\n";
   out << "set cblabel " << gnuplot_quote(symbol(field.quantity) + " [" + scale.unit.label + "]") << "\n";
-  out << "plot " << gnuplot_quote(data) << " matrix using " << where << ":($3*" << number(scale.unit.factor)
-      << ") with image\n";
+  out << "plot " << gnuplot_quote(data) << " matrix using " << where << ":($3*"
+      << gnuplot_number(scale.unit.factor) << ") with image\n";
 }
 
 }  // namespace
@@ -142,10 +121,6 @@ void write_field_gnuplot_script(std::ostream& out, const Field& field, const std
     write_map(out, field, data, title);
   }
   out << "unset output\n";
-}
-
-bool gnuplot_available() {
-  return std::system("command -v gnuplot > /dev/null 2>&1") == 0;
 }
 
 void draw_field(const Field& field, const std::filesystem::path& data, const std::string& title,

@@ -44,7 +44,4 @@ void draw_field(const Field& field, const std::filesystem::path& data, const std
 void draw_field_picture(const std::filesystem::path& field_file, const std::filesystem::path& png,
                         const std::filesystem::path& svg);
 
-// Whether gnuplot can be run (`command -v gnuplot`).
-bool gnuplot_available();
-
 }  // namespace contactbench

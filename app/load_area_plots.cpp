@@ -9,27 +9,12 @@
 #include <sstream>
 #include <string>
 
+#include "contactbench/app/gnuplot_text.hpp"
 #include "contactbench/core/atomic_file.hpp"
 
 namespace contactbench {
 
 namespace {
-
-// A path inside single quotes for the shell: a quote in it becomes '\''.
-std::string shell_quote(const std::string& text) {
-  std::string quoted = "'";
-  for (const char ch : text)
-    quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  return quoted + "'";
-}
-
-// Text inside gnuplot's single quotes, where a quote is written twice (a method's note is free text).
-std::string gnuplot_quote(const std::string& text) {
-  std::string quoted = "'";
-  for (const char ch : text)
-    quoted += ch == '\'' ? std::string("''") : std::string(1, ch);
-  return quoted + "'";
-}
 
 // A legend entry of one or two lines, in gnuplot's double quotes (where \\n is a line break and a backslash
 // or a double quote is escaped): the second line, indented, when `second` is not empty.
@@ -47,15 +32,6 @@ std::string gnuplot_lines(const std::string& first, const std::string& second) {
     append(second);
   }
   return quoted + "\"";
-}
-
-// A number for a data block or a range: the shortest decimal that reads back to the same double; NaN as
-// gnuplot reads it.
-std::string number(double value) {
-  if (!std::isfinite(value)) return "NaN";
-  std::array<char, 32> buffer{};
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  return std::string(buffer.data(), result.ptr);
 }
 
 // The axis label, typeset by gnuplot's enhanced text (italic symbols, E*, A with subscript 0). gnuplot's
@@ -120,9 +96,10 @@ void write_data_blocks(std::ostream& out, const SceneReport& report, const PlotD
         reference_error = k < r.area_fraction_error.size() ? r.area_fraction_error[k] : NAN;
       }
       const bool has_reference = std::isfinite(reference) && reference > 0;
-      out << number(loads[k]) << ' ' << number(area) << ' ' << number(area - error) << ' '
-          << number(area + error) << ' ' << number(has_reference ? area / reference - 1 : NAN) << ' '
-          << number(has_reference ? reference_error / reference : NAN) << '\n';
+      out << gnuplot_number(loads[k]) << ' ' << gnuplot_number(area) << ' ' << gnuplot_number(area - error)
+          << ' ' << gnuplot_number(area + error) << ' '
+          << gnuplot_number(has_reference ? area / reference - 1 : NAN) << ' '
+          << gnuplot_number(has_reference ? reference_error / reference : NAN) << '\n';
     }
     out << "EOD\n";
   }
@@ -202,15 +179,16 @@ void write_panels(std::ostream& out, const SceneReport& report, const PlotData& 
   // Linear axes from 0 to the data's largest values.
   out << "unset logscale\nset format x '%g'\nset format y '%g'\nset title '(a) linear axes'\nset ylabel '"
       << kAreaLabel << "'\n";
-  out << "set xrange [0:" << (bounded ? number(data.load_max * 1.03) : "*")
-      << "]\nset yrange [0:" << (bounded ? number(data.area_max * 1.05) : "*") << "]\n";
+  out << "set xrange [0:" << (bounded ? gnuplot_number(data.load_max * 1.03) : "*")
+      << "]\nset yrange [0:" << (bounded ? gnuplot_number(data.area_max * 1.05) : "*") << "]\n";
   write_curves(out, report, data, 2);
   // Log axes bounded by the data (a tenth of a decade beyond), not gnuplot's whole decades.
   out << "set logscale xy\nset format x '10^{%L}'\nset format y '10^{%L}'\nset title '(b) logarithmic "
          "axes'\n";
   if (bounded)
-    out << "set xrange [" << number(data.load_min / 1.26) << ":" << number(data.load_max * 1.26)
-        << "]\nset yrange [" << number(data.area_min / 1.26) << ":" << number(data.area_max * 1.26) << "]\n";
+    out << "set xrange [" << gnuplot_number(data.load_min / 1.26) << ":"
+        << gnuplot_number(data.load_max * 1.26) << "]\nset yrange [" << gnuplot_number(data.area_min / 1.26)
+        << ":" << gnuplot_number(data.area_max * 1.26) << "]\n";
   else
     out << "set xrange [*:*]\nset yrange [*:*]\n";
   write_curves(out, report, data, 2);
@@ -245,7 +223,7 @@ void write_gnuplot_script(std::ostream& out, const SceneReport& report, const st
 
 bool draw_load_area_plots(const std::filesystem::path& folder, const SceneReport& report,
                           std::ostream& warnings) {
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
+  if (!gnuplot_available()) {
     warnings << "contactbench run: warning: gnuplot is not installed (Debian: gnuplot-nox), so no plots were "
                 "drawn; the curves are in "
              << (folder / "curves.csv").string() << '\n';

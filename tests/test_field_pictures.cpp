@@ -11,6 +11,7 @@
 
 #include "cli_runner.hpp"
 #include "contactbench/app/field_picture.hpp"
+#include "contactbench/app/gnuplot_text.hpp"
 #include "contactbench/app/load_area_plots.hpp"
 #include "contactbench/app/run_observer.hpp"
 #include "contactbench/core/error.hpp"
