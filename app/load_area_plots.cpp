@@ -40,10 +40,17 @@ void write_panels(std::ostream& out, const SceneReport& report) {
     for (std::size_t m = 0; m < report.methods.size(); ++m) {
       const std::string& label = report.methods[m].label;
       const bool reference = label == report.scene.reference;
-      out << (m == 0 ? "" : ", \\\n     ") << "'curves.csv' using (strcol(1) eq '" << label
-          << "' ? $3 : NaN):4 with linespoints " << (reference ? "lw 3 pt 7 ps 0.8 lc rgb 'black'" : "lw 1.5")
-          << " title "
-          << gnuplot_quote(label + (reference ? " (reference)" : "") + report.methods[m].note_suffix());
+      // Along a load path, the method's steps in order (<label>_path.csv: load, then area in column 4), so
+      // that loading and unloading draw their loops; otherwise its rows of curves.csv.
+      const bool path = !report.methods[m].curve.path_columns.empty();
+      out << (m == 0 ? "" : ", \\\n     ");
+      if (path)
+        out << gnuplot_quote(label + "_path.csv") << " using 2:4";
+      else
+        out << "'curves.csv' using (strcol(1) eq '" << label << "' ? $3 : NaN):4";
+      out << " with linespoints " << (reference ? "lw 3 pt 7 ps 0.8 lc rgb 'black'" : "lw 1.5") << " title "
+          << gnuplot_quote(label + (reference ? " (reference)" : "") + (path ? " (load path)" : "") +
+                           report.methods[m].note_suffix());
     }
     out << '\n';
   }
