@@ -79,6 +79,13 @@ PlotData plot_data(const SceneReport& report) {
   return data;
 }
 
+// A column of a method's load path by name; null when the method has no path.
+const std::vector<Real>* path_column(const MethodCurve& curve, const std::string& name) {
+  for (const auto& [key, values] : curve.path_columns)
+    if (key == name) return &values;
+  return nullptr;
+}
+
 // One data block per method: load, A/A0, the band [A - error, A + error] (NaN without an error estimate),
 // the relative error A/A_ref - 1 (NaN without a reference value) and the reference's relative band.
 void write_data_blocks(std::ostream& out, const SceneReport& report, const PlotData& data) {
@@ -102,6 +109,16 @@ void write_data_blocks(std::ostream& out, const SceneReport& report, const PlotD
           << gnuplot_number(has_reference ? reference_error / reference : NAN) << '\n';
     }
     out << "EOD\n";
+    // Along a load path (loads.path = "as listed"), the method's steps in order: the loops of loading and
+    // unloading, drawn over its curve (the curve holds each load's first step only).
+    const std::vector<Real>* path_load = path_column(curve, "load");
+    const std::vector<Real>* path_area = path_column(curve, "area_fraction");
+    if (path_load && path_area) {
+      out << "$path" << m << " << EOD\n";
+      for (std::size_t k = 0; k < path_load->size() && k < path_area->size(); ++k)
+        out << gnuplot_number((*path_load)[k]) << ' ' << gnuplot_number((*path_area)[k]) << '\n';
+      out << "EOD\n";
+    }
   }
 }
 
@@ -137,6 +154,10 @@ void write_curves(std::ostream& out, const SceneReport& report, const PlotData& 
     if (column == 5 && m == data.reference) continue;  // its own relative error is 0
     separator();
     out << "$method" << m << " using 1:" << column << " with linespoints " << style(m, data) << " notitle";
+    if (column == 2 && path_column(report.methods[m].curve, "load")) {
+      separator();
+      out << "$path" << m << " using 1:2 with lines dt 2 " << style(m, data) << " notitle";
+    }
   }
   if (column == 5) {
     separator();
@@ -157,7 +178,8 @@ void write_legend(std::ostream& out, const SceneReport& report, const PlotData& 
     const MethodResult& method = report.methods[m];
     out << (m == 0 ? "" : ", \\\n     ") << "2 with linespoints " << style(m, data) << " title "
         << gnuplot_lines(method.label + (m == data.reference ? " (reference)" : "") + method.note_suffix(),
-                         data.stops[m])
+                         !method.curve.path_columns.empty() ? "dashed: along the load path, step by step"
+                                                            : data.stops[m])
         << " noenhanced";
   }
   if (data.reference < report.methods.size() &&
