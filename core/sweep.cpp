@@ -45,6 +45,23 @@ std::uintmax_t sweep_memory_bytes(Index points, const SweepLevels& levels, int t
                         saturating_product(count, saturating_sum(8 + 32, saturating_product(stripes, 32))));
 }
 
+std::optional<SweepLevels> SweepLevels::named(std::string_view name) {
+  if (name == "exact") return exact();
+  if (name == "paper") return paper();
+  return std::nullopt;
+}
+
+std::optional<SweepLevels> SweepLevels::counted(std::int64_t count) {
+  if (count >= 1) return uniform(static_cast<Index>(count));
+  return std::nullopt;
+}
+
+std::optional<Connectivity> connectivity_of(std::int64_t neighbours) {
+  if (neighbours == 4) return Connectivity::four;
+  if (neighbours == 8) return Connectivity::eight;
+  return std::nullopt;
+}
+
 SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topology& topology, int threads) {
   const HeightMap& heights = surface.heights();
   const Index nx = surface.nx(), ny = surface.ny(), n = heights.size();

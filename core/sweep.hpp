@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string_view>
 
 #include <string>
 #include <vector>
@@ -29,7 +31,17 @@ struct SweepLevels {
   static SweepLevels exact() { return {Kind::exact, 0}; }
   static SweepLevels uniform(Index count) { return {Kind::uniform, count}; }
   static SweepLevels paper(Index count = 500) { return {Kind::paper, count}; }
+
+  // The levels a scene, the command line and Python accept, declared once: a name ("exact", "paper") or a
+  // count >= 1 of uniform steps; nullopt for anything else (the caller names its key with kAccepted).
+  static std::optional<SweepLevels> named(std::string_view name);
+  static std::optional<SweepLevels> counted(std::int64_t count);
+  static constexpr std::string_view kAccepted = "\"exact\", \"paper\" or an integer count >= 1";
 };
+
+// The connectivities of a contact spot (4 or 8 neighbours), as accepted everywhere; nullopt for any other.
+std::optional<Connectivity> connectivity_of(std::int64_t neighbours);
+inline constexpr std::string_view kConnectivityAccepted = "4, 8";
 
 // A_c(z) and N(z) at descending levels z[0] > z[1] > ...; row j describes {h > z[j]} (strictly above).
 // The first level is the highest height, where nothing is above: area 0, no spot.

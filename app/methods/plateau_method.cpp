@@ -16,7 +16,6 @@ namespace contactbench {
 namespace {
 
 constexpr Real pi = std::numbers::pi;
-constexpr std::string_view kLevelsAccepted = "\"exact\", \"paper\" or an integer count >= 1";
 
 }  // namespace
 
@@ -26,27 +25,26 @@ std::string PlateauMethod::compared_area() const {
 
 void PlateauMethod::read(const Section& s, const SceneContext& context) {
   s.reject_unknown({"method", "connectivity", "levels", "periodic", "refine", "write_levels"});
-  connectivity_ = static_cast<int>(
-      s.integer("connectivity", false, {[](std::int64_t v) { return v == 4 || v == 8; }, "4, 8"})
-          .value_or(connectivity_));
+  connectivity_ = static_cast<int>(s.integer("connectivity", false,
+                                             {[](std::int64_t v) { return connectivity_of(v).has_value(); },
+                                              std::string(kConnectivityAccepted)})
+                                       .value_or(connectivity_));
   periodic_ = s.boolean("periodic");
   write_levels_ = s.boolean("write_levels").value_or(write_levels_);
   refine_ = read_refine_key(s, context, refine_);
   if (const toml::node* node = s.find("levels")) {
     if (const auto* text = node->as_string()) {
-      if (text->get() == "exact")
-        levels_ = SweepLevels::exact();
-      else if (text->get() == "paper")
-        levels_ = SweepLevels::paper();
+      if (const auto named = SweepLevels::named(text->get()))
+        levels_ = *named;
       else
-        s.problem("levels", "unknown levels \"" + text->get() + "\"", kLevelsAccepted);
+        s.problem("levels", "unknown levels \"" + text->get() + "\"", SweepLevels::kAccepted);
     } else if (const auto* count = node->as_integer()) {
-      if (count->get() >= 1)
-        levels_ = SweepLevels::uniform(static_cast<Index>(count->get()));
+      if (const auto counted = SweepLevels::counted(count->get()))
+        levels_ = *counted;
       else
-        s.problem("levels", "out of range: got " + std::to_string(count->get()), kLevelsAccepted);
+        s.problem("levels", "out of range: got " + std::to_string(count->get()), SweepLevels::kAccepted);
     } else {
-      s.wrong_type("levels", "a string or an integer", kLevelsAccepted);
+      s.wrong_type("levels", "a string or an integer", SweepLevels::kAccepted);
     }
   }
 }

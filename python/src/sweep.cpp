@@ -16,22 +16,20 @@ namespace {
 // levels = "exact" | "paper" | an integer count (uniform), as in a scene file.
 SweepLevels parse_levels(const py::object& levels) {
   if (py::isinstance<py::str>(levels)) {
-    const auto text = levels.cast<std::string>();
-    if (text == "exact") return SweepLevels::exact();
-    if (text == "paper") return SweepLevels::paper();
+    if (const auto named = SweepLevels::named(levels.cast<std::string>())) return *named;
   } else if (py::isinstance<py::int_>(levels) && !py::isinstance<py::bool_>(levels)) {
-    const auto count = levels.cast<long long>();
-    if (count >= 1) return SweepLevels::uniform(count);
+    if (const auto counted = SweepLevels::counted(levels.cast<std::int64_t>())) return *counted;
   }
-  throw Error(
-      "levels: accepted values are \"exact\", \"paper\" or a whole number of uniform steps >= 1, got " +
-      std::string(py::repr(levels)));
+  throw Error("levels: accepted values are " + std::string(SweepLevels::kAccepted) + ", got " +
+              std::string(py::repr(levels)));
 }
 
 Topology topology(int connectivity, bool periodic) {
-  if (connectivity != 4 && connectivity != 8)
-    throw Error("connectivity: accepted values are 4 or 8, got " + std::to_string(connectivity));
-  return Topology::for_surface(connectivity == 8 ? Connectivity::eight : Connectivity::four, periodic);
+  const std::optional<Connectivity> neighbours = connectivity_of(connectivity);
+  if (!neighbours)
+    throw Error("connectivity: accepted values are " + std::string(kConnectivityAccepted) + ", got " +
+                std::to_string(connectivity));
+  return Topology::for_surface(*neighbours, periodic);
 }
 
 }  // namespace
