@@ -177,9 +177,9 @@ void write_legend(std::ostream& out, const SceneReport& report, const PlotData& 
   for (std::size_t m = 0; m < report.methods.size(); ++m) {
     const MethodResult& method = report.methods[m];
     out << (m == 0 ? "" : ", \\\n     ") << "2 with linespoints " << style(m, data) << " title "
-        << gnuplot_lines(method.label + (m == data.reference ? " (reference)" : "") + method.note_suffix(),
-                         !method.curve.path_columns.empty() ? "dashed: along the load path, step by step"
-                                                            : data.stops[m])
+        << gnuplot_lines(method.label + (m == data.reference ? " (reference)" : "") + method.note_suffix() +
+                             (method.curve.path_columns.empty() ? "" : "; dashed: its load path"),
+                         data.stops[m])
         << " noenhanced";
   }
   if (data.reference < report.methods.size() &&
