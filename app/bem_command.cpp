@@ -233,7 +233,7 @@ void add_bem_command(CLI::App& parent, const CommandContext& context) {
       "--hardness", options->hardness,
       "H [Pa]: the interface's hardness (the scene's interface.hardness): cap the pressure at H, perfectly "
       "plastic (points at H are plastic: the surface flows to fit the flat there, gap 0); adds the CSV "
-      "columns plastic_fraction and plastic_load_fraction. Every load must be below H/E*");
+      "columns plastic_area_fraction and plastic_load_fraction. Every load must be below H/E*");
   command->add_option(
       "--adhesion", options->adhesion,
       "the interface's adhesion (the scene's interface.adhesion): dugdale,work=W,stress=SIGMA0 "

@@ -236,7 +236,7 @@ void curve(benchmark::State& state, SolverKind solver_kind, Index n, bool period
       .solver = solver_kind,
       .load_path = start == Start::extrapolated ? LoadPathStart::extrapolated : LoadPathStart::scaled};
   Index iterations = 0;
-  double seconds = 0, area_fraction = 0, plastic_fraction = 0;
+  double seconds = 0, area_fraction = 0, plastic_area_fraction = 0;
   for (auto _ : state) {
     iterations = 0;
     seconds = 0;
@@ -250,14 +250,14 @@ void curve(benchmark::State& state, SolverKind solver_kind, Index n, bool period
       seconds += s.seconds;
       const double points = static_cast<double>(surface.grid().points());
       area_fraction = static_cast<double>(s.contact_points) / points;
-      plastic_fraction = static_cast<double>(s.plastic_points) / points;
+      plastic_area_fraction = static_cast<double>(s.plastic_points) / points;
     }
     state.SetIterationTime(seconds);
   }
   state.counters["iterations"] = static_cast<double>(iterations);
   state.counters["seconds"] = seconds;
   state.counters["area_fraction"] = area_fraction;  // of the last load
-  state.counters["plastic_fraction"] = plastic_fraction;
+  state.counters["plastic_area_fraction"] = plastic_area_fraction;
 }
 
 // The plastic BEM against the elastic one on the same grid and loads, in the same benchmark (docs/solvers.md
@@ -285,7 +285,7 @@ void plastic_against_elastic(benchmark::State& state, SolverKind solver_kind, In
   struct Run {
     double seconds = 0;
     Index iterations = 0;
-    double plastic_fraction = 0, area_fraction = 0;
+    double plastic_area_fraction = 0, area_fraction = 0;
   };
   const double points = static_cast<double>(surface.grid().points());
   auto run = [&](const BemSolverOptions& options) {
@@ -297,7 +297,7 @@ void plastic_against_elastic(benchmark::State& state, SolverKind solver_kind, In
       r.seconds += s.seconds;
       r.iterations += s.iterations;
       if (k == 9) {  // the top load, first reached
-        r.plastic_fraction = static_cast<double>(s.plastic_points) / points;
+        r.plastic_area_fraction = static_cast<double>(s.plastic_points) / points;
         r.area_fraction = static_cast<double>(s.contact_points) / points;
       }
     }
@@ -321,7 +321,7 @@ void plastic_against_elastic(benchmark::State& state, SolverKind solver_kind, In
   state.counters["time_ratio"] = plastic_seconds[1] / elastic_seconds[1];
   state.counters["elastic_iterations"] = static_cast<double>(elastic_run.iterations);
   state.counters["iterations"] = static_cast<double>(plastic_run.iterations);
-  state.counters["plastic_fraction"] = plastic_run.plastic_fraction;
+  state.counters["plastic_area_fraction"] = plastic_run.plastic_area_fraction;
   state.counters["area_fraction"] = plastic_run.area_fraction;
 }
 

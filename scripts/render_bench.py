@@ -296,7 +296,7 @@ def bem_solvers(data):
                   "iterations polonsky_keer / solver | time polonsky_keer / solver | run |",
                   "|---|---|---|---|---|---|---|---|---|---|---|"]
         lines += ratio_rows(capped, lambda key: f"{key[0]} | {key[1]} | {key[2]}",
-                            lambda row: f"{fmt(row.get('area_fraction'))} | {fmt(row.get('plastic_fraction'))}",
+                            lambda row: f"{fmt(row.get('area_fraction'))} | {fmt(row.get('plastic_area_fraction', row.get('plastic_fraction')))}",
                             made)
     if plastic:
         lines += ["", "Plastic against elastic: the same loads and grid in one benchmark (bench/bench_bem_solvers.cpp, "
@@ -312,7 +312,7 @@ def bem_solvers(data):
             lines.append(f"| {key[0]} | {key[1]} | {key[2]} | {key[3]} | {key[4]} | {fmt(row.get('elastic_seconds'))} | "
                          f"{fmt(row.get('plastic_seconds'))} | {fmt(row.get('time_ratio'))} | "
                          f"{fmt(row.get('elastic_iterations'))} | {fmt(row.get('iterations'))} | "
-                         f"{fmt(row.get('area_fraction'))} | {fmt(row.get('plastic_fraction'))} | "
+                         f"{fmt(row.get('area_fraction'))} | {fmt(row.get('plastic_area_fraction', row.get('plastic_fraction')))} | "
                          f"{run_of(row['run_name'], made)} |")
     if separations:
         lines += ["", "Separation control: one cold solve with the flat at the height of the equal-accuracy "

@@ -461,7 +461,7 @@ TEST_F(BemCommand, HardnessFloatAndFields) {
   ASSERT_EQ(status, 0) << err;
   std::vector<std::string> header;
   const auto table = rows(csv, header);
-  EXPECT_NE(std::find(header.begin(), header.end(), "plastic_fraction"), header.end());
+  EXPECT_NE(std::find(header.begin(), header.end(), "plastic_area_fraction"), header.end());
   ASSERT_EQ(table.size(), 2u);
   const auto number = [&](std::size_t k, const char* column) { return std::stod(table[k].at(column)); };
   for (std::size_t k = 0; k < table.size(); ++k) {
@@ -478,12 +478,12 @@ TEST_F(BemCommand, HardnessFloatAndFields) {
     const Real load = number(k, "load") * 1e11 / (1 - 0.3 * 0.3);
     EXPECT_NEAR(pressure.heights().mean(), load, 1e-5 * load);  // float's load, imposed
     EXPECT_NEAR(gap.heights().mean(), number(k, "mean_gap"), 1e-6 * number(k, "mean_gap"));
-    // plastic_fraction = nodes at p = H / all nodes (exact in double: a count over 64^2).
-    EXPECT_EQ(number(k, "plastic_fraction") * 64 * 64,
+    // plastic_area_fraction = nodes at p = H / all nodes (exact in double: a count over 64^2).
+    EXPECT_EQ(number(k, "plastic_area_fraction") * 64 * 64,
               static_cast<Real>((pressure.heights() >= 2e9 * (1 - 1e-7)).count()));
   }
   EXPECT_LT(number(0, "load"), number(1, "load"));
-  EXPECT_GT(number(1, "plastic_fraction"), 0);  // the larger load has plastic points
+  EXPECT_GT(number(1, "plastic_area_fraction"), 0);  // the larger load has plastic points
 }
 
 TEST_F(BemCommand, WithoutHardnessNoPlasticColumn) {
@@ -491,7 +491,7 @@ TEST_F(BemCommand, WithoutHardnessNoPlasticColumn) {
   ASSERT_EQ(bem("--loads 0.002 --out " + csv.string()).first, 0);
   std::vector<std::string> header;
   const auto table = rows(csv, header);
-  EXPECT_EQ(std::find(header.begin(), header.end(), "plastic_fraction"), header.end());
+  EXPECT_EQ(std::find(header.begin(), header.end(), "plastic_area_fraction"), header.end());
   ASSERT_EQ(table.size(), 1u);
   EXPECT_EQ(table[0].size(), header.size());
 }

@@ -79,7 +79,7 @@ TEST(PlasticPath, TheBemReportsEveryStepAndShakesDown) {
   ASSERT_FALSE(path.empty());
   EXPECT_EQ(column(path, "direction"), (std::vector<Real>{1, 1, -1, 1}));
   const std::vector<Real>& area = column(path, "area_fraction");
-  const std::vector<Real>& plastic = column(path, "plastic_fraction");
+  const std::vector<Real>& plastic = column(path, "plastic_area_fraction");
   ASSERT_EQ(area.size(), 4u);
   EXPECT_GT(plastic[1], 0);     // the top load flows
   EXPECT_EQ(plastic[2], 0);     // unloading is elastic

@@ -146,7 +146,7 @@ method = "bem"
   EXPECT_NE(solves[1].find("hardness"), std::string::npos) << solves[1];
   const auto has_plastic = [](const MethodResult& m) {
     return std::any_of(m.curve.columns.begin(), m.curve.columns.end(),
-                       [](const auto& c) { return c.first == "plastic_fraction"; });
+                       [](const auto& c) { return c.first == "plastic_area_fraction"; });
   };
   EXPECT_FALSE(has_plastic(report.methods[0]));
   EXPECT_TRUE(has_plastic(report.methods[1]));

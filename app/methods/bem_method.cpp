@@ -270,7 +270,7 @@ class BemMethod final : public Method {
     }
     if (in.scene.compares(Quantity::stiffness)) curve.stiffness = products.stiffness;
     if (products.hardness) {
-      curve.columns.emplace_back("plastic_fraction", plastic);  // nodes at p = H / all
+      curve.columns.emplace_back("plastic_area_fraction", plastic);  // nodes at p = H / all
       curve.columns.emplace_back("plastic_load_fraction", plastic_load);
     }
     if (!products.load_path.empty()) {
@@ -348,7 +348,7 @@ class BemMethod final : public Method {
                           {"direction", direction},
                           {"area_fraction", area},
                           {"area_fraction_nodes", nodes},
-                          {"plastic_fraction", plastic},
+                          {"plastic_area_fraction", plastic},
                           {"plastic_load_fraction", plastic_load},
                           {"separation", separation},
                           {"converged", converged}};

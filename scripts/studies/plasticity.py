@@ -114,7 +114,7 @@ def main():
             write_atomically(scene, scene_text(name, generate, hardness, loads, METHODS))
             run = run_scene(scene, os.path.join(folder, "out"), args.threads, args.reuse, plots=False)
             stamp = stamp or run.stamp()
-            bem_plastic = run.column("bem", "plastic_fraction")
+            bem_plastic = run.column("bem", "plastic_area_fraction" if "plastic_area_fraction" in run.rows["bem"][0] else "plastic_fraction")  # runs before the rename (--reuse)
             for label, _, _, _ in METHODS:
                 m = run.methods[label]
                 rows.append((name, psi, hardness, label, run.loads, m["relative_error"], m["seconds"], bem_plastic,
