@@ -12,8 +12,6 @@ namespace contactbench {
 
 namespace {
 
-constexpr int kLeft = 0, kRight = 1, kUp = 2, kDown = 3;
-
 // Below this many unknowns a level is solved directly (a sparse Cholesky factorisation: milliseconds).
 constexpr Index kDirectSolveUnknowns = 4096;
 // The coarse correction is scaled up: piecewise-constant aggregates make the coarse operator too stiff for
