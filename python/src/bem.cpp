@@ -18,6 +18,7 @@
 #include "contactbench/app/methods/bem_settings.hpp"
 #include "contactbench/app/problems.hpp"
 #include "contactbench/app/section.hpp"
+#include "contactbench/bem/adhesive_path.hpp"
 #include "contactbench/bem/adhesive_solver.hpp"
 #include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
@@ -39,6 +40,24 @@ struct BemResult {
   Index points = 0;
   bool separated = false;
 };
+
+// An approach-retract path and what it needs to give its loads in the loads' unit and its areas as
+// fractions, as the CLI's CSV does (app/adhesive_path_csv.cpp).
+struct PythonAdhesivePath {
+  AdhesivePath path;
+  Real modulus = 0;  // E* [Pa]
+  Index points = 0;
+};
+
+// One column of the path's states as a new numpy array.
+template <class Value>
+py::array path_column(const PythonAdhesivePath& p,
+                      Value (*value)(const AdhesivePathState&, const PythonAdhesivePath&)) {
+  std::vector<Value> column;
+  for (const AdhesivePathState& state : p.path.states)
+    column.push_back(value(state, p));
+  return py::array(py::cast(column));
+}
 
 // `adhesion` as the scene's interface.adhesion table ({"model": "dugdale", "work": w, "stress": σ0} or
 // {"model": "exponential", "work": w, "range": ρ}), read by the scene's own reader (app/interface.cpp): the
@@ -163,6 +182,20 @@ class PythonBemSolver {
     if (adhesive_) return adhesive_result(adhesive_->solve_for_separation(separation));
     const ContactSolution& solution = solver_->solve_for_separation(separation);
     return {solution, contact_statistics(solution, labeller_), modulus_, std::nullopt, 0, false};
+  }
+
+  // The approach-retract path (bem/adhesive_path.hpp), as `contactbench bem --approach-retract` runs it.
+  PythonAdhesivePath approach_retract(Real start, Real turn, Index steps) {
+    std::lock_guard lock(mutex_);
+    if (!adhesive_)
+      throw Error(
+          "approach_retract: needs adhesion= (the path of a non-adhesive contact has no jumps); accepted: "
+          "BemSolver(..., adhesion={...})");
+    if (steps > 1000000)  // the CLI's cap: a path of millions of solves is a typo, not a study
+      throw Error("approach_retract: steps " + std::to_string(steps) + " per leg; accepted: 2 to 1000000");
+    const Grid& grid = adhesive_->surface().grid();
+    return {contactbench::approach_retract(*adhesive_, {.start = start, .turn = turn, .steps = steps}),
+            modulus_, grid.nx * grid.ny};
   }
 
   Real modulus() const { return modulus_; }
@@ -354,6 +387,120 @@ void register_bem(py::module_& m) {
           "separated", [](const BemResult& r) { return r.separated; },
           "with adhesion, load control: no state in contact carries the load (below the pull-off force)");
 
+  using State = AdhesivePathState;
+  using Path = PythonAdhesivePath;
+  py::class_<PythonAdhesivePath>(
+      m, "AdhesivePath",
+      "An approach-retract path of the adhesive BEM (BemSolver.approach_retract; bem/adhesive_path.hpp): one "
+      "entry per state in path order (the approach leg, then the retract leg), as the columns of "
+      "`contactbench "
+      "bem --approach-retract`, each a new numpy array, and the path's summary.")
+      .def_property_readonly(
+          "approaching",
+          [](const Path& p) {
+            return path_column<bool>(p, [](const State& s, const Path&) { return s.approaching; });
+          },
+          "True on the approach leg, False on the retract leg")
+      .def_property_readonly(
+          "separation",
+          [](const Path& p) {
+            return path_column<Real>(p, [](const State& s, const Path&) { return s.separation; });
+          },
+          "d: the flat's height above the mean plane of the heights [m]")
+      .def_property_readonly(
+          "load",
+          [](const Path& p) {
+            return path_column<Real>(
+                p, [](const State& s, const Path& q) { return s.mean_pressure / q.modulus; });
+          },
+          "net P/(E* A0) [-], negative when tensile")
+      .def_property_readonly(
+          "adhesive_load",
+          [](const Path& p) {
+            return path_column<Real>(
+                p, [](const State& s, const Path& q) { return s.adhesive_pressure / q.modulus; });
+          },
+          "the attraction's pull mean(a)/E* [-]")
+      .def_property_readonly(
+          "contact_fraction",
+          [](const Path& p) {
+            return path_column<Real>(p, [](const State& s, const Path& q) {
+              return static_cast<Real>(s.contact_points) / static_cast<Real>(q.points);
+            });
+          },
+          "contact nodes / all nodes [-]")
+      .def_property_readonly(
+          "attractive_fraction",
+          [](const Path& p) {
+            return path_column<Real>(p, [](const State& s, const Path& q) {
+              return static_cast<Real>(s.attractive_points) / static_cast<Real>(q.points);
+            });
+          },
+          "nodes out of contact pulled by the attraction / all nodes [-]")
+      .def_property_readonly(
+          "mean_gap",
+          [](const Path& p) {
+            return path_column<Real>(p, [](const State& s, const Path&) { return s.mean_gap; });
+          },
+          "[m]")
+      .def_property_readonly(
+          "energy",
+          [](const Path& p) {
+            return path_column<Real>(p, [](const State& s, const Path&) { return s.energy; });
+          },
+          "U per nominal area [J/m^2] (docs/theory.md 10.7)")
+      .def_property_readonly(
+          "iterations",
+          [](const Path& p) {
+            return path_column<Index>(p, [](const State& s, const Path&) { return s.iterations; });
+          },
+          "contact-solver iterations of each state")
+      .def_property_readonly(
+          "state_converged",
+          [](const Path& p) {
+            return path_column<bool>(p, [](const State& s, const Path&) { return s.converged; });
+          },
+          "whether each state converged")
+      .def_property_readonly(
+          "pull_off_load", [](const Path& p) { return p.path.pull_off_pressure / p.modulus; },
+          "the most tensile net P/(E* A0) on the retract leg [-] (<= 0)")
+      .def_property_readonly(
+          "pull_off_separation", [](const Path& p) { return p.path.pull_off_separation; },
+          "where it occurs [m]")
+      .def_property_readonly(
+          "cycle_work", [](const Path& p) { return p.path.cycle_work; },
+          "-oint P/A0 dd over the path [J/m^2] (trapezoid rule)")
+      .def_property_readonly(
+          "released_energy", [](const Path& p) { return p.path.released_energy; },
+          "summed over the jumps [J/m^2]")
+      .def_property_readonly(
+          "jumps",
+          [](const Path& p) {
+            py::list jumps;
+            for (const AdhesiveJump& j : p.path.jumps) {
+              py::dict d;
+              d["into_contact"] = j.into_contact;
+              d["after"] = j.after;
+              d["separation_before"] = j.separation_before;
+              d["separation_after"] = j.separation_after;
+              d["load_before"] = j.mean_pressure_before / p.modulus;
+              d["load_after"] = j.mean_pressure_after / p.modulus;
+              d["contact_fraction_before"] =
+                  static_cast<Real>(j.contact_points_before) / static_cast<Real>(p.points);
+              d["contact_fraction_after"] =
+                  static_cast<Real>(j.contact_points_after) / static_cast<Real>(p.points);
+              d["released_energy"] = j.released_energy;
+              jumps.append(d);
+            }
+            return jumps;
+          },
+          "the jumps into (approach) and out of (retract) contact, each a dict: into_contact, after (the "
+          "index "
+          "of the state after it), separation_before/after [m], load_before/after, "
+          "contact_fraction_before/after, released_energy [J/m^2]")
+      .def_property_readonly(
+          "converged", [](const Path& p) { return p.path.converged; }, "every state converged");
+
   py::class_<PythonBemSolver>(m, "BemSolver", solver_doc.c_str())
       .def(py::init([](const Surface& surface, Real modulus, std::optional<Real> hardness,
                        const py::object& adhesion, int threads, const py::kwargs& keywords) {
@@ -398,6 +545,18 @@ void register_bem(py::module_& m) {
           "Solves each load P/(E* A0) (ascending), like `contactbench bem --loads`: a list of BemResult. "
           "Ctrl-C "
           "stops it between iterations (KeyboardInterrupt).")
+      .def(
+          "approach_retract",
+          [](PythonBemSolver& s, Real start, Real turn, Index steps) {
+            py::gil_scoped_release release;
+            return s.approach_retract(start, turn, steps);
+          },
+          py::arg("start"), py::arg("turn"), py::arg("steps"),
+          "With adhesion: the flat from separation `start` [m] down to `turn` (< start) in `steps` (>= 2) "
+          "equal "
+          "steps and back, each solve from the last state (a fresh approach first), like `contactbench bem "
+          "--approach-retract START,TURN,STEPS`: an AdhesivePath. Releases the GIL; Ctrl-C stops it between "
+          "iterations.")
       .def_property_readonly("modulus", &PythonBemSolver::modulus, "E* [Pa]")
       .def_property_readonly(
           "tolerance", [](const PythonBemSolver& s) { return s.options().tolerance; },

@@ -102,3 +102,34 @@ def test_unknown_key_is_named():
 def test_adhesion_with_a_hardness_is_refused():
     with pytest.raises(cb.Error, match="adhesion and a hardness"):
         cb.BemSolver(sphere(), MODULUS, hardness=1e9, adhesion=DUGDALE)
+
+
+def test_approach_retract_equals_the_cli(cli, tmp_path):
+    # The sphere's apex is 3.33 um above the mean plane: from 3.4 um down to 3.2 um (an indentation of 0.13
+    # um) and back, 10 steps a leg.
+    surface = sphere()
+    surface.write(tmp_path / "sphere.txt")
+    text = cli("bem", tmp_path / "sphere.txt", "--adhesion", "dugdale,work=0.5,stress=1e6", "--approach-retract",
+               "3.4e-6,3.2e-6,10")
+    rows = list(csv.DictReader(io.StringIO("\n".join(l for l in text.splitlines() if not l.startswith("#")))))
+    path = cb.BemSolver(surface, MODULUS, adhesion=DUGDALE).approach_retract(3.4e-6, 3.2e-6, 10)
+    assert len(rows) == len(path.load) == 21
+    # Same engine, same path: the same states to 1e-12 (the CSV prints 17 digits) and the same iterations.
+    assert [r["leg"] == "approach" for r in rows] == list(path.approaching)
+    assert [int(r["iterations"]) for r in rows] == list(path.iterations)
+    for column in ["separation", "load", "adhesive_load", "contact_fraction", "attractive_fraction", "energy"]:
+        expected = np.array([float(r[column]) for r in rows])
+        assert getattr(path, column) == pytest.approx(expected, rel=1e-12, abs=1e-300), column
+    assert path.converged and all(path.state_converged)
+    # In contact at the turn, out of it at both ends, and pulled (tensile) just out of contact.
+    assert path.contact_fraction[10] > 0 and path.contact_fraction[0] == path.contact_fraction[-1] == 0
+    assert path.pull_off_load < 0 and min(path.load) == pytest.approx(path.pull_off_load, rel=1e-15)
+
+
+def test_approach_retract_needs_adhesion_and_a_path():
+    with pytest.raises(cb.Error, match="needs adhesion"):
+        cb.BemSolver(sphere(), MODULUS).approach_retract(3.4e-6, 3.2e-6, 10)
+    with pytest.raises(cb.Error, match="turn < start"):
+        cb.BemSolver(sphere(), MODULUS, adhesion=DUGDALE).approach_retract(3.2e-6, 3.4e-6, 10)
+    with pytest.raises(cb.Error, match="steps"):
+        cb.BemSolver(sphere(), MODULUS, adhesion=DUGDALE).approach_retract(3.4e-6, 3.2e-6, 1)
