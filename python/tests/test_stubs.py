@@ -30,5 +30,5 @@ def test_stubs_are_valid_python_with_the_documented_keywords(make_stubs):
     init = next(n for n in solver.body if isinstance(n, ast.FunctionDef) and n.name == "__init__")
     keywords = [a.arg for a in init.args.kwonlyargs]
     # The scene keys of a BEM method that a solver object takes (app/methods/bem_settings.cpp), typed.
-    assert keywords == ["hardness", "threads", "tolerance", "max_iterations", "periodic", "precision",
+    assert keywords == ["hardness", "adhesion", "threads", "tolerance", "max_iterations", "periodic", "precision",
                         "connectivity", "solver"]
