@@ -2,12 +2,20 @@
 // the stage solves the periodic even extension of a non-periodic patch and judges the original patch.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <sstream>
+#include <string>
 
 #include "contactbench/app/mirrored_boundary.hpp"
 #include "contactbench/app/stages.hpp"
 #include "contactbench/core/generation.hpp"
+#include "contactbench/core/topography_io.hpp"
 
 namespace contactbench {
 namespace {
@@ -103,6 +111,40 @@ TEST(BemMirrored, FlatPatchInFullContactHasUniformPressureWithoutTheEdgePunch) {
   // from the uniform 1 and far below the grid's corner value), and the ring carries more than its share.
   EXPECT_GT(a.max_pressure / load, 2.0);
   EXPECT_GT(a.edge_load_share, ring_share + 0.02);
+}
+
+// `contactbench bem --boundary`: refused, naming the key, on a periodic problem and for a value it does not
+// know; accepted once the periodic surface is taken as a finite record (--non-periodic).
+TEST(BemMirrored, TheCommandRefusesMirroringAPeriodicProblemNamingTheKey) {
+  const auto folder = std::filesystem::temp_directory_path() / "contactbench_bem_mirrored_cli";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  const Index n = 32;
+  const Grid grid{.nx = n, .ny = n, .lx = n * 1e-6, .ly = n * 1e-6, .periodic = true};
+  const SelfAffinePsd psd{
+      .sigma = 0.5e-6, .hurst = 0.7, .qr = 4 * 2 * std::numbers::pi / grid.lx, .qs = {}, .anisotropy = 1};
+  const auto surface = folder / "s.txt";
+  write_surface(surface.string(), generate_surface(grid, psd, 41));
+  const auto bem = [&](const std::string& arguments) {
+    const auto err = folder / "stderr.txt";
+    const std::string command = std::string(CB_CLI_PATH) + " bem " + surface.string() + " " + arguments +
+                                " >/dev/null 2>" + err.string() + " </dev/null";
+    const int raw = std::system(command.c_str());
+    std::ifstream in(err);
+    std::stringstream text;
+    text << in.rdbuf();
+    return std::pair<int, std::string>{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
+  };
+  const auto [periodic_status, periodic_err] = bem("--loads 0.01 --boundary mirrored");
+  EXPECT_NE(periodic_status, 0);
+  EXPECT_NE(periodic_err.find("boundary"), std::string::npos) << periodic_err;
+  EXPECT_NE(periodic_err.find("periodic = false"), std::string::npos) << periodic_err;
+  const auto [unknown_status, unknown_err] = bem("--loads 0.01 --non-periodic --boundary reflected");
+  EXPECT_NE(unknown_status, 0);
+  EXPECT_NE(unknown_err.find("boundary"), std::string::npos) << unknown_err;
+  const auto [record_status, record_err] = bem("--loads 0.01 --non-periodic --boundary mirrored");
+  EXPECT_EQ(record_status, 0) << record_err;
+  std::filesystem::remove_all(folder);
 }
 
 }  // namespace
