@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "contactbench/app/load_fields.hpp"
+#include "contactbench/app/mirrored_boundary.hpp"
 #include "contactbench/app/stage_runner.hpp"
 #include "contactbench/app/stages.hpp"
 #include "contactbench/bem/contact_stiffness.hpp"
@@ -47,6 +48,15 @@ class SerialRunner final : public StageRunner {
       labellers.emplace(c, Labeller(Topology::for_surface(c == 8 ? Connectivity::eight : Connectivity::four,
                                                           stage.periodic),
                                     context.threads));
+    // boundary = "mirrored": `solved` is the even extension (app/stages.cpp); everything after the solve is
+    // taken on the original patch, its first quarter.
+    const bool mirrored = stage.settings.mirrored;
+    const Grid judged = mirrored ? Grid{.nx = solved.grid().nx / 2,
+                                        .ny = solved.grid().ny / 2,
+                                        .lx = solved.grid().lx / 2,
+                                        .ly = solved.grid().ly / 2,
+                                        .periodic = false}
+                                 : solved.grid();
     SolvedLoads done;
     for (std::size_t k = 0; k < mean_pressures.size(); ++k) {
       ContactSolution solution;
@@ -59,8 +69,7 @@ class SerialRunner final : public StageRunner {
       } else {
         solution = solver->solve(mean_pressures[k]);
       }
-      for (auto& [c, labeller] : labellers)
-        done.statistics[c].push_back(contact_statistics(solution, labeller));
+      std::optional<Real> stiffness;
       if (stage.stiffness) {  // the linearised response of the converged state (docs/theory.md 12.2)
         const ContactStiffness response =
             contact_stiffness(solved.grid(), estar, solution.pressure, stage.hardness, context.threads);
@@ -68,10 +77,14 @@ class SerialRunner final : public StageRunner {
           observer.warn(name + ": load " + std::to_string(k + 1) +
                         ": the stiffness solve stopped unconverged at a relative residual of " +
                         std::to_string(response.residual) + "; its stiffness is left out (NaN)");
-        done.stiffness.push_back(response.converged ? response.stiffness : std::nan(""));
+        stiffness = response.converged ? response.stiffness : std::nan("");
       }
+      if (mirrored) solution = patch_of(solution, judged.nx, judged.ny);
+      for (auto& [c, labeller] : labellers)
+        done.statistics[c].push_back(contact_statistics(solution, labeller));
+      if (stiffness) done.stiffness.push_back(*stiffness);
       if (!fields.empty()) {  // as each load is solved, so that a long run leaves what it has done
-        write_load_fields(fields, k + 1, solved.grid(),
+        write_load_fields(fields, k + 1, judged,
                           {.pressure = &solution.pressure,
                            .gap = &solution.gap,
                            .attraction = adhesive ? &attraction : nullptr},

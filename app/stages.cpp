@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "contactbench/app/mirrored_boundary.hpp"
 #include "contactbench/app/stage_runner.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/theories/plateau_model.hpp"
@@ -60,8 +61,11 @@ std::string BemStage::name() const {
   std::ostringstream text;
   text << "bem (";
   if (settings.refine > 0) text << "refined to " << settings.refine << " x " << settings.refine << ", ";
-  text << solver_name(solver.solver) << ", " << (periodic ? "periodic" : "non-periodic") << ", tolerance "
-       << solver.tolerance;
+  text << solver_name(solver.solver) << ", "
+       << (periodic            ? "periodic"
+           : settings.mirrored ? "non-periodic mirrored"
+                               : "non-periodic")
+       << ", tolerance " << solver.tolerance;
   if (solver.single_precision) text << ", single precision";
   if (hardness) text << ", hardness " << *hardness << " Pa";
   if (adhesion) {
@@ -111,7 +115,10 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
   Surface solved = refined > 0 ? refine(surface, refined, refined, context.threads) : surface;
   const Index nx = solved.grid().nx, ny = solved.grid().ny;
   if (solved.grid().periodic != stage.periodic) solved = solved.with_periodic(stage.periodic);
-  products.points = solved.grid().points();
+  products.points = solved.grid().points();  // with boundary = "mirrored": the patch's, which is judged
+  // boundary = "mirrored" (preflight: non-periodic problems only): the solver sees the periodic even
+  // extension; solve_loads hands back the solution and statistics on the original patch.
+  if (stage.settings.mirrored) solved = mirrored_surface(solved);
   products.periodic = stage.periodic;
   products.hardness = stage.hardness;
   products.adhesion = stage.adhesion;

@@ -175,6 +175,25 @@ class BemMethod final : public Method {
                     "the extrapolated area is not defined along a load path (the finer grid would flow "
                     "differently)",
                     "extrapolate = false, or loads.path = \"ascending\"");
+    if (settings_.mirrored) {
+      // Mirroring a periodic surface would change it (its seams become reflections): refused, not a no-op,
+      // so that a scene never reads as mirrored when it was not (docs/solvers.md "Mirrored boundary").
+      if (settings_.periodic.value_or(check.surface.grid().periodic))
+        check.problem("boundary",
+                      "boundary = \"mirrored\" is for the non-periodic problem, and this one is periodic (" +
+                          std::string(settings_.periodic ? "periodic = true" : "the surface is periodic") +
+                          ")",
+                      "boundary = \"as_is\", or periodic = false to treat the surface as a finite record");
+      else if (check.interface.adhesion)
+        check.problem("boundary",
+                      "boundary = \"mirrored\" is not implemented with adhesion (its adhesive statistics "
+                      "are of the whole extension)",
+                      "boundary = \"as_is\", or no interface.adhesion");
+      else if (!settings_.residual_topography.empty())
+        check.problem("boundary",
+                      "boundary = \"mirrored\" with residual_topography would write the mirrored extension",
+                      "boundary = \"as_is\", or no residual_topography");
+    }
     check_refine_key(check, settings_.refine);
     check_magnitudes(check);
     if (settings_.extrapolate) {
@@ -370,8 +389,8 @@ class BemMethod final : public Method {
     const Index ny = settings_.refine > 0 ? settings_.refine : grid.ny;
     const bool third_finer = settings_.extrapolate && settings_.error_estimate == ErrorEstimate::gci3 &&
                              !third_grid_is_coarser(nx, ny, grid.nx, grid.ny);
-    const Index side = third_finer ? 4 : settings_.extrapolate ? 2 : 1;
-    const bool periodic = settings_.periodic.value_or(grid.periodic);
+    const Index side = third_finer ? 4 : settings_.extrapolate || settings_.mirrored ? 2 : 1;
+    const bool periodic = settings_.mirrored || settings_.periodic.value_or(grid.periodic);
     std::uintmax_t per_point =
         settings_.solver.single_precision ? (periodic ? 115 : 135) : (periodic ? 150 : 175);
     if (settings_.solver.solver == SolverKind::active_set)
@@ -383,9 +402,10 @@ class BemMethod final : public Method {
           saturating_product(points, per_point),
           "the BEM solve on " + std::to_string(side * nx) + " x " + std::to_string(side * ny) + " points");
     } catch (const Error& e) {
-      check.problem(
-          settings_.refine > 0 ? "refine" : "", e.what(),
-          "a solve that fits: fewer points (refine), extrapolate = false or precision = \"single\"");
+      check.problem(settings_.refine > 0 ? "refine" : "", e.what(),
+                    "a solve that fits: fewer points (refine), extrapolate = false, boundary = \"as_is\" or "
+                    "precision = "
+                    "\"single\"");
     }
   }
 

@@ -77,6 +77,20 @@ SettingTable<BemSettings> make_table() {
           .distributed = true},
       [](BemSettings & s) -> auto& { return s.periodic; }));
   table.push_back(bind_choice(
+      Row{.key = "boundary",
+          .kind = SettingKind::choice,
+          .accepted = "`\"as_is\"`, `\"mirrored\"` (`\"mirrored\"` only for the non-periodic problem)",
+          .default_value = std::string("as_is"),
+          .doc =
+              "the edges of a non-periodic problem: `\"as_is\"` the finite patch pressed into the half-space "
+              "(its edges act like a punch's), `\"mirrored\"` the patch extended evenly to twice its points "
+              "a "
+              "side and solved periodically (4 times the points), every statistic taken on the original "
+              "patch (docs/solvers.md \"Mirrored boundary\"; results/studies/edges)",
+          .flag = {"--boundary"},
+          .choices = {"as_is", "mirrored"}},
+      [](BemSettings & s) -> auto& { return s.mirrored; }));
+  table.push_back(bind_choice(
       Row{.key = "precision",
           .kind = SettingKind::choice,
           .accepted = "`\"double\"`, `\"single\"`",
@@ -227,6 +241,11 @@ void finish_bem_settings(
       problem("tolerance", "out of range: got " + exact_number(settings.solver.tolerance),
               "a number in [1e-06, 0.01] (single precision cannot resolve less)");
   }
+  if (settings.mirrored && settings.extrapolate)
+    problem("boundary",
+            "boundary = \"mirrored\" and extrapolate = true: the extrapolation's finer grids "
+            "are Fourier-refined from a periodic surface, not mirrored",
+            "boundary = \"as_is\" (the default), or extrapolate = false");
   if (settings.node_area && settings.extrapolate)
     problem("area", "area = \"nodes\" and extrapolate = true ask for two different compared areas",
             "area = \"corrected\" (the default) with extrapolate = true, or extrapolate = false");

@@ -28,6 +28,9 @@ struct BemSettings {
   int connectivity = 4;                                // for counting contact spots
   bool node_area = false;  // area = "nodes": compared by the node count (a node-based FE model's area)
   bool allow_unconverged = false;  // unconverged loads marked, the run exits 0
+  // boundary = "mirrored": a non-periodic surface solved as its periodic even extension to twice the points
+  // a side, judged on the original patch (app/mirrored_boundary.hpp); false: "as_is", the finite patch
+  bool mirrored = false;
 };
 
 const SettingTable<BemSettings>& bem_settings();
