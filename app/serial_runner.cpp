@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "contactbench/app/distributions_csv.hpp"
 #include "contactbench/app/load_fields.hpp"
 #include "contactbench/app/stage_runner.hpp"
 #include "contactbench/app/stages.hpp"
@@ -48,6 +49,12 @@ class SerialRunner final : public StageRunner {
                                                           stage.periodic),
                                     context.threads));
     SolvedLoads done;
+    // The solve at the scene's reference load of the distributions: the first at it (along a path too).
+    std::optional<std::size_t> measured_solve;
+    if (stage.distributions)
+      for (std::size_t k = 0; k < mean_pressures.size() && !measured_solve; ++k)
+        if (std::abs(mean_pressures[k] - stage.distributions->load * estar) <= 1e-12 * mean_pressures[k])
+          measured_solve = k;
     for (std::size_t k = 0; k < mean_pressures.size(); ++k) {
       ContactSolution solution;
       HeightMap attraction;  // a = p - t of an adhesive state, for its fields
@@ -70,6 +77,10 @@ class SerialRunner final : public StageRunner {
                         std::to_string(response.residual) + "; its stiffness is left out (NaN)");
         done.stiffness.push_back(response.converged ? response.stiffness : std::nan(""));
       }
+      if (measured_solve == k)
+        done.distributions =
+            measure_distributions(solution.pressure, solution.gap, solved.grid().dx() * solved.grid().dy(),
+                                  stage.distributions->bins, labellers);
       if (!fields.empty()) {  // as each load is solved, so that a long run leaves what it has done
         write_load_fields(fields, k + 1, solved.grid(),
                           {.pressure = &solution.pressure,
