@@ -358,6 +358,18 @@ void write_report(const std::filesystem::path& folder, const SceneReport& report
                        "contactbench run of scene " + report.scene.name + ", " + m.label + " (" +
                            stamp(provenance) + ")");
       });
+  for (const MethodResult& m : report.methods)
+    if (m.curve.distributions) {
+      const std::string origin = "contactbench run of scene " + report.scene.name + ", " + m.label + " (" +
+                                 stamp(provenance) + "): " + provenance.command;
+      const LoadDistributions& d = *m.curve.distributions;
+      write_file_atomically(folder / (m.label + "_pressure_distribution.csv"),
+                            [&](std::ostream& out) { write_pressure_distribution_csv(out, d, origin); });
+      write_file_atomically(folder / (m.label + "_gap_distribution.csv"),
+                            [&](std::ostream& out) { write_gap_distribution_csv(out, d, origin); });
+      write_file_atomically(folder / (m.label + "_patch_sizes.csv"),
+                            [&](std::ostream& out) { write_patch_sizes_csv(out, d, origin); });
+    }
 }
 
 }  // namespace contactbench

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "contactbench/app/compared_quantity.hpp"
+#include "contactbench/app/distributions_csv.hpp"
 #include "contactbench/app/interface.hpp"
 #include "contactbench/app/scene_error.hpp"
 #include "contactbench/app/surface_source.hpp"
@@ -63,6 +64,9 @@ struct Scene {
   // `compare = [...]`: the quantities compared, the area always first (app/compared_quantity.hpp).
   std::vector<Quantity> compare = {Quantity::area};
   bool compares(Quantity quantity) const;
+  // `distributions = { load, bins }`: the BEM's pressure, gap and patch-size distributions at one of the
+  // loads (app/distributions_csv.hpp); absent: none measured.
+  std::optional<DistributionsSpec> distributions;
   const MethodSpec& method(std::string_view label) const;  // throws Error if absent
 };
 

@@ -249,6 +249,39 @@ std::vector<Quantity> parse_compare(const Section& root) {
   return compare;
 }
 
+// `distributions = { load = <P/(E* A0)>, bins = <count> }`: the reference load of the distributions
+// (app/distributions_csv.hpp), one of the scene's loads, and a BEM to measure them. Absent: none.
+std::optional<DistributionsSpec> parse_distributions(const Section& root, const std::vector<Real>* loads,
+                                                     const std::vector<MethodSpec>& methods) {
+  const toml::table* table = root.subtable(
+      "distributions", false, "a table { load = <one of the scene's loads>, bins = <2..10000> }");
+  if (!table) return std::nullopt;
+  const Section d(*table, "distributions", root.problems());
+  d.reject_unknown({"load", "bins"});
+  const auto load = d.number("load", true, positive("P/(E* A0), one of the scene's loads"));
+  const auto bins = d.integer("bins", false, int_range(2, 10000));
+  if (!load) return std::nullopt;
+  if (loads) {
+    // The same number as written among the loads: equal to the last bits, or a relative 1e-12 for a
+    // value computed differently (a range's).
+    const bool listed = std::any_of(loads->begin(), loads->end(),
+                                    [&](Real l) { return std::abs(l - *load) <= 1e-12 * std::abs(l); });
+    if (!listed) {
+      std::vector<std::string> values;
+      for (const Real l : *loads)
+        values.push_back(exact_number(l));
+      d.problem("load", "the load " + exact_number(*load) + " is not one of the scene's loads",
+                "one of " + join(values));
+    }
+  }
+  const bool bem = std::any_of(methods.begin(), methods.end(),
+                               [](const MethodSpec& m) { return m.method->name() == "bem"; });
+  if (!bem)
+    root.problem("distributions", "the distributions are the BEM's, and this scene has no bem method",
+                 "a [methods.bem] table, or no distributions key");
+  return DistributionsSpec{.load = *load, .bins = bins.value_or(60)};
+}
+
 std::string origin_name(const fs::path& origin) {
   return origin.empty() ? "<scene>" : origin.string();
 }
@@ -289,8 +322,8 @@ Scene parse_scene(std::string_view toml_text, const std::filesystem::path& origi
 Scene parse_scene_table(const toml::table& document, const std::filesystem::path& origin) {
   Problems problems(origin_name(origin));
   const Section root(document, "", problems, true);
-  root.reject_unknown({"name", "description", "reference", "compare", "surface", "material", "interface",
-                       "loads", "methods"});
+  root.reject_unknown({"name", "description", "reference", "compare", "distributions", "surface", "material",
+                       "interface", "loads", "methods"});
 
   Scene scene;
   const auto name =
@@ -308,6 +341,7 @@ Scene parse_scene_table(const toml::table& document, const std::filesystem::path
   const auto loads = parse_loads(root, problems);
   std::vector<std::string> labels;  // every label in the file, also those with problems
   scene.methods = parse_methods(root, surface, scene.interface, folder, labels, problems);
+  scene.distributions = parse_distributions(root, loads ? &loads->loads : nullptr, scene.methods);
   if (const auto reference = root.string("reference", false, "a method label")) {
     if (!reference->empty() && std::find(labels.begin(), labels.end(), *reference) == labels.end())
       root.problem(

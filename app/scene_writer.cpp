@@ -50,6 +50,11 @@ SceneKeys scene_keys(const Scene& scene, bool with_estar) {
     loads.put("values", scene.load_path);
     loads.put("path", std::string("as listed"));
   }
+  if (scene.distributions) {
+    SceneKeys& distributions = root.table("distributions");
+    distributions.put("load", scene.distributions->load);
+    distributions.put("bins", static_cast<std::int64_t>(scene.distributions->bins));
+  }
   SceneKeys& methods = root.table("methods");
   for (const MethodSpec& m : scene.methods) {
     SceneKeys& keys = methods.table(m.label);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "contactbench/app/distributions_csv.hpp"
 #include "contactbench/app/load_fields.hpp"
 #include "contactbench/app/mirrored_boundary.hpp"
 #include "contactbench/app/stage_runner.hpp"
@@ -58,6 +59,12 @@ class SerialRunner final : public StageRunner {
                                         .periodic = false}
                                  : solved.grid();
     SolvedLoads done;
+    // The solve at the scene's reference load of the distributions: the first at it (along a path too).
+    std::optional<std::size_t> measured_solve;
+    if (stage.distributions)
+      for (std::size_t k = 0; k < mean_pressures.size() && !measured_solve; ++k)
+        if (std::abs(mean_pressures[k] - stage.distributions->load * estar) <= 1e-12 * mean_pressures[k])
+          measured_solve = k;
     for (std::size_t k = 0; k < mean_pressures.size(); ++k) {
       ContactSolution solution;
       HeightMap attraction;  // a = p - t of an adhesive state, for its fields
@@ -83,6 +90,10 @@ class SerialRunner final : public StageRunner {
       for (auto& [c, labeller] : labellers)
         done.statistics[c].push_back(contact_statistics(solution, labeller));
       if (stiffness) done.stiffness.push_back(*stiffness);
+      if (measured_solve == k)
+        done.distributions =
+            measure_distributions(solution.pressure, solution.gap, judged.dx() * judged.dy(),
+                                  stage.distributions->bins, labellers);
       if (!fields.empty()) {  // as each load is solved, so that a long run leaves what it has done
         write_load_fields(fields, k + 1, judged,
                           {.pressure = &solution.pressure,

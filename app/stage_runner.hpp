@@ -6,10 +6,12 @@
 
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "contactbench/app/distributions_csv.hpp"
 #include "contactbench/bem/adhesive_solver.hpp"
 #include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
@@ -28,7 +30,8 @@ struct SolvedLoads {
   std::vector<ContactSolution> solutions;  // with an attraction: the repulsive pressure, the net load
   std::map<int, std::vector<ContactStatistics>> statistics;  // by connectivity
   std::vector<AdhesiveLoad> adhesive;                        // with an attraction, per load
-  std::vector<Real> stiffness;     // with BemStage::stiffness: K = -dP/dd [Pa/m] per load
+  std::vector<Real> stiffness;                         // with BemStage::stiffness: K = -dP/dd [Pa/m] per load
+  std::optional<MeasuredDistributions> distributions;  // with BemStage::distributions
   std::size_t bytes_per_rank = 0;  // the largest memory one rank held; 0 when solved by one process
 };
 

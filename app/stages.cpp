@@ -76,6 +76,7 @@ std::string BemStage::name() const {
       text << " rho " << adhesion->range << " m";
   }
   if (stiffness) text << ", with the linearised stiffness";
+  if (distributions) text << ", with the distributions at load " << distributions->load;
   if (settings.extrapolate) text << ", again on twice the points a side for the extrapolated area";
   if (settings.extrapolate && settings.error_estimate == ErrorEstimate::gci3)
     text << " and on a third grid for its error bar";
@@ -89,6 +90,9 @@ std::string BemStage::name() const {
 bool BemStage::operator==(const BemStage& other) const {
   return periodic == other.periodic && hardness == other.hardness && adhesion == other.adhesion &&
          load_path == other.load_path && stiffness == other.stiffness &&
+         distributions.has_value() == other.distributions.has_value() &&
+         (!distributions || (distributions->load == other.distributions->load &&
+                             distributions->bins == other.distributions->bins)) &&
          same_settings(bem_settings(), SettingScope::solve, settings, other.settings);
 }
 
@@ -140,6 +144,7 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
   products.statistics = std::move(loads.statistics);
   products.adhesive = std::move(loads.adhesive);
   products.stiffness = std::move(loads.stiffness);
+  products.distributions = std::move(loads.distributions);
   products.bytes_per_rank = loads.bytes_per_rank;
   if (stage.settings.extrapolate) {
     // The same surface on twice the points a side (the method's preflight refuses a non-periodic one):
@@ -150,6 +155,7 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
     // The stiffness is the first grid's (as the mean gap): not solved again on the finer one.
     BemStage fine_stage = stage;
     fine_stage.stiffness = false;
+    fine_stage.distributions.reset();  // the first grid's, as the mean gap
     SolvedLoads fine_loads =
         context.runner().solve_loads(fine_stage, fine, estar, mean_pressures, connectivities, "", context);
     products.fine_solutions = std::move(fine_loads.solutions);
@@ -167,7 +173,7 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
                           : refine(surface, products.third_nx, products.third_ny, context.threads);
       if (third.grid().periodic != stage.periodic) third = third.with_periodic(stage.periodic);
       SolvedLoads third_loads =
-          context.runner().solve_loads(stage, third, estar, mean_pressures, connectivities, "", context);
+          context.runner().solve_loads(fine_stage, third, estar, mean_pressures, connectivities, "", context);
       products.third_solutions = std::move(third_loads.solutions);
       products.third_statistics = std::move(third_loads.statistics);
       products.bytes_per_rank = std::max(products.bytes_per_rank, third_loads.bytes_per_rank);

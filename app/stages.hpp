@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "contactbench/app/distributions_csv.hpp"
 #include "contactbench/app/methods/bem_settings.hpp"
 #include "contactbench/app/run_observer.hpp"
 #include "contactbench/bem/adhesive_solver.hpp"
@@ -54,6 +55,9 @@ struct BemStage {
   // The contact stiffness of each converged state (bem/contact_stiffness.hpp): only when the scene compares
   // it (Scene::compare), an extra linear solve per load.
   bool stiffness = false;
+  // The scene's `distributions`: at this load (P/(E* A0)) the histograms of pressure and gap and the cluster
+  // sizes (app/distributions_csv.hpp) are measured from the fields before they are dropped. Absent: none.
+  std::optional<DistributionsSpec> distributions;
   std::string name() const;  // e.g. "bem (active_set, periodic, tolerance 1e-08)"
   // Methods that ask for equal solves share one.
   bool operator==(const BemStage& other) const;
@@ -72,6 +76,7 @@ struct BemProducts {
       load_path;  // the path solved (BemStage::load_path): solutions are in its order; empty: none
   std::vector<AdhesiveLoad> adhesive;  // per load, with an attraction
   std::vector<Real> stiffness;  // K = -dP/dd [Pa/m] per load, with BemStage::stiffness; empty otherwise
+  std::optional<MeasuredDistributions> distributions;  // with BemStage::distributions
   // With BemStage::extrapolate: the same loads solved on twice the points a side (fields dropped too).
   std::vector<ContactSolution> fine_solutions;
   std::vector<AdhesiveLoad> fine_adhesive;

@@ -22,6 +22,7 @@
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/memory_budget.hpp"
 #include "contactbench/core/scales.hpp"
+#include "contactbench/theories/persson.hpp"
 
 namespace contactbench {
 
@@ -314,7 +315,8 @@ class BemMethod final : public Method {
                    .periodic = products.periodic,
                    .hardness = products.hardness,
                    .adhesion = products.adhesion,
-                   .load_path = products.load_path};
+                   .load_path = products.load_path,
+                   .distributions = std::nullopt};
     curve.parameters =
         "BEM " + stage.name().substr(4) +
         (settings_.extrapolate ? std::string(", perimeter-corrected area in area_fraction_corrected")
@@ -336,7 +338,28 @@ class BemMethod final : public Method {
                     " nodes, error bar Roache's two-grid GCI 3 |N(2n) - N(n)| (docs/theory.md section 9.2); "
                     "spots and separation of the finer grid";
     if (products.adhesion) add_adhesive_columns(products, in.scene.material.estar, curve);
+    if (products.distributions) add_distributions(products, in, curve);
     return curve;
+  }
+
+  // The distributions the stage measured at the scene's reference load, the clusters by this method's
+  // connectivity, beside Persson's P(sigma) over the scene surface's spectrum (theories/persson_gap.hpp).
+  void add_distributions(const BemProducts& products, const MethodInputs& in, MethodCurve& curve) const {
+    const MeasuredDistributions& m = *products.distributions;
+    LoadDistributions d{.load = in.scene.distributions->load,
+                        .estar = in.scene.material.estar,
+                        .q3_integral = persson_q3_integral(fourier_coefficients(in.surface)),
+                        .pixel_area = m.pixel_area,
+                        .points = m.points,
+                        .contact_points = m.contact_points,
+                        .mean_pressure = m.mean_pressure,
+                        .mean_gap = m.mean_gap,
+                        .connectivity = settings_.connectivity,
+                        .pressure = m.pressure,
+                        .gap = m.gap,
+                        .patch_sizes = patch_size_histogram(m.cluster_areas.at(settings_.connectivity),
+                                                            in.scene.distributions->bins)};
+    curve.distributions = std::move(d);
   }
 
   // Along a load path, one row per step (the report's <label>_path.csv): the load, whether the step loads

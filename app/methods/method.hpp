@@ -109,6 +109,9 @@ struct MethodCurve {
   // path's order (the BEM's loops of loading and unloading): a run writes them as <label>_path.csv. Empty:
   // no path, or a method whose answer does not depend on it.
   std::vector<std::pair<std::string, std::vector<Real>>> path_columns;
+  // At the scene's `distributions` load, the BEM's pressure, gap and patch-size distributions: a run writes
+  // them as <label>_pressure_distribution.csv, _gap_distribution.csv and _patch_sizes.csv.
+  std::optional<LoadDistributions> distributions;
 
   // From a library's curve: checks that it answers at `loads` (Error otherwise) and drops its copy of them.
   static MethodCurve from(const LoadAreaCurve& curve, const std::vector<Real>& loads);
