@@ -91,9 +91,8 @@ class SerialRunner final : public StageRunner {
         done.statistics[c].push_back(contact_statistics(solution, labeller));
       if (stiffness) done.stiffness.push_back(*stiffness);
       if (measured_solve == k)
-        done.distributions =
-            measure_distributions(solution.pressure, solution.gap, judged.dx() * judged.dy(),
-                                  stage.distributions->bins, labellers);
+        done.distributions = measure_distributions(solution.pressure, solution.gap, judged.dx() * judged.dy(),
+                                                   stage.distributions->bins, labellers);
       if (!fields.empty()) {  // as each load is solved, so that a long run leaves what it has done
         write_load_fields(fields, k + 1, judged,
                           {.pressure = &solution.pressure,
