@@ -87,10 +87,15 @@ class BemMethod final : public Method {
     if (settings_.node_area)
       return "area_fraction_nodes (contact nodes / all nodes, as a node-based finite-element model reports "
              "it; area = \"nodes\")";
+    if (settings_.extrapolate && settings_.error_estimate == ErrorEstimate::gci3)
+      return "area_fraction_extrapolated (the node counts on three grids, Richardson-extrapolated at the "
+             "observed "
+             "order; its error bar, Roache's grid convergence index, is area_fraction_error; docs/theory.md "
+             "section 9.2)";
     if (settings_.extrapolate)
       return "area_fraction_extrapolated (the node counts on the grid and on twice its points a side, "
-             "Richardson-extrapolated at order 1; its error estimate is area_fraction_error; docs/theory.md "
-             "section 9)";
+             "Richardson-extrapolated at order 1; its error bar, the two-grid GCI, is area_fraction_error; "
+             "docs/theory.md section 9.2)";
     return "area_fraction_corrected (contact nodes less the perimeter band of Yastrebov, Anciaux and "
            "Molinari 2017; the node count is area_fraction_nodes)";
   }
