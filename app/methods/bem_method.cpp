@@ -232,21 +232,8 @@ class BemMethod final : public Method {
                          "attraction are two fixed points it does not couple)",
                          "one of the two, or ignore = [\"hardness\"] or [\"adhesion\"] in [methods." +
                              std::string(name()) + "]");
-    if (const std::optional<Real> hardness = check.interface.hardness) {
-      // A mean pressure at or above H is full plastic contact: nothing to solve (bem/bem_solver.hpp).
-      std::vector<std::string> refused;
-      for (std::size_t k = 0; k < check.scene.loads.size(); ++k)
-        if (check.scene.loads[k] * check.scene.material.estar >= *hardness)
-          refused.push_back(exact_number(check.scene.loads[k]) + " (load " + std::to_string(k + 1) + ")");
-      if (!refused.empty())
-        check.problems.add(0, "interface.hardness",
-                           "the hardness " + exact_number(*hardness) +
-                               " Pa is at or below the mean pressure " + "P/A0 = load E* of the loads " +
-                               join(refused) + ": full plastic contact, which has no solution to compute",
-                           "a hardness above " +
-                               exact_number(check.scene.loads.back() * check.scene.material.estar) +
-                               " Pa (the largest load times E*), or loads below hardness/E*");
-    }
+    // A mean pressure at or above H is full plastic contact: nothing to solve (bem/bem_solver.hpp).
+    check_hardness_above_loads(check, ": full plastic contact, which has no solution to compute");
   }
 
   MethodCurve evaluate(const MethodInputs& in) const override {

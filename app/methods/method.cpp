@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "contactbench/app/problems.hpp"
+#include "contactbench/app/scene_text.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench {
@@ -42,6 +44,22 @@ MethodCurve MethodCurve::from(const LoadAreaCurve& curve, const std::vector<Real
   answer.spots = per_load(curve.spots);
   answer.parameters = curve.parameters;
   return answer;
+}
+
+void check_hardness_above_loads(const MethodCheck& check, const std::string& consequence) {
+  const std::optional<Real> hardness = check.interface.hardness;
+  if (!hardness) return;
+  std::vector<std::string> refused;
+  for (std::size_t k = 0; k < check.scene.loads.size(); ++k)
+    if (check.scene.loads[k] * check.scene.material.estar >= *hardness)
+      refused.push_back(exact_number(check.scene.loads[k]) + " (load " + std::to_string(k + 1) + ")");
+  if (!refused.empty())
+    check.problems.add(
+        0, "interface.hardness",
+        "the hardness " + exact_number(*hardness) +
+            " Pa is at or below the mean pressure P/A0 = load E* of the loads " + join(refused) + consequence,
+        "a hardness above " + exact_number(check.scene.loads.back() * check.scene.material.estar) +
+            " Pa (the largest load times E*), or loads below hardness/E*");
 }
 
 }  // namespace contactbench

@@ -145,4 +145,9 @@ class Method {
   virtual MethodCurve evaluate(const MethodInputs& inputs) const = 0;
 };
 
+// With a hardness H: one problem at interface.hardness naming every load whose mean pressure P/A0 = load E*
+// is at or above H, `consequence` saying what that means for the method (the BEM and every plastic theory
+// refuse it alike). Nothing without a hardness.
+void check_hardness_above_loads(const MethodCheck& check, const std::string& consequence);
+
 }  // namespace contactbench
