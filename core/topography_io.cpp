@@ -112,26 +112,21 @@ TopographyReading read_topography_reading(const std::filesystem::path& path,
     return formats::reading_from_channels(path, formats::read_plain_matrix(path, lines), format, options);
   if (format == TopographyFormat::xyz_points)
     return formats::reading_from_channels(path, formats::read_xyz_points(path, lines), format, options);
+  if (format == TopographyFormat::interferometer)
+    return formats::reading_from_channels(path, formats::read_interferometer(path, lines, options), format,
+                                          options);
+  if (format == TopographyFormat::gwyddion)
+    return formats::reading_from_channels(path, formats::read_gwyddion(path, lines, options), format,
+                                          options);
+  // The project's own format: one channel, every height stated, its own unit (metres).
   if (options.unit)
-    throw InputError(
-        path, 0,
-        "a " + std::string(to_string(format)) +
-            " file states its own unit; a unit (--unit, unit = \"...\") is only for files that state "
-            "none (npy, plain or CSV matrices, x y z point lists)");
-  // Text formats hold one channel, called "height" (index 0).
+    throw InputError(path, 0,
+                     "a project file states its own unit (m); a unit (--unit, unit = \"...\") is only for "
+                     "files that state none (npy, plain or CSV matrices, x y z point lists)");
   if (options.channel && *options.channel != "height" && *options.channel != "0")
     throw InputError(path, 0, "unknown channel '" + *options.channel + "'; the file's channels: 0 'height'");
-  Surface surface = [&] {
-    switch (format) {
-      case TopographyFormat::project:
-        return formats::read_project(path, lines, options);
-      case TopographyFormat::interferometer:
-        return formats::read_interferometer(path, lines, options);
-      default:
-        return formats::read_gwyddion(path, lines, options);
-    }
-  }();
-  // The text formats with a header hold no invalid points: their region and levelling apply to the surface.
+  Surface surface = formats::read_project(path, lines, options);
+  // The project format holds no invalid points: its region and levelling apply to the surface.
   std::string crop = "none";
   if (options.crop) {
     std::vector<Real> values(static_cast<std::size_t>(surface.nx() * surface.ny()));

@@ -284,17 +284,35 @@ TEST_F(TopographyIoFiles, NanAndInfInAMatrixAreInvalidPoints) {
   EXPECT_EQ(read_topography(write("inf.txt", "1 -inf\n2 3\n"), options).heights()(0, 1), 2.0);
 }
 
-TEST_F(TopographyIoFiles, InfWithAHeaderIsRejected) {
-  TopographyReadOptions options;
-  options.lx = 1e-6;
-  expect_input_error(write("inf.txt", "# Width: 1 um\n# Height: 1 um\n# Value units: m\n1 -inf\n2 3\n"), 4,
-                     "not finite");
-  expect_input_error(write("overflow.txt", "1 2\n1e999 3\n"), 2, "out of the range", options);
-  // A finite value that the height factor pushes beyond the largest double.
+TEST_F(TopographyIoFiles, NanAndInfWithAHeaderAreInvalidPoints) {
+  // docs/formats.md "invalid points": Inf is an invalid point in every format that can hold it, the text
+  // formats with a header included (Gwyddion's export writes unmeasured points as NaN).
+  const std::string gwyddion = "# Width: 1 um\n# Height: 1 um\n# Value units: nm\n1 -inf\n2 3\n";
+  const std::string interferometer = "h=2 w=2\npixel size=0.5 um\ndata unit=nm\n1 NaN\n2 3\n";
+  for (const auto& [name, text] :
+       {std::pair{"gwyddion_inf.txt", gwyddion}, std::pair{"interferometer_nan.txt", interferometer}}) {
+    SCOPED_TRACE(name);
+    expect_input_error(write(name, text), 0, "1 of 4 points of channel 'height' are invalid");
+    TopographyReadOptions options;
+    options.fill = FillMethod::mean;
+    const TopographyReading reading = read_topography_reading(write(name, text), options);
+    // The mean of 1, 2 and 3 nm, filled in metres: exact to one rounding of the nm scale.
+    EXPECT_NEAR(reading.surface.heights()(0, 1), 2e-9, 1e-24);
+    EXPECT_EQ(reading.surface.grid().lx, 1e-6);
+  }
+  // A finite value is refused, naming the line, when the height factor pushes it beyond the largest double.
   expect_input_error(write("scaled.txt",
                            "h=1 w=1\npixel size=1 um\ndata unit=rad\n"
                            "height conversion factor (-> m)=1e10\n1e300\n"),
                      5, "not finite");
+  TopographyReadOptions options;
+  options.lx = 1e-6;
+  expect_input_error(write("overflow.txt", "1 2\n1e999 3\n"), 2, "out of the range", options);
+  // The project's own format states every height (its writer writes finite values only): NaN is refused.
+  expect_input_error(write("project_nan.txt",
+                           "# contactbench surface v1\n# nx=2 ny=1 lx=1e-6 ly=5e-7 periodic=false unit=m\n"
+                           "1 nan\n"),
+                     3, "not finite");
 }
 
 TEST_F(TopographyIoFiles, MissingSizeIsRejected) {

@@ -1,5 +1,6 @@
 // Gwyddion's text export (docs/formats.md "The text formats"): '#' header lines "# Channel: ...",
-// "# Width: L UNIT", "# Height: L UNIT", "# Value units: UNIT" (keys in any capitals), then the rows.
+// "# Width: L UNIT", "# Height: L UNIT", "# Value units: UNIT" (keys in any capitals), then the rows; NaN and
+// Inf mark invalid points (Gwyddion writes masked or unmeasured points so), handled by the channels.
 #include <optional>
 #include <string>
 #include <utility>
@@ -15,8 +16,8 @@ namespace contactbench::formats {
 
 namespace fs = std::filesystem;
 
-Surface read_gwyddion(const fs::path& path, std::span<const Line> lines,
-                      const TopographyReadOptions& options) {
+RawTopography read_gwyddion(const fs::path& path, std::span<const Line> lines,
+                            const TopographyReadOptions& options) {
   std::size_t header_size = 0;
   while (header_size < lines.size() && lines[header_size].text.starts_with('#'))
     ++header_size;
@@ -48,9 +49,9 @@ Surface read_gwyddion(const fs::path& path, std::span<const Line> lines,
   check_agrees(path, height.line, "ly", ly, options.ly);
   const Real scale = length_unit_or_throw(path, value_units.line, "Value units", value_units.value);
 
-  DataBlock block =
-      parse_data(path, lines.subspan(header_size), scale, std::nullopt, " after the " + header_name);
-  return make_surface(std::move(block), lx, ly, options.periodic.value_or(false));
+  DataBlock block = parse_data(path, lines.subspan(header_size), scale, std::nullopt,
+                               " after the " + header_name, header_text_syntax());
+  return single_height_channel(std::move(block), std::string(value_units.value), lx, ly);
 }
 
 }  // namespace contactbench::formats

@@ -63,6 +63,12 @@ void for_each_value(std::string_view text, const RowSyntax& syntax, Visit&& visi
 
 }  // namespace
 
+RowSyntax header_text_syntax() {
+  RowSyntax syntax;
+  syntax.non_finite_invalid = true;
+  return syntax;
+}
+
 RowSyntax matrix_syntax(std::string_view first_line) {
   RowSyntax syntax;
   syntax.non_finite_invalid = true;
@@ -114,6 +120,17 @@ Surface make_surface(DataBlock block, Real lx, Real ly, bool periodic) {
   const Grid grid{block.cols, block.rows, lx, ly, periodic};
   HeightMap heights = Eigen::Map<const HeightMap>(block.values.data(), block.rows, block.cols);
   return Surface(grid, std::move(heights));
+}
+
+RawTopography single_height_channel(DataBlock block, std::string unit, std::optional<Real> lx,
+                                    std::optional<Real> ly) {
+  Channel channel = make_channel("height", true, std::move(unit), block.cols, block.rows);
+  channel.values = std::move(block.values);
+  channel.lx = lx;
+  channel.ly = ly;
+  RawTopography topography;
+  topography.channels.push_back(std::move(channel));
+  return topography;
 }
 
 }  // namespace contactbench::formats

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "contactbench/core/formats/raw_topography.hpp"
 #include "contactbench/core/formats/text_lines.hpp"
 #include "contactbench/core/surface.hpp"
 
@@ -30,14 +31,17 @@ struct DataBlock {
   Index cols = 0;
 };
 
-// How the rows are written. The formats with a header state every height, so NaN and Inf there are refused;
-// matrices and point lists (which go through channels, docs/formats.md "invalid points") mark invalid points
+// How the rows are written. The project's own format states every height, so NaN and Inf there are refused;
+// the other text formats (which go through channels, docs/formats.md "invalid points") mark invalid points
 // with them.
 struct RowSyntax {
   char separator = ' ';        // ' ': blanks (spaces, tabs); ',' or ';': that character, blanks around it
   bool decimal_comma = false;  // "1,5" is 1.5 (semicolon-separated files of locales that write so)
   bool non_finite_invalid = false;
 };
+
+// The rows of a text format with a header (interferometer, Gwyddion): blank-separated, NaN and Inf invalid.
+RowSyntax header_text_syntax();
 
 // The separator of a matrix or point list, from its first line: ';' if it has one, else ',' if it has one,
 // else blanks; with ';' a comma inside a value is a decimal comma.
@@ -50,5 +54,10 @@ DataBlock parse_data(const std::filesystem::path& path, std::span<const Line> li
                      const RowSyntax& syntax = {});
 
 Surface make_surface(DataBlock block, Real lx, Real ly, bool periodic);
+
+// A file's one channel, "height", of the block's heights in metres, with the sizes the file states (none: the
+// caller gives them); `unit` names the file's own unit in messages.
+RawTopography single_height_channel(DataBlock block, std::string unit, std::optional<Real> lx,
+                                    std::optional<Real> ly);
 
 }  // namespace contactbench::formats

@@ -43,8 +43,8 @@ std::vector<std::pair<std::string_view, std::string_view>> key_value_pairs(std::
 
 }  // namespace
 
-Surface read_interferometer(const fs::path& path, std::span<const Line> lines,
-                            const TopographyReadOptions& options) {
+RawTopography read_interferometer(const fs::path& path, std::span<const Line> lines,
+                                  const TopographyReadOptions& options) {
   // The header is the leading run of key=value lines; data rows never contain '='.
   std::size_t header_size = 0;
   while (header_size < lines.size() && lines[header_size].text.find('=') != std::string_view::npos)
@@ -105,9 +105,10 @@ Surface read_interferometer(const fs::path& path, std::span<const Line> lines,
   const PromisedShape promised{
       rows, columns, "h=" + std::to_string(rows) + " (line " + std::to_string(h.line) + ")",
       "w=" + std::to_string(columns) + " (line " + std::to_string(w.line) + ")", h.line};
-  DataBlock block =
-      parse_data(path, lines.subspan(header_size), scale, promised, " after the " + header_name);
-  return make_surface(std::move(block), lx, ly, options.periodic.value_or(false));
+  DataBlock block = parse_data(path, lines.subspan(header_size), scale, promised, " after the " + header_name,
+                               header_text_syntax());
+  return single_height_channel(std::move(block), std::string(factor.line != 0 ? "m" : data_unit.value), lx,
+                               ly);
 }
 
 }  // namespace contactbench::formats

@@ -12,11 +12,7 @@ namespace contactbench::formats {
 
 RawTopography read_plain_matrix(const std::filesystem::path& path, std::span<const Line> lines) {
   DataBlock block = parse_data(path, lines, 1.0, std::nullopt, "", matrix_syntax(lines.front().text));
-  Channel channel = make_channel("height", true, "", block.cols, block.rows);
-  channel.values = std::move(block.values);
-  RawTopography topography;
-  topography.channels.push_back(std::move(channel));
-  return topography;
+  return single_height_channel(std::move(block), "", std::nullopt, std::nullopt);
 }
 
 }  // namespace contactbench::formats

@@ -24,12 +24,13 @@ Surface read_project(const std::filesystem::path& path, std::span<const Line> li
 // A field file of the project's format (write_field): its values as they are, with quantity and unit; a
 // surface file reads as quantity "height", unit "m".
 Field read_project_field(const std::filesystem::path& path, std::span<const Line> lines);
-Surface read_interferometer(const std::filesystem::path& path, std::span<const Line> lines,
+// The other text formats return their one channel, "height", heights in metres, for the channels' sizes,
+// unit, invalid points (NaN and Inf), region and levelling (channels.hpp). Those with a header carry their
+// sizes (checked against the caller's here, naming the header's line).
+RawTopography read_interferometer(const std::filesystem::path& path, std::span<const Line> lines,
+                                  const TopographyReadOptions& options);
+RawTopography read_gwyddion(const std::filesystem::path& path, std::span<const Line> lines,
                             const TopographyReadOptions& options);
-Surface read_gwyddion(const std::filesystem::path& path, std::span<const Line> lines,
-                      const TopographyReadOptions& options);
-// The formats without a header (no sizes, no unit) return their one channel, "height", for the channels'
-// sizes, unit, invalid points and levelling (channels.hpp).
 RawTopography read_plain_matrix(const std::filesystem::path& path, std::span<const Line> lines);
 RawTopography read_xyz_points(const std::filesystem::path& path, std::span<const Line> lines);
 
