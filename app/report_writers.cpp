@@ -173,6 +173,7 @@ void write_summary_json(std::ostream& out, const SceneReport& report, const Comp
   surface.add("m0", report.moments.m0).add("m2x", report.moments.m2x).add("m2y", report.moments.m2y);
   surface.add("m4x", report.moments.m4x).add("m4y", report.moments.m4y);
   surface.add("rms_gradient", comparison.rms_gradient);
+  if (!report.line_scan.empty()) surface.add("line_scan", report.line_scan);
   root.add("surface", std::move(surface));
   if (report.ranks > 1) {  // run as several MPI ranks (docs/mpi.md)
     JsonObject distributed;
@@ -244,10 +245,13 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
                     const Provenance& provenance) {
   out << "# " << report.scene.name << ": real contact area against load\n\n";
   if (!report.scene.description.empty()) out << report.scene.description << "\n\n";
-  out << "Surface " << report.grid.nx << " x " << report.grid.ny << " points, "
-      << table_number(report.grid.lx * 1e6) << " x " << table_number(report.grid.ly * 1e6) << " um, "
-      << (report.grid.periodic ? "periodic" : "non-periodic")
-      << "; E* = " << table_number(report.scene.material.estar)
+  if (!report.line_scan.empty())
+    out << report.line_scan;
+  else
+    out << "Surface " << report.grid.nx << " x " << report.grid.ny << " points, "
+        << table_number(report.grid.lx * 1e6) << " x " << table_number(report.grid.ly * 1e6) << " um, "
+        << (report.grid.periodic ? "periodic" : "non-periodic");
+  out << "; E* = " << table_number(report.scene.material.estar)
       << " Pa; areal rms gradient gbar = " << table_number(comparison.rms_gradient)
       << ". Loads are P/(E* A0); kappa is the areal kappa (A/A0)/(p/(E* gbar)) at the smallest load, "
       << table_number(comparison.kappa_load) << " (docs/theory.md section 0)."

@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "contactbench/app/line_scan_surface.hpp"
 #include "contactbench/app/problems.hpp"
 #include "contactbench/app/scene_plan.hpp"
 #include "contactbench/app/stage_runner.hpp"
@@ -74,27 +75,47 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
 
   // The inputs every preflight reads: the surface (heights from the mean plane) and its moments.
   std::optional<Surface> made;
-  run_stage(report, observer, "surface", [&] { made = make_surface(scene.surface, options.threads); });
+  std::optional<LineScanSurface> line_scan;
+  run_stage(report, observer, "surface", [&] {
+    if (is_line_scan(scene.surface)) {
+      line_scan = read_line_scan_surface(scene.surface);
+      made = line_scan->profile;
+      report.line_scan = describe(*line_scan);
+    } else {
+      made = make_surface(scene.surface, options.threads);
+    }
+  });
   const Surface& surface = *made;
   report.grid = surface.grid();
   const ScenePlan plan = plan_scene(scene, surface.grid());
   double moments_seconds = 0;
   if (plan.moments)
-    moments_seconds = run_stage(report, observer, "moments",
-                                [&] { report.moments = spectral_moments(surface, options.threads); });
+    moments_seconds = run_stage(report, observer, "moments", [&] {
+      report.moments = line_scan ? line_scan->moments : spectral_moments(surface, options.threads);
+    });
 
   // Every preflight, before any stage: one SceneError lists every problem of every method.
   Problems problems(origin_of(scene));
   check_effects(scene, problems);
   for (const MethodSpec& m : scene.methods) {
-    const InterfaceSpec interface = method_context(plan.context, scene, m).interface;
+    const SceneContext context = method_context(plan.context, scene, m);
+    if (line_scan && m.method->needs(context).heights_over_an_area) {
+      problems.add(0, "methods." + m.label,
+                   "the method " + std::string(m.name()) +
+                       " needs heights over an area, and the surface is a line scan (one profile): only "
+                       "the methods that read the surface's moments alone run on it",
+                   "a 2-D file of the surface, or the analytic theories (gw_mccool, bgt, bgt_linear, "
+                   "persson)");
+      continue;
+    }
     m.method->preflight(MethodCheck{.scene = scene,
-                                    .interface = interface,
+                                    .interface = context.interface,
                                     .surface = surface,
                                     .moments = report.moments,
                                     .key = "methods." + m.label,
                                     .problems = problems,
-                                    .fields_folder = options.fields_folder});
+                                    .fields_folder = options.fields_folder,
+                                    .line_scan = line_scan ? &line_scan->statistics : nullptr});
   }
   // A BEM stage the runner cannot do (e.g. an option the distributed solver lacks) is refused here, before
   // any work, with the reason: never run with another solver than the scene says.

@@ -40,9 +40,13 @@ struct MethodResult {
 };
 
 struct SceneReport {
-  Scene scene;                        // as run: its loads are the loads of every curve, held once
-  Grid grid;                          // of the scene's surface (before any refinement a method asks for)
-  SpectralMoments moments;            // of the scene's surface (profile moments, docs/theory.md section 1)
+  Scene scene;              // as run: its loads are the loads of every curve, held once
+  Grid grid;                // of the scene's surface (before any refinement a method asks for)
+  SpectralMoments moments;  // of the scene's surface (profile moments, docs/theory.md section 1)
+  // When the surface is a line scan (app/line_scan_surface.hpp): what the report says of it; `grid` is then
+  // the profile's one row and `moments` those of the isotropic surface it samples. Empty: heights over an
+  // area.
+  std::string line_scan;
   std::vector<StageRecord> stages;    // every stage that ran, in order
   std::vector<MethodResult> methods;  // in the scene's order
   int threads = 1;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "contactbench/core/error.hpp"
 
@@ -49,6 +50,12 @@ ProfileStatistics profile_statistics(std::span<const Real> x, std::span<const Re
     s.rms_curvature = std::sqrt(curvatures / static_cast<Real>(n - 2));
   }
   return s;
+}
+
+SpectralMoments isotropic_moments(const ProfileStatistics& profile) {
+  const Real m4 = profile.rms_curvature ? *profile.rms_curvature * *profile.rms_curvature
+                                        : std::numeric_limits<Real>::quiet_NaN();
+  return {.m0 = profile.m0(), .m2x = profile.m2(), .m4x = m4, .m2y = profile.m2(), .m4y = m4};
 }
 
 }  // namespace contactbench

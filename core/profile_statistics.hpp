@@ -5,6 +5,7 @@
 #include <optional>
 #include <span>
 
+#include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/types.hpp"
 
 namespace contactbench {
@@ -25,5 +26,10 @@ struct ProfileStatistics {
 
 // Throws Error for fewer than three points or x not strictly increasing.
 ProfileStatistics profile_statistics(std::span<const Real> x, std::span<const Real> h);
+
+// The moments of the isotropic surface whose every profile has these statistics (docs/theory.md section 1:
+// for an isotropic surface the profile moments are the same in every direction): m0, and m2 and m4 the same
+// along x and y. m4 is NaN when the sampling is not uniform (no curvature): the theories that read it refuse.
+SpectralMoments isotropic_moments(const ProfileStatistics& profile);
 
 }  // namespace contactbench

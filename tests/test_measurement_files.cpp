@@ -244,19 +244,32 @@ TEST_F(MeasurementFiles, LineScansGiveProfileStatisticsToTheirReferenceValues) {
   expect_refusal(run("stats " + dektak.string() + " --unit nm"), dektak, "states the heights' unit ('um')");
 }
 
-TEST_F(MeasurementFiles, MethodsAndConvertRefuseALineScanSayingWhy) {
+TEST_F(MeasurementFiles, ConvertAndAreaMethodsRefuseALineScanWhichDrivesTheTheories) {
   const fs::path input = samples / "xy-1.txt";
-  const std::string why = "is a line scan (a profile along one line), not a surface";
+  const std::string before = md5_of(input);
   expect_refusal(run("convert " + input.string() + " " + (folder_ / "out.txt").string() + " --unit um"),
-                 input, why);
-  const fs::path scene =
-      write("scan.toml", "name = \"scan\"\n[surface]\nfile = \"" + input.string() +
-                             "\"\nunit = \"um\"\n[material]\nE = 100e9\nnu = 0.3\n[loads]\n"
-                             "values = [1e-3]\n[methods.persson]\n");
-  const CommandResult result =
-      run("run " + scene.string() + " --out " + (folder_ / "r").string() + " --no-plots --quiet");
-  EXPECT_EQ(result.status, 1) << result.err;
-  EXPECT_NE(result.err.find(why), std::string::npos) << result.err;
+                 input, "is a line scan (a profile along one line), not a surface");
+  // A scene over the scan: Persson's theory (which reads m2 alone) runs on the isotropic surface the profile
+  // samples, and says so; the BEM needs heights over an area and is refused, naming why.
+  const std::string head = "name = \"scan\"\n[surface]\nfile = \"" + input.string() +
+                           "\"\nunit = \"um\"\nlevel = \"plane\"\n[material]\nE = 100e9\nnu = 0.3\n[loads]\n"
+                           "values = [1e-3]\n[methods.persson]\n";
+  const CommandResult ran = run("run " + write("scan.toml", head).string() + " --out " +
+                                (folder_ / "r").string() + " --no-plots --quiet");
+  ASSERT_EQ(ran.status, 0) << ran.err;
+  const std::string table = slurp(folder_ / "r" / "table.md");
+  EXPECT_NE(table.find("Line scan (x h text) of 132 points over 187.2 um, unevenly sampled (no m4), levelled "
+                       "plane"),
+            std::string::npos)
+      << table;
+  const CommandResult refused = run("run " + write("bem.toml", head + "[methods.bem]\n").string() +
+                                    " --out " + (folder_ / "b").string() + " --no-plots --quiet");
+  EXPECT_EQ(refused.status, 1) << refused.err;
+  EXPECT_NE(refused.err.find("methods.bem: the method bem needs heights over an area, and the surface is a "
+                             "line scan"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_EQ(md5_of(input), before);
 }
 
 TEST_F(MeasurementFiles, CropAndRowAlignmentAreRecordedByStatsAndScenes) {

@@ -21,6 +21,7 @@
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/stages.hpp"
 #include "contactbench/core/load_area_curve.hpp"
+#include "contactbench/core/profile_statistics.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/sweep.hpp"
 
@@ -48,6 +49,10 @@ struct MethodNeeds {
   std::optional<SweepStage> sweep = std::nullopt;
   std::optional<BemStage> bem = std::nullopt;
   int bem_connectivity = 4;  // the spot count this method reads from the BEM stage's contact maps
+  // Whether it reads heights over an area (the sweep, the BEM, a fit to the surface's spectrum): then a line
+  // scan, one profile, cannot drive it. The analytic theories read the moments alone (docs/formats.md "line
+  // scans": a profile's moments are those of the isotropic surface it is a profile of).
+  bool heights_over_an_area = true;
 };
 
 // What a preflight sees: everything known before the first stage (the surface and its moments are the
@@ -61,6 +66,9 @@ struct MethodCheck {
   Problems& problems;
   // RunOptions::fields_folder: where a relative `fields` prefix lands (empty: the working directory).
   std::filesystem::path fields_folder = {};
+  // The scene's surface is a line scan: `surface` is its profile as one row and `moments` those of the
+  // isotropic surface it is a profile of (app/surface_source.hpp). Null: heights over an area.
+  const ProfileStatistics* line_scan = nullptr;
   void problem(std::string_view key_suffix, std::string_view reason, std::string_view accepted = {}) const;
 };
 

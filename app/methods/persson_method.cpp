@@ -22,7 +22,8 @@ std::unique_ptr<Method> make_persson_method() {
         }
         curve.parameters += "; mean gap and stiffness with gamma = " + std::to_string(persson.gamma()) +
                             " over the surface's lattice spectrum";
-      });
+      },
+      true);
 }
 
 }  // namespace contactbench

@@ -18,7 +18,11 @@ void AnalyticTheoryMethod::write(SceneKeys& keys) const {
 }
 
 MethodNeeds AnalyticTheoryMethod::needs(const SceneContext&) const {
-  return {.moments = true, .sweep = std::nullopt, .bem = std::nullopt, .bem_connectivity = 4};
+  return {.moments = true,
+          .sweep = std::nullopt,
+          .bem = std::nullopt,
+          .bem_connectivity = 4,
+          .heights_over_an_area = false};
 }
 
 SpectralMoments AnalyticTheoryMethod::seen(const SpectralMoments& m) const {
@@ -28,6 +32,25 @@ SpectralMoments AnalyticTheoryMethod::seen(const SpectralMoments& m) const {
 }
 
 void AnalyticTheoryMethod::preflight(const MethodCheck& check) const {
+  if (check.line_scan) {
+    if (beyond_reads_heights_ &&
+        (check.scene.compares(Quantity::mean_gap) || check.scene.compares(Quantity::stiffness))) {
+      check.problem("",
+                    name_ +
+                        "'s mean gap and stiffness integrate the surface's spectrum over the plane, "
+                        "which a line scan (one profile) does not give",
+                    "compare = [\"area\"] for a line scan, or a 2-D file of the surface");
+      return;
+    }
+    if (uses_m4_ && !check.line_scan->rms_curvature) {
+      check.problem("",
+                    name_ +
+                        " reads m4 (the profile's curvature), which a line scan sampled at uneven x "
+                        "does not give (docs/formats.md \"line scans\")",
+                    "a uniformly sampled scan, or a theory that reads m2 alone (persson, bgt_linear)");
+      return;
+    }
+  }
   const SpectralMoments moments = seen(check.moments);
   try {
     if (uses_m4_)

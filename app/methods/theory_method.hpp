@@ -21,8 +21,15 @@ class AnalyticTheoryMethod : public Method {
   // loads for a theory that gives them (docs/theory.md section 12), called only when the scene compares
   // either; none: the theory gives neither (the tables say n/a).
   using Beyond = std::function<void(const SpectralMoments&, const MethodInputs&, MethodCurve&)>;
-  AnalyticTheoryMethod(std::string name, Curve curve, bool uses_m4, Beyond beyond = nullptr)
-      : name_(std::move(name)), curve_(std::move(curve)), uses_m4_(uses_m4), beyond_(std::move(beyond)) {}
+  // beyond_reads_heights: whether `beyond` reads the surface's heights (its spectrum), which a line scan
+  // does not give over an area.
+  AnalyticTheoryMethod(std::string name, Curve curve, bool uses_m4, Beyond beyond = nullptr,
+                       bool beyond_reads_heights = false)
+      : name_(std::move(name)),
+        curve_(std::move(curve)),
+        uses_m4_(uses_m4),
+        beyond_(std::move(beyond)),
+        beyond_reads_heights_(beyond_reads_heights) {}
 
   std::string_view name() const override { return name_; }
   std::string compared_area() const override { return "the theory's A/A0 (a continuum: no grid)"; }
@@ -42,6 +49,7 @@ class AnalyticTheoryMethod : public Method {
   Curve curve_;
   bool uses_m4_ = true;
   Beyond beyond_;
+  bool beyond_reads_heights_ = false;
   bool average_anisotropy_ = false;  // anisotropy = "refuse" (default) | "average"
 };
 
