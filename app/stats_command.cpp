@@ -9,6 +9,7 @@
 #include "contactbench/app/topography_options.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/formats/line_scan.hpp"
+#include "contactbench/core/profile_levelling.hpp"
 #include "contactbench/core/profile_statistics.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/topography_io.hpp"
@@ -52,9 +53,21 @@ void run_profile_stats(const StatsOptions& o) {
   TopographyReadOptions options;
   options.unit = o.topography.unit;
   const formats::LineScan scan = formats::read_line_scan(o.topography.file, options);
+  // Of the 2-D options only --level applies to a profile (core/profile_levelling.hpp); the others are
+  // refused.
+  const TopographyOptions& t = o.topography;
+  for (const auto& [given, option] :
+       {std::pair{t.size || t.size_y, "--size"}, std::pair{t.periodic, "--periodic"},
+        std::pair{t.channel.has_value(), "--channel"}, std::pair{t.fill != "none", "--fill"},
+        std::pair{t.crop.has_value(), "--crop"}, std::pair{t.align_rows != "none", "--align-rows"}})
+    if (given)
+      throw InputError(t.file, 0,
+                       std::string("is a line scan (one profile along x): ") + option +
+                           " is for a 2-D file; a line scan takes --unit and --level only");
+  const Levelling level = *parse_levelling(t.level);
   ProfileStatistics p;
   try {
-    p = profile_statistics(scan.x, scan.heights);
+    p = profile_statistics(scan.x, level_profile(scan.x, scan.heights, level));
   } catch (const InputError&) {
     throw;
   } catch (const Error& error) {
@@ -72,6 +85,7 @@ void run_profile_stats(const StatsOptions& o) {
       .add("format", "line_scan")
       .add("source", scan.source)
       .add("unit", scan.unit)
+      .add("level", std::string(to_string(level)))
       .add("points", p.points)
       .add("length", p.length)
       .add("uniform", p.uniform)

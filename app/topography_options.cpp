@@ -24,7 +24,7 @@ std::string readable_formats_help() {
          "(Gwyddion), and "
          "text: the project's format, an interferometer export, a Gwyddion text export, a plain matrix "
          "(blank-, comma- or semicolon-separated), an x y z point list on a regular grid, a line scan (x h "
-         "text, Dektak CSV: stats only)";
+         "text, Dektak CSV: stats and the analytic theories of a scene)";
 }
 
 void TopographyOptions::add_to(CLI::App& command, const std::string& periodic_effect) {
