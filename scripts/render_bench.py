@@ -406,6 +406,7 @@ def formats_read(data):
     for name, r in rows.items():
         parts = name.split("/")
         table[parts[1]][parts[2]] = (r["real_time"] * scale[r["time_unit"]], r)
+        table[parts[1]][parts[2] + "_cpu"] = (r["cpu_time"] * scale[r["time_unit"]], r)
     lines = header(data, "Reading a 4096^2 file of each binary format", "scripts/bench.sh formats_read")
     load = data["context"].get("load_avg")
     if load:
@@ -417,12 +418,15 @@ def formats_read(data):
                  "into a string. read: read_topography_reading (file read, detection, parse, channel, metres, "
                  "invalid-point checks, the Surface); + plane: levelled by the least-squares plane; + rows + "
                  "plane: each row's mean removed first. Everything runs on one thread (no reader is parallel). "
-                 "MB/s: file bytes (10^6) per second of wall time. Medians of the repetitions.")
+                 "MB/s: file bytes (10^6) per second of wall time. Medians of the repetitions. CPU: the thread's "
+                 "CPU time, which a loaded machine inflates less than the wall time.")
     lines.append("")
     lines.append("| format | file MB | memory sum [ms] | file to memory [ms] | read [ms] | + plane [ms] "
-                 "| + rows + plane [ms] | read / memory sum | read / file to memory | read MB/s | + plane MB/s |")
-    lines.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+                 "| + rows + plane [ms] | read / memory sum | read / file to memory | read MB/s | + plane MB/s "
+                 "| read CPU [ms] | read / memory sum, CPU |")
+    lines.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for fmt_name, kinds in table.items():  # registration order
+        read_cpu, summed_cpu = kinds.get("read_cpu", (None,))[0], kinds.get("memory_sum_cpu", (None,))[0]
         def ms(kind):
             return kinds.get(kind, (None, {}))[0]
         any_row = next(iter(kinds.values()))[1]
@@ -432,7 +436,8 @@ def formats_read(data):
         lines.append(f"| {fmt_name} | {mb:.1f} | {fmt(summed)} | {fmt(slurped)} | {fmt(read)} | {fmt(plane)} "
                      f"| {fmt(ms('read_rows_plane'))} | {fmt(read / summed if read and summed else None)} "
                      f"| {fmt(read / slurped if read and slurped else None)} "
-                     f"| {fmt(mb / read * 1e3 if read else None)} | {fmt(mb / plane * 1e3 if plane else None)} |")
+                     f"| {fmt(mb / read * 1e3 if read else None)} | {fmt(mb / plane * 1e3 if plane else None)} "
+                     f"| {fmt(read_cpu)} | {fmt(read_cpu / summed_cpu if read_cpu and summed_cpu else None)} |")
     return lines
 
 
