@@ -389,9 +389,14 @@ class CurrentFile {
       folder_ = fs::temp_directory_path() / ("contactbench_formats_read_" + std::to_string(::getpid()));
       fs::create_directories(folder_);
       path_ = folder_ / (std::string("surface") + format.extension);
-      format.build(path_);
       name_ = format.name;
-      check(format);
+      try {
+        format.build(path_);
+        check(format);
+      } catch (...) {
+        remove();  // an exception out of a benchmark ends the process without unwinding: no file is left
+        throw;
+      }
     }
     return path_;
   }
