@@ -2,7 +2,8 @@
 # Runs the Google Benchmark harnesses (2 threads, medians of repetitions) and records them under
 # results/bench/: <name>.json (Google Benchmark's output, with commit, date, threads and machine in its
 # context) and <name>.md (tables with ratios to the references measured in the same run).
-# Usage: scripts/bench.sh [labelling|sweep|bem|bem_solvers|bem_adhesion|fill ...]   (default: labelling sweep bem).
+# Usage: scripts/bench.sh [labelling|sweep|bem|bem_solvers|bem_adhesion|fill|formats_read ...]
+#   (default: labelling sweep bem).
 # BENCH_FILTER=REGEX runs only the matching benchmarks (recorded in the files' command); BENCH_APPEND=1 adds
 # them to the recorded JSON instead of replacing it (a long run made in parts). bem_solvers compares the BEM
 # solvers at equal accuracy (bench/bench_bem_solvers.cpp); its full matrix takes hours on two cores, so it is
@@ -21,6 +22,8 @@ fi
 cmake --preset release >/dev/null
 cmake --build --preset release -j "$(nproc)" --target bench_labelling bench_sweep bench_bem bench_bem_solvers \
   bench_bem_adhesion bench_fill
+# formats_read: reading a 4096^2 file of each binary format (bench/bench_formats_read.cpp), about 5 minutes.
+cmake --build --preset release -j "$(nproc)" --target bench_formats_read
 
 commit=$(git rev-parse --short HEAD)
 git diff --quiet HEAD -- core bem bench || commit="$commit+uncommitted"

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Renders a Google Benchmark JSON of contactbench (bench_labelling, bench_sweep, bench_bem or
-bench_bem_solvers, bench_bem_adhesion, bench_fill) as Markdown tables.
+bench_bem_solvers, bench_bem_adhesion, bench_fill, bench_formats_read) as Markdown tables.
 
 Medians of the repetitions, in milliseconds, and ratios to the references measured in the same run.
 Usage: render_bench.py results/bench/labelling.json > results/bench/labelling.md
@@ -398,11 +398,56 @@ def fill(data):
     return lines
 
 
+def formats_read(data):
+    """bench_formats_read: reading a 4096^2 file of each binary format against memory passes over its bytes."""
+    rows = median_rows(data)
+    scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
+    table = defaultdict(dict)  # format -> kind -> (ms, row)
+    for name, r in rows.items():
+        parts = name.split("/")
+        table[parts[1]][parts[2]] = (r["real_time"] * scale[r["time_unit"]], r)
+        table[parts[1]][parts[2] + "_cpu"] = (r["cpu_time"] * scale[r["time_unit"]], r)
+    lines = header(data, "Reading a 4096^2 file of each binary format", "scripts/bench.sh formats_read")
+    load = data["context"].get("load_avg")
+    if load:
+        lines.insert(-2, "Load average at the start (1, 5, 15 min): " + ", ".join(f"{x:.2f}" for x in load) + ".")
+    lines.append("Each file is written from the format's description (bench/bench_formats_read.cpp; the project's "
+                 "writers for x3p, npy, gwy) in a temporary folder, checked to read back (detected format, 4096 x "
+                 "4096, one height to 1e-9 m), timed, and removed before the next. memory sum: the file's bytes, "
+                 "already in memory, summed as 8-byte words; file to memory: the file (in the page cache) read "
+                 "into a string. read: read_topography_reading (file read, detection, parse, channel, metres, "
+                 "invalid-point checks, the Surface); + plane: levelled by the least-squares plane; + rows + "
+                 "plane: each row's mean removed first. Everything runs on one thread (no reader is parallel). "
+                 "MB/s: file bytes (10^6) per second of wall time. Medians of the repetitions. CPU: the thread's "
+                 "CPU time, which a loaded machine inflates less than the wall time.")
+    lines.append("")
+    lines.append("| format | file MB | memory sum [ms] | file to memory [ms] | read [ms] | + plane [ms] "
+                 "| + rows + plane [ms] | read / memory sum | read / file to memory | read MB/s | + plane MB/s "
+                 "| read CPU [ms] | read / memory sum, CPU |")
+    lines.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for fmt_name, kinds in table.items():  # registration order
+        read_cpu, summed_cpu = kinds.get("read_cpu", (None,))[0], kinds.get("memory_sum_cpu", (None,))[0]
+        def ms(kind):
+            return kinds.get(kind, (None, {}))[0]
+        any_row = next(iter(kinds.values()))[1]
+        mb = any_row.get("file_bytes", 0) / 1e6
+        read, plane = ms("read"), ms("read_plane")
+        summed, slurped = ms("memory_sum"), ms("file_to_memory")
+        lines.append(f"| {fmt_name} | {mb:.1f} | {fmt(summed)} | {fmt(slurped)} | {fmt(read)} | {fmt(plane)} "
+                     f"| {fmt(ms('read_rows_plane'))} | {fmt(read / summed if read and summed else None)} "
+                     f"| {fmt(read / slurped if read and slurped else None)} "
+                     f"| {fmt(mb / read * 1e3 if read else None)} | {fmt(mb / plane * 1e3 if plane else None)} "
+                     f"| {fmt(read_cpu)} | {fmt(read_cpu / summed_cpu if read_cpu and summed_cpu else None)} |")
+    return lines
+
+
 def main():
     with open(sys.argv[1]) as f:
         data = json.load(f)
     names = [b["name"] for b in data["benchmarks"]]
-    if names and names[0].startswith("fill/"):
+    if names and names[0].startswith("formats_read/"):
+        lines = formats_read(data)
+    elif names and names[0].startswith("fill/"):
         lines = fill(data)
     elif names and names[0].startswith("bem_adhesion/"):
         lines = bem_adhesion(data)

@@ -61,9 +61,14 @@ TopographyReading reading_from_channels(const fs::path& path, RawTopography raw,
   const std::size_t index = select_channel(path, raw, options.channel);
   Channel& channel = raw.channels[index];
 
-  // Inf is an invalid point as NaN is (docs/formats.md "invalid points"), whatever the format.
+  // Inf is an invalid point as NaN is (docs/formats.md "invalid points"), whatever the format; counted in
+  // the same pass (a crop below counts again, in its rectangle).
+  Index invalid = 0;
   for (Real& value : channel.values)
-    if (!std::isfinite(value)) value = std::numeric_limits<Real>::quiet_NaN();
+    if (!std::isfinite(value)) {
+      value = std::numeric_limits<Real>::quiet_NaN();
+      ++invalid;
+    }
   std::string unit = channel.unit;
   if (!format_carries_unit(format)) {
     if (options.unit) {
@@ -117,9 +122,9 @@ TopographyReading reading_from_channels(const fs::path& path, RawTopography raw,
            std::to_string(kept.y0 + ny - 1) + ")";
     channel.nx = nx;
     channel.ny = ny;
+    invalid = static_cast<Index>(
+        std::count_if(channel.values.begin(), channel.values.end(), [](Real v) { return std::isnan(v); }));
   }
-  const auto invalid = static_cast<Index>(
-      std::count_if(channel.values.begin(), channel.values.end(), [](Real v) { return std::isnan(v); }));
   if (invalid == static_cast<Index>(channel.values.size()))
     throw InputError(path, 0,
                      "all " + std::to_string(invalid) + " points of channel '" + channel.name +
@@ -130,17 +135,21 @@ TopographyReading reading_from_channels(const fs::path& path, RawTopography raw,
                          " points of channel '" + channel.name +
                          "' are invalid (not measured); they are never used as heights: choose fill = "
                          "\"harmonic\" or \"mean\" (--fill) to fill them");
-  try {
-    fill_invalid_points(channel.values, channel.nx, channel.ny, options.fill);
-  } catch (const InputError&) {
-    throw;
-  } catch (const Error& error) {
-    throw InputError(path, 0, "channel '" + channel.name + "': " + error.what());
+  // Without invalid points every value is finite (Inf became NaN above) and there is nothing to fill: the two
+  // passes below would only re-read the grid (results/bench/formats_read.md).
+  if (invalid > 0) {
+    try {
+      fill_invalid_points(channel.values, channel.nx, channel.ny, options.fill);
+    } catch (const InputError&) {
+      throw;
+    } catch (const Error& error) {
+      throw InputError(path, 0, "channel '" + channel.name + "': " + error.what());
+    }
+    for (const Real value : channel.values)
+      if (!std::isfinite(value))
+        throw InputError(path, 0,
+                         "channel '" + channel.name + "' holds a height that is not finite after scaling");
   }
-  for (const Real value : channel.values)
-    if (!std::isfinite(value))
-      throw InputError(path, 0,
-                       "channel '" + channel.name + "' holds a height that is not finite after scaling");
 
   // A part of a periodic surface does not repeat; the caller may still say it does.
   const Grid grid{channel.nx, channel.ny, lx, ly,

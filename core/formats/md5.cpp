@@ -25,8 +25,40 @@ std::array<std::uint32_t, 64> sine_table() {
   return table;
 }
 
+// The sine table as a namespace constant (not a function-local static, whose guard is tested on every block).
+const std::array<std::uint32_t, 64> table = sine_table();
+
+// Step i of round `round` (RFC 1321 section 3.4): F, G, H or I of b, c, d, and the message word it uses.
+template <int round>
+inline void step(std::uint32_t& a, std::uint32_t& b, std::uint32_t& c, std::uint32_t& d, std::uint32_t i,
+                 const std::array<std::uint32_t, 16>& words) {
+  std::uint32_t f = 0;
+  std::uint32_t g = 0;
+  if constexpr (round == 0) {
+    f = (b & c) | (~b & d);
+    g = i;
+  } else if constexpr (round == 1) {
+    f = (d & b) | (~d & c);
+    g = (5 * i + 1) % 16;
+  } else if constexpr (round == 2) {
+    f = b ^ c ^ d;
+    g = (3 * i + 5) % 16;
+  } else {
+    f = c ^ (b | ~d);
+    g = (7 * i) % 16;
+  }
+  const std::uint32_t rotated = std::rotl(a + f + table[i] + words[g], static_cast<int>(shifts[i]));
+  a = d;
+  d = c;
+  c = b;
+  b = b + rotated;
+}
+
+// The four rounds as four loops of sixteen steps, each unrolled, so that the round's function and the word
+// index are fixed at compile time: one loop of 64 steps with a branch per step hashed at about a third of
+// the speed, and the checksum of an x3p's point data was a large part of reading it
+// (results/bench/formats_read.md).
 void process_block(const unsigned char* block, std::array<std::uint32_t, 4>& state) {
-  static const std::array<std::uint32_t, 64> table = sine_table();
   std::array<std::uint32_t, 16> words{};
   for (std::size_t i = 0; i < 16; ++i)
     words[i] = static_cast<std::uint32_t>(block[4 * i]) |
@@ -34,28 +66,18 @@ void process_block(const unsigned char* block, std::array<std::uint32_t, 4>& sta
                (static_cast<std::uint32_t>(block[4 * i + 2]) << 16) |
                (static_cast<std::uint32_t>(block[4 * i + 3]) << 24);
   std::uint32_t a = state[0], b = state[1], c = state[2], d = state[3];
-  for (std::uint32_t i = 0; i < 64; ++i) {
-    std::uint32_t f = 0;
-    std::uint32_t g = 0;
-    if (i < 16) {
-      f = (b & c) | (~b & d);
-      g = i;
-    } else if (i < 32) {
-      f = (d & b) | (~d & c);
-      g = (5 * i + 1) % 16;
-    } else if (i < 48) {
-      f = b ^ c ^ d;
-      g = (3 * i + 5) % 16;
-    } else {
-      f = c ^ (b | ~d);
-      g = (7 * i) % 16;
-    }
-    const std::uint32_t rotated = std::rotl(a + f + table[i] + words[g], static_cast<int>(shifts[i]));
-    a = d;
-    d = c;
-    c = b;
-    b = b + rotated;
-  }
+#pragma GCC unroll 16
+  for (std::uint32_t i = 0; i < 16; ++i)
+    step<0>(a, b, c, d, i, words);
+#pragma GCC unroll 16
+  for (std::uint32_t i = 16; i < 32; ++i)
+    step<1>(a, b, c, d, i, words);
+#pragma GCC unroll 16
+  for (std::uint32_t i = 32; i < 48; ++i)
+    step<2>(a, b, c, d, i, words);
+#pragma GCC unroll 16
+  for (std::uint32_t i = 48; i < 64; ++i)
+    step<3>(a, b, c, d, i, words);
   state[0] += a;
   state[1] += b;
   state[2] += c;
