@@ -3,9 +3,12 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "contactbench/app/cli.hpp"
 #include "contactbench/app/json_writer.hpp"
+#include "contactbench/app/output.hpp"
+#include "contactbench/app/provenance.hpp"
 #include "contactbench/app/topography_options.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/formats/line_scan.hpp"
@@ -13,6 +16,7 @@
 #include "contactbench/core/profile_statistics.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/topography_io.hpp"
+#include "contactbench/theories/number_text.hpp"
 
 namespace contactbench {
 
@@ -21,7 +25,38 @@ namespace {
 struct StatsOptions {
   TopographyOptions topography;
   int threads = 1;
+  std::string psd_file;  // --psd: where the PSD goes as CSV (empty: not written)
 };
+
+// The command as typed, for the PSD file's header (the options that change what is read).
+std::string psd_command(const StatsOptions& o) {
+  const TopographyOptions& t = o.topography;
+  std::string command = "contactbench stats " + t.file;
+  if (t.unit) command += " --unit " + *t.unit;
+  if (t.level != "none") command += " --level " + t.level;
+  if (t.size) command += " --size " + format_number(*t.size);
+  if (t.size_y) command += " --size-y " + format_number(*t.size_y);
+  if (t.periodic) command += " --periodic";
+  if (t.channel) command += " --channel " + *t.channel;
+  if (t.fill != "none") command += " --fill " + t.fill;
+  if (t.crop) command += " --crop " + *t.crop;
+  if (t.align_rows != "none") command += " --align-rows " + t.align_rows;
+  return command + " --psd " + o.psd_file;
+}
+
+// Writes `psd` as CSV under a header of the command, its stamp and what the columns mean.
+void write_psd_csv(const StatsOptions& o, const SampledPsd& psd, const std::string& meaning,
+                   const std::string& columns) {
+  const Provenance provenance = current_provenance(o.threads, psd_command(o));
+  write_output(o.psd_file, [&](std::ostream& out) {
+    out << "# " << provenance.command << "\n# commit " << provenance.commit << ", " << provenance.date << ", "
+        << provenance.machine << "\n# " << meaning << "\n"
+        << columns << "\n";
+    out.precision(17);
+    for (std::size_t k = 0; k < psd.q.size(); ++k)
+      out << psd.q[k] << ',' << psd.c[k] << ',' << psd.modes[k] << '\n';
+  });
+}
 
 JsonObject conventions(Window window) {
   JsonObject c;
@@ -65,9 +100,12 @@ void run_profile_stats(const StatsOptions& o) {
                        std::string("is a line scan (one profile along x): ") + option +
                            " is for a 2-D file; a line scan takes --unit and --level only");
   const Levelling level = *parse_levelling(t.level);
+  if (!o.psd_file.empty()) check_output_file(o.psd_file, t.file, "--psd");
   ProfileStatistics p;
+  std::vector<Real> heights;
   try {
-    p = profile_statistics(scan.x, level_profile(scan.x, scan.heights, level));
+    heights = level_profile(scan.x, scan.heights, level);
+    p = profile_statistics(scan.x, heights);
   } catch (const InputError&) {
     throw;
   } catch (const Error& error) {
@@ -99,12 +137,29 @@ void run_profile_stats(const StatsOptions& o) {
     const Real m4 = *p.rms_curvature * *p.rms_curvature;
     json.add("m4", m4).add("alpha", p.m0() * m4 / (p.m2() * p.m2()));
   }
+  if (!o.psd_file.empty()) {
+    // The profile's periodogram, Hann-windowed (a scan does not repeat), on the uniform steps it was taken.
+    if (!p.uniform)
+      throw InputError(t.file, 0,
+                       "--psd needs a uniformly sampled scan (every step within 1e-3 of the mean step); this "
+                       "one's x are uneven, and its spectrum is not a periodogram");
+    const Real step = p.length / static_cast<Real>(p.points - 1);
+    const Grid grid{
+        .nx = p.points, .ny = 1, .lx = step * static_cast<Real>(p.points), .ly = step, .periodic = false};
+    const Surface profile(grid, Eigen::Map<const HeightMap>(heights.data(), 1, p.points));
+    write_psd_csv(o, profile_psd_x(fourier_coefficients(profile, Window::hann, 1)),
+                  "the profile PSD C1(q) [m^3], two-sided (rq^2 = sum over q of C1 dq, q from -qmax to qmax; "
+                  "listed for q >= 0), Hann-windowed; modes: points behind each value",
+                  "q_per_m,c1_m3,modes");
+    json.add("psd_file", o.psd_file);
+  }
   json.add("conventions", conventions);
   std::cout << json.str() << '\n';
 }
 
 void run_stats(const StatsOptions& o) {
   if (detect_topography_format(o.topography.file) == TopographyFormat::line_scan) return run_profile_stats(o);
+  if (!o.psd_file.empty()) check_output_file(o.psd_file, o.topography.file, "--psd");
   const TopographyReading reading = o.topography.read_with_report();
   const Surface& surface = reading.surface;
   // Moments of 1e300 m heights would be printed as null; a failure here is the file's, so it names the file.
@@ -148,8 +203,18 @@ void run_stats(const StatsOptions& o) {
       .add("alpha", m.alpha_x())
       .add("alpha_y", m.alpha_y())
       .add("rms_gradient", m.rms_gradient())
-      .add("window", to_string(coefficients.window))
-      .add("conventions", conventions(coefficients.window));
+      .add("window", to_string(coefficients.window));
+  if (!o.psd_file.empty()) {
+    write_psd_csv(
+        o, radial_psd(coefficients),
+        "the radially averaged 2D PSD C(q) [m^4] (Persson's convention: <h^2> = sum over the lattice "
+        "of C dqx dqy), " +
+            std::string(to_string(coefficients.window)) +
+            " window, 10 bins a decade; q: the bin's mean |q|; modes: lattice modes in the bin",
+        "q_per_m,c_m4,modes");
+    json.add("psd_file", o.psd_file);
+  }
+  json.add("conventions", conventions(coefficients.window));
   std::cout << json.str() << '\n';
 }
 
@@ -162,6 +227,9 @@ void add_stats_command(CLI::App& parent) {
                    readable_formats_help() + ".");
   options->topography.add_to(*command, "moments without a window");
   add_threads_option(*command, options->threads);
+  command->add_option("--psd", options->psd_file,
+                      "also write the PSD as CSV to this file: a surface's radially averaged 2D PSD C(q) "
+                      "[m^4], a line scan's profile PSD C1(q) [m^3] (uniform sampling only)");
   command->callback([options] { run_stats(*options); });
 }
 

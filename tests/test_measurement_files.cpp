@@ -4,9 +4,12 @@
 // naming the file and the cause, and the input byte for byte as it was (its MD5 before and after).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <regex>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
 #include "contactbench/core/formats/md5.hpp"
@@ -260,6 +263,80 @@ TEST_F(MeasurementFiles, StatsOfALineScanLevelsItAndRefusesTheOptionsOfA2DFile) 
     EXPECT_NE(refused.err.find(option.substr(0, option.find(' ')) + " is for a 2-D file"), std::string::npos)
         << refused.err;
   }
+}
+
+// The rows of a CSV the commands write, after its '#' header and column line.
+std::vector<std::vector<double>> csv_rows(const std::string& text) {
+  std::vector<std::vector<double>> rows;
+  std::istringstream in(text);
+  std::string line;
+  bool columns = false;
+  while (std::getline(in, line)) {
+    if (line.starts_with('#')) continue;
+    if (!columns) {
+      columns = true;
+      continue;
+    }
+    std::vector<double> row;
+    std::istringstream fields(line);
+    std::string field;
+    while (std::getline(fields, field, ','))
+      row.push_back(std::stod(field));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST_F(MeasurementFiles, StatsWritesTheProfilePsdOfAUniformScan) {
+  // 512 uniform points over 100 um: a sine of 12 cycles on a smaller one of 40 (heights in metres).
+  std::ostringstream scan;
+  scan.precision(17);
+  const int n = 512;
+  const double length = 100e-6, pi = std::acos(-1.0);
+  for (int k = 0; k < n; ++k) {
+    const double x = length * k / n;
+    scan << x << ' ' << 1e-6 * std::sin(2 * pi * 12 * x / length) + 1e-7 * std::sin(2 * pi * 40 * x / length)
+         << '\n';
+  }
+  const fs::path input = write("uniform.txt", scan.str());
+  const fs::path psd = folder_ / "psd.csv";
+  const CommandResult result = run("stats " + input.string() + " --psd " + psd.string());
+  ASSERT_EQ(result.status, 0) << result.err;
+  const std::string text = slurp(psd);
+  EXPECT_NE(text.find("# contactbench stats " + input.string() + " --psd " + psd.string()), std::string::npos)
+      << text;
+  const std::vector<std::vector<double>> rows = csv_rows(text);
+  ASSERT_EQ(rows.size(), static_cast<std::size_t>(n / 2 + 1));
+  // The peak sits at the big sine's wavevector 2 pi 12 / L (the lattice step is 2 pi / (n dx)); the window
+  // spreads it over the neighbours only.
+  std::size_t peak = 0;
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    if (rows[k][1] > rows[peak][1]) peak = k;
+  EXPECT_NEAR(rows[peak][0], 2 * pi * 12 / length, 1e-6 * rows[peak][0]);
+  // Parseval, two-sided: C1(0) dq + 2 sum over 0 < q < qmax + C1(qmax) dq is the windowed mean square, which
+  // the Hann window's normalisation keeps equal to rq^2 within 2 % for whole cycles (the window weighs the
+  // record's middle; the profile's rq integrates the piecewise-linear profile, 0.1 % off the samples').
+  const double dq = rows[1][0] - rows[0][0];
+  double total = rows.front()[1] * dq + rows.back()[1] * dq;
+  for (std::size_t k = 1; k + 1 < rows.size(); ++k)
+    total += 2 * rows[k][1] * dq;
+  const double rq = json_number(result.out, "rq");
+  EXPECT_NEAR(total / (rq * rq), 1, 0.02);
+  // Uneven sampling has no periodogram; the input is never the output.
+  const fs::path uneven = samples / "xy-1.txt";
+  const CommandResult refused = run("stats " + uneven.string() + " --unit um --psd " + psd.string());
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_NE(refused.err.find("--psd needs a uniformly sampled scan"), std::string::npos) << refused.err;
+  const CommandResult over = run("stats " + input.string() + " --psd " + input.string());
+  EXPECT_EQ(over.status, 1);
+  EXPECT_NE(over.err.find("is the input file"), std::string::npos) << over.err;
+  // A surface's PSD: the radial average, one row a bin.
+  const CommandResult surface =
+      run("stats " + (samples / "metropro-1.dat").string() + " --psd " + (folder_ / "radial.csv").string());
+  ASSERT_EQ(surface.status, 0) << surface.err;
+  const std::string radial = slurp(folder_ / "radial.csv");
+  EXPECT_NE(radial.find("q_per_m,c_m4,modes"), std::string::npos);
+  EXPECT_GT(csv_rows(radial).size(), 10u);
 }
 
 TEST_F(MeasurementFiles, ConvertAndAreaMethodsRefuseALineScanWhichDrivesTheTheories) {
