@@ -11,7 +11,10 @@
 #include <vector>
 
 #include "contactbench/core/labelling.hpp"
+#include "contactbench/core/surface.hpp"
+#include "contactbench/core/topology.hpp"
 #include "contactbench/core/types.hpp"
+#include "contactbench/theories/summit_gap_density.hpp"
 
 namespace contactbench {
 
@@ -47,6 +50,17 @@ Histogram gap_histogram(const HeightMap& pressure, const HeightMap& gap, Index b
 // n(s). Sum of counts = spots.
 Histogram patch_size_histogram(const std::vector<Index>& areas, Index bins);
 
+// Counts of `values` on the bins of `edges` ([edges[i], edges[i+1]), the last bin closed at its top), density
+// = count / (all_nodes width); values outside the edges are counted in `below` and `above`.
+struct BinnedValues {
+  Histogram histogram;
+  Index below = 0, above = 0;
+};
+BinnedValues bin_on_edges(const std::vector<Real>& edges, const std::vector<Real>& values, Index all_nodes);
+
+// The number of integers in [low, high): the sizes (in nodes) a patch-size bin can hold.
+Index integers_in(Real low, Real high);
+
 // What a BEM stage measures at the reference load from the fields, before it drops them.
 struct MeasuredDistributions {
   Index points = 0;          // nodes N
@@ -74,7 +88,32 @@ struct LoadDistributions {
   Real mean_gap = 0;         // [m], over all nodes
   int connectivity = 4;      // of the clusters
   Histogram pressure, gap, patch_sizes;
+
+  // The plateau models at the same load (theories/plateau_at_load.hpp; docs/theory.md 12.8), their gaps and
+  // spot areas binned on the BEM's edges. `given` false: `note` says why (no cut level at that load).
+  struct Plateau {
+    bool given = false;
+    std::string note;
+    Real level = 0, area_fraction = 0;
+    Index points = 0;
+    BinnedValues gap, patch_sizes;
+  };
+  Plateau plateau, plateau_hertz;
+  // GW-McCool's undeformed-gap density at the same load (theories/summit_gap_density.hpp), or why not.
+  std::optional<SummitGap> summit;
+  std::string summit_note;
 };
+
+// Fills the theories of `d` (its load and BEM histograms set) on the scene's surface: the plateau models on
+// its exact sweep with `topology` (the BEM's connectivity), GW-McCool from its moments. A theory that cannot
+// answer at the load is marked with its reason, never dropped silently.
+void add_distribution_theories(LoadDistributions& d, const Surface& surface, const Topology& topology);
+
+// The power-law fit's range for the patch sizes (docs/theory.md 12.8): sizes of at least 2 nodes (single-node
+// patches are the pixel, not the surface) and bins with at least 5 patches (a relative counting error
+// 1/sqrt(5) = 45 % or less).
+inline constexpr Real kPowerLawMinSize = 2;
+inline constexpr Index kPowerLawMinCount = 5;
 
 // `origin`: the stamp line (command, commit, date, threads, machine) each file starts with.
 void write_pressure_distribution_csv(std::ostream& out, const LoadDistributions& d,

@@ -1,6 +1,6 @@
 // contactbench plot FILE: the map of a field file the project writes (pressure, gap, contact set, attraction)
 // or of any surface file it reads (as a height map), as PNG and SVG with a colour bar in units
-// (app/field_picture.hpp).
+// (app/field_picture.hpp); or a distribution CSV of a scene's run (app/distribution_plots.hpp).
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "contactbench/app/cli.hpp"
+#include "contactbench/app/distribution_plots.hpp"
 #include "contactbench/app/field_picture.hpp"
 #include "contactbench/app/output.hpp"
 #include "contactbench/app/topography_options.hpp"
@@ -48,7 +49,10 @@ void run_plot(const PlotOptions& o) {
   }
   for (const auto& path : {png, svg})
     if (!path.empty()) check_output_file(path, input, "--out");
-  if (is_project_file(input)) {
+  if (input.extension() == ".csv") {
+    // A distribution a scene's run wrote (app/distribution_plots.hpp); any other CSV is refused by name.
+    draw_distribution_picture(input, png, svg);
+  } else if (is_project_file(input)) {
     draw_field_picture(input, png, svg);
   } else {
     // Any other surface format: its heights [m] written in the project's format for gnuplot to read.
@@ -78,7 +82,8 @@ void add_plot_command(CLI::App& parent) {
       "Draw a field file (pressure, gap, contact set or attraction of a solved load, written by `bem "
       "--fields` "
       "and a scene's `fields`) or any surface file (as a height map): a map with a colour bar in the field's "
-      "unit, as PNG and SVG (gnuplot).");
+      "unit, as PNG and SVG (gnuplot). A distribution CSV of a run (<label>_pressure_distribution.csv, "
+      "_gap_distribution.csv, _patch_sizes.csv) is drawn as its histogram beside the theories' columns.");
   options->topography.add_to(*command, "nothing for the picture");
   command
       ->add_option("--out", options->out,

@@ -9,6 +9,7 @@
 
 #include "contactbench/app/cli.hpp"
 #include "contactbench/app/comparison.hpp"
+#include "contactbench/app/distribution_plots.hpp"
 #include "contactbench/app/fftw_wisdom_file.hpp"
 #include "contactbench/app/load_area_plots.hpp"
 #include "contactbench/app/output.hpp"
@@ -90,7 +91,10 @@ void run_command(const RunCommandOptions& o, const CommandContext& context) {
   write_folder_atomically(folder, [&](const std::filesystem::path& staging) {
     write_report(staging, report, comparison, provenance);
     fields.move_into(staging);
-    if (o.plots) draw_load_area_plots(staging, report, std::cerr);
+    if (o.plots) {
+      draw_load_area_plots(staging, report, std::cerr);
+      draw_distribution_plots(staging, report, std::cerr);  // only when the scene asked for distributions
+    }
   });
   if (!o.quiet) {
     write_table_md(std::cout, report, comparison, provenance);

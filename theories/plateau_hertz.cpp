@@ -72,4 +72,8 @@ LoadAreaCurve plateau_hertz_curve_at_loads(const SweepCurve& sweep, const LoadAr
   return curve;
 }
 
+Real plateau_hertz_stiffness(Real area_fraction, Real spots, Real nominal_area) {
+  return 2 * std::sqrt(area_fraction * nominal_area * spots / std::numbers::pi) / nominal_area;
+}
+
 }  // namespace contactbench

@@ -25,4 +25,11 @@ LoadAreaCurve plateau_hertz(const LoadAreaCurve& paper_model);
 LoadAreaCurve plateau_hertz_curve_at_loads(const SweepCurve& sweep, const LoadAreaCurve& paper_model,
                                            std::span<const Real> loads);
 
+// The variant's contact stiffness per unit area over E*, K_H/E* = -d(P_H/(E* A0))/dz [1/m] (docs/theory.md
+// section 12.5): N spots of contact radius a = sqrt(A_H/(pi N)), each a flat punch of stiffness 2 E* a, so
+//   K_H = 2 E* sqrt(A_H N / pi) / A0 = K / sqrt(2),
+// K the paper's model's at the same level (its area A_c = 2 A_H). area_fraction = A_H/A0, spots = N at the
+// load (a curve's row); NaN in gives NaN out.
+Real plateau_hertz_stiffness(Real area_fraction, Real spots, Real nominal_area);
+
 }  // namespace contactbench

@@ -350,7 +350,16 @@ class BemMethod final : public Method {
                         .pressure = m.pressure,
                         .gap = m.gap,
                         .patch_sizes = patch_size_histogram(m.cluster_areas.at(settings_.connectivity),
-                                                            in.scene.distributions->bins)};
+                                                            in.scene.distributions->bins),
+                        .plateau = {},
+                        .plateau_hertz = {},
+                        .summit = std::nullopt,
+                        .summit_note = {}};
+    // The plateau models and GW-McCool at the same load, on the same bins (docs/theory.md 12.8).
+    add_distribution_theories(
+        d, in.surface,
+        Topology::for_surface(settings_.connectivity == 8 ? Connectivity::eight : Connectivity::four,
+                              in.surface.grid().periodic));
     curve.distributions = std::move(d);
   }
 

@@ -27,6 +27,13 @@ class PlateauHertzMethod final : public PlateauMethod {
     MethodCurve curve = MethodCurve::from(
         plateau_hertz_curve_at_loads(in.sweep->sweep, in.sweep->model, in.scene.loads), in.scene.loads);
     complete(curve, in);
+    // Its own dP/dd (docs/theory.md 12.5): K_H = 2 E* sqrt(A_H N / pi) / A0, 1/sqrt(2) x the paper's model's.
+    if (in.scene.compares(Quantity::stiffness)) {
+      const Real a0 = in.surface.grid().nominal_area(), estar = in.scene.material.estar;
+      for (std::size_t k = 0; k < curve.area_fraction.size(); ++k)
+        curve.stiffness.push_back(estar *
+                                  plateau_hertz_stiffness(curve.area_fraction[k], curve.spots[k], a0));
+    }
     return curve;
   }
 };

@@ -1,0 +1,148 @@
+# Made by contactbench run (app/load_area_plots.cpp): `gnuplot load_area.gp` in this folder redraws
+# the plots; the data blocks below are the curves of curves.csv (load, A/A0, A/A0 -+ its error estimate,
+# A/A_ref - 1, the reference's relative error estimate).
+$method0 << EOD
+0.001 0.010097234475742015 NaN NaN 0 NaN
+0.01 0.09692281405991345 NaN NaN 0 NaN
+EOD
+$method1 << EOD
+0.001 0.01642608642578125 NaN NaN 0.6267906291810805 NaN
+0.01 0.12220382690429688 NaN NaN 0.26083655421679985 NaN
+EOD
+$method2 << EOD
+0.001 0.010885238647460936 NaN NaN 0.07804158392201854 NaN
+0.01 0.08457756042480467 NaN NaN -0.1273720099323311 NaN
+EOD
+$method3 << EOD
+0.001 0.0076123205585588005 NaN NaN -0.2460984661842872 NaN
+0.01 0.0760090292462385 NaN NaN -0.2157777301095175 NaN
+EOD
+$method4 << EOD
+0.001 0.004601243925781159 NaN NaN -0.544306519093385 NaN
+0.01 0.04055488295248759 NaN NaN -0.5815754696575531 NaN
+EOD
+set terminal pngcairo enhanced size 1400,1000 font ',11'
+set output '.load_area.png.partial'
+set multiplot layout 2,2 title 'surface_A_distributions_seed2: real contact area against load' noenhanced
+set key off
+set grid
+set border
+set tics
+set lmargin -1
+set rmargin -1
+set xlabel '{/:Italic P} / ({/:Italic E}^*{/:Italic A}_0)'
+unset logscale
+set format x '%g'
+set format y '%g'
+set title '(a) linear axes'
+set ylabel '{/:Italic A} / {/:Italic A}_0'
+set xrange [0:0.0103]
+set yrange [0:0.12831401824951172]
+plot $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+     $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle
+set logscale xy
+set format x '10^{%L}'
+set format y '10^{%L}'
+set title '(b) logarithmic axes'
+set xrange [0.0007936507936507937:0.0126]
+set yrange [0.0036517808934771103:0.15397682189941406]
+plot $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+     $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle
+set logscale x
+unset logscale y
+set format y '%g'
+set yrange [*:*]
+set title '(c) relative error against the reference'
+set ylabel '{/:Italic A} / {/:Italic A}_{ref} - 1'
+plot $method1 using 1:5 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:5 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:5 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:5 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
+     0 with lines lw 1 lc rgb 'black' dt 2 notitle
+unset title
+set border 0
+unset tics
+unset xlabel
+unset ylabel
+unset logscale
+unset grid
+set lmargin 0
+set rmargin 0
+set xrange [0:1]
+set yrange [0:1]
+set key inside left center vertical Left reverse noautotitle spacing 1.4 width 2
+plot 2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title "bem (reference)" noenhanced, \
+     2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' title "plateau" noenhanced, \
+     2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' title "plateau_hertz (Hertz-consistent plateaus, this project)" noenhanced, \
+     2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' title "persson" noenhanced, \
+     2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' title "gw_mccool" noenhanced
+unset multiplot
+set terminal svg enhanced size 1400,1000 dynamic font ',11'
+set output '.load_area.svg.partial'
+set multiplot layout 2,2 title 'surface_A_distributions_seed2: real contact area against load' noenhanced
+set key off
+set grid
+set border
+set tics
+set lmargin -1
+set rmargin -1
+set xlabel '{/:Italic P} / ({/:Italic E}^*{/:Italic A}_0)'
+unset logscale
+set format x '%g'
+set format y '%g'
+set title '(a) linear axes'
+set ylabel '{/:Italic A} / {/:Italic A}_0'
+set xrange [0:0.0103]
+set yrange [0:0.12831401824951172]
+plot $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+     $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle
+set logscale xy
+set format x '10^{%L}'
+set format y '10^{%L}'
+set title '(b) logarithmic axes'
+set xrange [0.0007936507936507937:0.0126]
+set yrange [0.0036517808934771103:0.15397682189941406]
+plot $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+     $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle
+set logscale x
+unset logscale y
+set format y '%g'
+set yrange [*:*]
+set title '(c) relative error against the reference'
+set ylabel '{/:Italic A} / {/:Italic A}_{ref} - 1'
+plot $method1 using 1:5 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:5 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:5 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:5 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
+     0 with lines lw 1 lc rgb 'black' dt 2 notitle
+unset title
+set border 0
+unset tics
+unset xlabel
+unset ylabel
+unset logscale
+unset grid
+set lmargin 0
+set rmargin 0
+set xrange [0:1]
+set yrange [0:1]
+set key inside left center vertical Left reverse noautotitle spacing 1.4 width 2
+plot 2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title "bem (reference)" noenhanced, \
+     2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' title "plateau" noenhanced, \
+     2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' title "plateau_hertz (Hertz-consistent plateaus, this project)" noenhanced, \
+     2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' title "persson" noenhanced, \
+     2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' title "gw_mccool" noenhanced
+unset multiplot
+unset output
