@@ -91,9 +91,13 @@ LoadDistributions::Plateau plateau_reading(const LoadDistributions& d, const Sur
 
 std::string plateau_gap_text(const std::string& name, const LoadDistributions::Plateau& p) {
   if (!p.given) return name + ": n/a (" + p.note + ")";
+  Index gap_nodes = p.gap.below + p.gap.above;
+  for (const Index c : p.gap.histogram.counts)
+    gap_nodes += c;
   return name + ": cut level z = " + json_number(p.level) + " m, A/A0 = " + json_number(p.area_fraction) +
-         ", the gaps z - h of the undeformed surface at its " + std::to_string(p.points) +
-         " nodes with h <= z, " + std::to_string(p.gap.above) + " of them beyond the last bin";
+         ", the gaps z - h of the undeformed surface at the " + std::to_string(gap_nodes) + " of its " +
+         std::to_string(p.points) + " nodes with h <= z, " + std::to_string(p.gap.above) +
+         " of them beyond the last bin";
 }
 
 }  // namespace

@@ -172,5 +172,37 @@ TEST(DistributionTheories, TheSceneWritesThemBesideTheBem) {
   EXPECT_NE(patch_csv.str().find("# BEM power law"), std::string::npos);
 }
 
+// Beyond what a theory answers (full contact at P/(E* A0) = 2: the Hertz reading has no level there,
+// GW-McCool no separation), its columns are empty and the header says why: never zeros, never dropped
+// silently.
+TEST(DistributionTheories, ATheoryThatCannotAnswerIsMarkedWithItsReason) {
+  const Scene scene = parse_scene("name = \"full\"\ndistributions = { load = 2.0, bins = 10 }\n" +
+                                      kSmallSurfaceAndMaterial + "[loads]\nvalues = [2.0]\n[methods.bem]\n",
+                                  "test.toml");
+  const SceneReport report = run_scene(scene, {.threads = 1, .observer = nullptr});
+  const LoadDistributions& d = *report.methods.front().curve.distributions;
+  EXPECT_TRUE(d.plateau.given);  // the paper's model answers full contact: one spot of the whole surface
+  EXPECT_EQ(d.plateau.area_fraction, 1);
+  ASSERT_FALSE(d.plateau_hertz.given);
+  EXPECT_NE(d.plateau_hertz.note.find("no cut level"), std::string::npos) << d.plateau_hertz.note;
+  ASSERT_FALSE(d.summit.has_value());
+  EXPECT_NE(d.summit_note.find("beyond the largest load"), std::string::npos) << d.summit_note;
+  std::ostringstream csv;
+  write_gap_distribution_csv(csv, d, "test");
+  EXPECT_NE(csv.str().find("plateau_hertz_density, the project's Hertz-consistent variant: n/a ("),
+            std::string::npos);
+  EXPECT_NE(csv.str().find("\n0,"), std::string::npos);
+  // Every data row ends with two empty fields (plateau_hertz_density and summit_density).
+  std::istringstream rows(csv.str());
+  std::string line;
+  int data = 0;
+  while (std::getline(rows, line))
+    if (!line.empty() && line[0] != '#' && line.rfind("gap_low", 0) != 0) {
+      ++data;
+      EXPECT_EQ(line.substr(line.size() - 2), ",,") << line;
+    }
+  EXPECT_EQ(data, 10);
+}
+
 }  // namespace
 }  // namespace contactbench
