@@ -273,17 +273,12 @@ class DistributedRunner final : public StageRunner {
                        .mean_pressures = mean_pressures,
                        .connectivities = {connectivities.begin(), connectivities.end()}};
     // A progress line per load as one process says it (app/serial_runner.cpp), from rank 0.
-    const std::string label = stage_label(stage.name()) + " " + std::to_string(solved.grid().nx) + " x " +
-                              std::to_string(solved.grid().ny);
     const auto start = Clock::now();
     const auto load_solved = [&](std::size_t k, const ContactSolution& solution) {
-      observer.solved({.stage = label,
-                       .load = k + 1,
-                       .loads = mean_pressures.size(),
-                       .load_value = mean_pressures[k] / estar,
-                       .iterations = static_cast<long long>(solution.iterations),
-                       .seconds = solution.seconds,
-                       .stage_seconds = std::chrono::duration<double>(Clock::now() - start).count()});
+      observer.solved(bem_load_progress(stage.name(), solved.grid().nx, solved.grid().ny, k,
+                                        mean_pressures.size(), mean_pressures[k] / estar,
+                                        static_cast<long long>(solution.iterations), solution.seconds,
+                                        std::chrono::duration<double>(Clock::now() - start).count()));
     };
     announce(Job::bem);
     return bem_job(
