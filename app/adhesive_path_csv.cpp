@@ -11,8 +11,7 @@ void write_adhesive_path_csv(std::ostream& out, const AdhesivePath& path, Real m
     return number(static_cast<Real>(count) / static_cast<Real>(points));
   };
   out << "# contactbench bem approach-retract path (commit " << provenance.commit << ", " << provenance.date
-      << ", " << provenance.threads << " threads, " << provenance.machine << "): " << provenance.command
-      << '\n'
+      << ", " << threads_text(provenance) << ", " << provenance.machine << "): " << provenance.command << '\n'
       << "# separation d [m] of the flat (docs/solvers.md \"Separation control\"); load = net P/(E* A0), "
          "negative when tensile; energy U per nominal area [J/m^2] (docs/theory.md 10.7)\n";
   out << "# pull_off_load = " << number(path.pull_off_pressure / modulus)

@@ -32,7 +32,9 @@ void add_progress_option(CLI::App& command, bool& progress) {
 
 RunObserver terminal_observer(const std::string& command, bool progress) {
   RunObserver observer;
-  const bool terminal = ::isatty(STDERR_FILENO) != 0;
+  // Under mpiexec only rank 0 speaks, and its stderr is a pipe to the launcher, which prints it on the
+  // launcher's terminal or log: it says what one process on a terminal says (docs/mpi.md).
+  const bool terminal = ::isatty(STDERR_FILENO) != 0 || mpi_launch().ranks > 1;
   if (progress || terminal) {
     observer.stage_finished = [command, progress](const std::string& stage, double seconds) {
       if (progress || seconds > kProgressAfterSeconds)

@@ -8,6 +8,7 @@
 #include <mpi.h>
 
 #include "contactbench/app/load_fields.hpp"
+#include "contactbench/app/run_observer.hpp"
 #include "contactbench/app/stages.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/topography_io.hpp"
@@ -118,12 +119,13 @@ BemRequest broadcast_request(const BemRequest& request) {
   return r;
 }
 
-// Every load on slabs. Rank 0 passes the surface's heights, the field prefix and a warning sink; the others
-// pass nothing and get nothing back. The only work rank 0 does alone between two collective calls is
-// writing fields: a failure there is broadcast before the next load (every rank stops) and rethrown at the
-// end, so no rank is ever left waiting.
+// Every load on slabs. Rank 0 passes the surface's heights, the field prefix, a warning sink and what to
+// tell of each load solved (a progress line); the others pass nothing and get nothing back. The only work
+// rank 0 does alone between two collective calls is writing fields: a failure there is broadcast before the
+// next load (every rank stops) and rethrown at the end, so no rank is ever left waiting.
 SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, const std::string& fields,
-                    const std::function<void(const std::string&)>& warning) {
+                    const std::function<void(const std::string&)>& warning,
+                    const std::function<void(std::size_t load, const ContactSolution&)>& load_solved) {
   const BemRequest request = broadcast_request(root_request);
   const Grid& grid = request.grid;
   const mpi::Slab slab = mpi::slab_of(grid, kWorld);
@@ -171,6 +173,7 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
                                                  .seconds = seconds,
                                                  .plastic_points = 0,
                                                  .plastic_overlap = {}});
+    if (is_root() && load_solved) load_solved(k, result.solutions.back());
   }
   if (failure) std::rethrow_exception(failure);
   return result;
@@ -214,7 +217,7 @@ void serve() {
         case Job::stop:
           return;
         case Job::bem:
-          bem_job({}, nullptr, "", {});
+          bem_job({}, nullptr, "", {}, {});
           break;
         case Job::sweep:
           sweep_job({}, nullptr, {}, {});
@@ -269,8 +272,18 @@ class DistributedRunner final : public StageRunner {
                        .write_fields = !fields.empty(),
                        .mean_pressures = mean_pressures,
                        .connectivities = {connectivities.begin(), connectivities.end()}};
+    // A progress line per load as one process says it (app/serial_runner.cpp), from rank 0.
+    const auto start = Clock::now();
+    const auto load_solved = [&](std::size_t k, const ContactSolution& solution) {
+      observer.solved(bem_load_progress(stage.name(), solved.grid().nx, solved.grid().ny, k,
+                                        mean_pressures.size(), mean_pressures[k] / estar,
+                                        static_cast<long long>(solution.iterations), solution.seconds,
+                                        std::chrono::duration<double>(Clock::now() - start).count()));
+    };
     announce(Job::bem);
-    return bem_job(request, &solved.heights(), fields, [&](const std::string& text) { observer.warn(text); });
+    return bem_job(
+        request, &solved.heights(), fields, [&](const std::string& text) { observer.warn(text); },
+        load_solved);
   }
 
   SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topology& topology,

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <ctime>
@@ -64,9 +65,15 @@ Provenance current_provenance(int threads, const std::string& command) {
   p.machine = std::string(host.data()) + " (" + cpu_model() + ")";
   // Run as K MPI ranks (app/distributed_stages.hpp): the command that reruns it says so.
   const MpiLaunch launch = mpi_launch();
+  p.ranks = std::max(launch.ranks, 1);
   p.command =
       printable(launch.ranks > 1 ? "mpiexec -np " + std::to_string(launch.ranks) + " " + command : command);
   return p;
+}
+
+std::string threads_text(const Provenance& p) {
+  return (p.ranks > 1 ? std::to_string(p.ranks) + " ranks x " : std::string()) + std::to_string(p.threads) +
+         " threads";
 }
 
 std::string version_line() {

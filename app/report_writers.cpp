@@ -46,12 +46,14 @@ std::string percent(Real value, bool is_signed = true) {
 }
 
 std::string stamp(const Provenance& p) {
-  return "commit " + p.commit + ", " + p.date + ", " + std::to_string(p.threads) + " threads, " + p.machine;
+  return "commit " + p.commit + ", " + p.date + ", " + threads_text(p) + ", " + p.machine;
 }
 
 JsonObject provenance_json(const Provenance& p) {
   JsonObject o;
-  o.add("commit", p.commit).add("date", p.date).add("threads", p.threads).add("machine", p.machine);
+  o.add("commit", p.commit).add("date", p.date).add("threads", p.threads);
+  if (p.ranks > 1) o.add("ranks", static_cast<long long>(p.ranks));  // threads is then each rank's
+  o.add("machine", p.machine);
   o.add("command", p.command);
   return o;
 }

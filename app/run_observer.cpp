@@ -21,6 +21,18 @@ std::string stage_label(const std::string& stage) {
   return settings == std::string::npos ? stage : stage.substr(0, settings);
 }
 
+LoadProgress bem_load_progress(const std::string& stage, long long nx, long long ny, std::size_t k,
+                               std::size_t loads, double load_value, long long iterations, double seconds,
+                               double stage_seconds) {
+  return {.stage = stage_label(stage) + " " + std::to_string(nx) + " x " + std::to_string(ny),
+          .load = k + 1,
+          .loads = loads,
+          .load_value = load_value,
+          .iterations = iterations,
+          .seconds = seconds,
+          .stage_seconds = stage_seconds};
+}
+
 std::string progress_line(const LoadProgress& load) {
   std::ostringstream line;
   const auto percent = load.loads == 0 ? 0 : (100 * load.load) / load.loads;

@@ -50,6 +50,12 @@ std::string stage_label(const std::string& stage);
 // "bem 256 x 256: load 3/12 (25 %), P/(E* A0) = 0.005, 142 iterations in 1.3 s": one short line, no newline.
 std::string progress_line(const LoadProgress& load);
 
+// Load k (0-based) of `loads` of a BEM stage solved, on its nx x ny grid: the progress line's numbers (the
+// stage's label "bem 256 x 256" from its full name). One process and MPI ranks say it the same way.
+LoadProgress bem_load_progress(const std::string& stage, long long nx, long long ny, std::size_t k,
+                               std::size_t loads, double load_value, long long iterations, double seconds,
+                               double stage_seconds);
+
 // "surface: done in 1.3 s".
 std::string stage_done_line(const std::string& stage, double seconds);
 

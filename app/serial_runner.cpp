@@ -102,14 +102,10 @@ class SerialRunner final : public StageRunner {
       }
       solution.pressure.resize(0, 0);
       solution.gap.resize(0, 0);
-      observer.solved({.stage = stage_label(name) + " " + std::to_string(solved.grid().nx) + " x " +
-                                std::to_string(solved.grid().ny),
-                       .load = k + 1,
-                       .loads = mean_pressures.size(),
-                       .load_value = mean_pressures[k] / estar,
-                       .iterations = static_cast<long long>(solution.iterations),
-                       .seconds = solution.seconds,
-                       .stage_seconds = std::chrono::duration<double>(Clock::now() - start).count()});
+      observer.solved(bem_load_progress(name, solved.grid().nx, solved.grid().ny, k, mean_pressures.size(),
+                                        mean_pressures[k] / estar,
+                                        static_cast<long long>(solution.iterations), solution.seconds,
+                                        std::chrono::duration<double>(Clock::now() - start).count()));
       done.solutions.push_back(std::move(solution));
     }
     // The residual topography: the surface as the path left it (its plastic flow kept), heights from the

@@ -9,11 +9,19 @@
 //                              [--solver polonsky_keer|preconditioned_cg] [--no-serial]
 // prints one Markdown table row (rank 0): ranks, threads, n, solver, s/iteration, serial s/iteration, ratio,
 // transposes s/iteration, their share, MiB per rank (largest), serial MiB.
+//
+//   mpiexec -n RANKS bench_mpi --n 1024 --tolerance 1e-8 [--reference active_set] [--reference-threads 2] ...
+// solves to the tolerance instead (the time a load costs, iterations as they come) and prints: ranks,
+// threads, n, solver, iterations, s/load, the serial reference's solver, threads, iterations and s/load, and
+// the ratio of the two times. The reference runs on rank 0 while the others wait without spinning
+// (quiet_barrier), so that a reference on 2 threads has both cores.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <fftw3-mpi.h>
@@ -64,6 +72,56 @@ double transpose_seconds(Index nx, Index ny, int repetitions, MPI_Comm comm) {
   return median(times);
 }
 
+// A barrier that sleeps while it waits (MPI_Barrier polls, taking a core from a reference timed meanwhile).
+void quiet_barrier(MPI_Comm comm) {
+  MPI_Request request;
+  MPI_Ibarrier(comm, &request);
+  for (int done = 0; MPI_Test(&request, &done, MPI_STATUS_IGNORE), !done;)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+}
+
+struct TimedSolves {
+  double seconds = 0;  // the median over the repetitions, of one load
+  Index iterations = 0;
+};
+
+// --tolerance: each solve to the tolerance, the distributed one against the serial `reference` on
+// `reference_threads` threads (rank 0); prints one row.
+void per_load_row(const Grid& grid, const HeightMap& local, const Surface* surface, Real modulus, Real load,
+                  const BemSolverOptions& options, int threads, SolverKind reference, int reference_threads,
+                  int repetitions, MPI_Comm comm) {
+  const int rank = mpi::rank_of(comm);
+  TimedSolves distributed, serial;
+  std::vector<double> times;
+  for (int r = 0; r < repetitions; ++r) {
+    mpi::DistributedBemSolver solver(grid, local, modulus, comm, options, threads);
+    MPI_Barrier(comm);
+    const auto start = std::chrono::steady_clock::now();
+    distributed.iterations = solver.solve(load).iterations;
+    MPI_Barrier(comm);
+    times.push_back(seconds_since(start));
+  }
+  distributed.seconds = median(times);
+  if (rank == 0) {
+    BemSolverOptions reference_options = options;
+    reference_options.solver = reference;
+    times.clear();
+    for (int r = 0; r < repetitions; ++r) {
+      BemSolver solver(*surface, modulus, reference_options, reference_threads);
+      const auto start = std::chrono::steady_clock::now();
+      serial.iterations = solver.solve(load).iterations;
+      times.push_back(seconds_since(start));
+    }
+    serial.seconds = median(times);
+    std::printf("| %d | %d | %ld | %s | %ld | %.3g | %s | %d | %ld | %.3g | %.3g |\n", mpi::size_of(comm),
+                threads, static_cast<long>(grid.nx), std::string(solver_name(options.solver)).c_str(),
+                static_cast<long>(distributed.iterations), distributed.seconds,
+                std::string(solver_name(reference)).c_str(), reference_threads,
+                static_cast<long>(serial.iterations), serial.seconds, distributed.seconds / serial.seconds);
+  }
+  quiet_barrier(comm);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -72,6 +130,9 @@ int main(int argc, char** argv) {
   int iterations = 10, repetitions = 3, threads = 1;
   bool serial = true;
   SolverKind solver = SolverKind::polonsky_keer;
+  double tolerance = 0;  // 0: a fixed number of iterations
+  SolverKind reference = SolverKind::active_set;
+  int reference_threads = 1;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&] { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
@@ -87,6 +148,12 @@ int main(int argc, char** argv) {
       solver = solver_kind(value(), "--solver");
     else if (arg == "--no-serial")
       serial = false;
+    else if (arg == "--tolerance")
+      tolerance = std::stod(value());
+    else if (arg == "--reference")
+      reference = solver_kind(value(), "--reference");
+    else if (arg == "--reference-threads")
+      reference_threads = std::stoi(value());
     else {
       std::fprintf(stderr, "bench_mpi: unknown argument %s (see bench/bench_mpi.cpp)\n", arg.c_str());
       return 2;
@@ -104,6 +171,15 @@ int main(int argc, char** argv) {
   options.solver = solver;
   options.tolerance = 1e-300;  // never reached: every solve runs `iterations` iterations
   options.max_iterations = iterations;
+  if (tolerance > 0) {
+    options.tolerance = tolerance;
+    options.max_iterations = BemSolverOptions{}.max_iterations;
+    std::optional<Surface> surface;  // rank 0's, for the reference
+    if (rank == 0) surface = generate_surface(grid, psd, 1, reference_threads);
+    per_load_row(grid, local, surface ? &*surface : nullptr, modulus, load, options, threads, reference,
+                 reference_threads, repetitions, comm);
+    return 0;
+  }
 
   std::vector<double> times;
   std::size_t bytes = 0;

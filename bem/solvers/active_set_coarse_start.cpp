@@ -1,4 +1,5 @@
 #include "contactbench/bem/solvers/active_set_method.hpp"
+#include "contactbench/bem/solvers/block_average.hpp"
 
 namespace contactbench {
 
@@ -153,14 +154,7 @@ void ActiveSet<T>::make_coarse_level() {
 
 template <class T>
 std::vector<T> ActiveSet<T>::coarse_heights(const Grid& coarse_grid) const {
-  const Index nx = grid_.nx;
-  std::vector<T> coarse(static_cast<std::size_t>(coarse_grid.points()));
-  auto at = [&](Index y, Index x) { return static_cast<double>(h_[static_cast<std::size_t>(y * nx + x)]); };
-  for (Index y = 0; y < coarse_grid.ny; ++y)
-    for (Index x = 0; x < coarse_grid.nx; ++x)
-      coarse[static_cast<std::size_t>(y * coarse_grid.nx + x)] = static_cast<T>(
-          0.25 * (at(2 * y, 2 * x) + at(2 * y, 2 * x + 1) + at(2 * y + 1, 2 * x) + at(2 * y + 1, 2 * x + 1)));
-  return coarse;
+  return block_averages(h_.data(), grid_.nx, coarse_grid.ny);  // bem/solvers/block_average.hpp
 }
 
 // The starting sets. Cold: {p - k g > 0}, k the stiffness of one pixel, g the gap of the nested start

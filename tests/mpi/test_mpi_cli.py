@@ -101,7 +101,11 @@ with tempfile.TemporaryDirectory() as work:
         f.write(f'name = "mpi"\nreference = "bem"\n[surface]\nfile = "{surface}"\n[material]\nE = 100e9\nnu = 0.3\n'
                 '[loads]\nvalues = [1e-3, 1e-2]\n[methods.bem]\nsolver = "preconditioned_cg"\n'
                 '[methods.plateau]\nmethod = "plateau"\n')
-    run(["run", scene, "--out", os.path.join(work, "run"), "--threads", "1", "--quiet"], distributed=True)
+    # With --progress, rank 0 says each load solved as one process does (a line per load, in order).
+    done = run(["run", scene, "--out", os.path.join(work, "run"), "--threads", "1", "--progress"], distributed=True)
+    for k in (1, 2):
+        if f"bem 64 x 50: load {k}/2 " not in done.stderr:
+            failures.append(f"run --progress on {ranks} ranks: no progress line of load {k}/2 in: {done.stderr}")
     try:
         with open(os.path.join(work, "run", "summary.json")) as f:
             summary = json.load(f)
@@ -113,6 +117,13 @@ with tempfile.TemporaryDirectory() as work:
             failures.append(f"summary.json: the solver on {ranks} ranks recorded as {solvers}")
         if not summary["provenance"]["command"].startswith(f"mpiexec -np {ranks} "):
             failures.append(f"summary.json: the command {summary['provenance']['command']} does not say mpiexec")
+        # The threads recorded are each rank's, with the ranks beside them (the stamp of every file says both).
+        if summary["provenance"].get("ranks") != ranks or summary["provenance"].get("threads") != 1:
+            failures.append(f"summary.json: provenance {summary['provenance']} lacks ranks {ranks} x 1 threads")
+        with open(os.path.join(work, "run", "curves.csv")) as f:
+            stamp = f.readline()
+        if f", {ranks} ranks x 1 threads, " not in stamp:
+            failures.append(f"curves.csv: the stamp does not say {ranks} ranks x 1 threads: {stamp}")
     except (OSError, KeyError, ValueError) as e:
         failures.append(f"run as {ranks} ranks: no readable summary.json ({e})")
 
