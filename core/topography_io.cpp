@@ -106,49 +106,25 @@ TopographyReading read_topography_reading(const std::filesystem::path& path,
     throw InputError(
         path, 0,
         "is a line scan (a profile along one line), not a surface: `contactbench stats` gives its "
-        "profile statistics, but contact areas, spots and the elastic coupling need heights over "
-        "an area (a 2-D file)");
-  if (format == TopographyFormat::plain_matrix)
-    return formats::reading_from_channels(path, formats::read_plain_matrix(path, lines), format, options);
-  if (format == TopographyFormat::xyz_points)
-    return formats::reading_from_channels(path, formats::read_xyz_points(path, lines), format, options);
-  if (format == TopographyFormat::interferometer)
-    return formats::reading_from_channels(path, formats::read_interferometer(path, lines, options), format,
-                                          options);
-  if (format == TopographyFormat::gwyddion)
-    return formats::reading_from_channels(path, formats::read_gwyddion(path, lines, options), format,
-                                          options);
-  // The project's own format: one channel, every height stated, its own unit (metres).
-  if (options.unit)
-    throw InputError(path, 0,
-                     "a project file states its own unit (m); a unit (--unit, unit = \"...\") is only for "
-                     "files that state none (npy, plain or CSV matrices, x y z point lists)");
-  if (options.channel && *options.channel != "height" && *options.channel != "0")
-    throw InputError(path, 0, "unknown channel '" + *options.channel + "'; the file's channels: 0 'height'");
-  Surface surface = formats::read_project(path, lines, options);
-  // The project format holds no invalid points: its region and levelling apply to the surface.
-  std::string crop = "none";
-  if (options.crop) {
-    std::vector<Real> values(static_cast<std::size_t>(surface.nx() * surface.ny()));
-    Eigen::Map<HeightMap>(values.data(), surface.ny(), surface.nx()) = surface.heights();
-    Index nx = surface.nx(), ny = surface.ny();
-    Real lx = surface.grid().lx, ly = surface.grid().ly;
-    const formats::CropResult kept = formats::crop_values(path, values, nx, ny, lx, ly, *options.crop);
-    crop = to_string(*options.crop) + " (columns " + std::to_string(kept.x0) + " to " +
-           std::to_string(kept.x0 + nx - 1) + ", rows " + std::to_string(kept.y0) + " to " +
-           std::to_string(kept.y0 + ny - 1) + ")";
-    // A part of a periodic surface does not repeat; the caller may still say it does.
-    surface = Surface(Grid{nx, ny, lx, ly, options.periodic.value_or(false)},
-                      Eigen::Map<const HeightMap>(values.data(), ny, nx));
-  }
-  if (options.level != Levelling::none || options.align_rows != RowAlignment::none) {
-    HeightMap heights = surface.heights();
-    align_rows(heights, options.align_rows);
-    level_heights(heights, surface.grid(), options.level);
-    surface = Surface(surface.grid(), std::move(heights));
-  }
-  return TopographyReading{std::move(surface), format,        "height", {"height"}, 0,
-                           options.fill,       options.level, "m",      crop,       options.align_rows};
+        "profile statistics and a scene runs the analytic theories on it, but contact areas, spots and the "
+        "elastic coupling need heights over an area (a 2-D file)");
+  // Every text format gives its one channel; the channels' code does units, invalid points, region and
+  // levelling for all of them alike.
+  const formats::RawTopography raw = [&] {
+    switch (format) {
+      case TopographyFormat::plain_matrix:
+        return formats::read_plain_matrix(path, lines);
+      case TopographyFormat::xyz_points:
+        return formats::read_xyz_points(path, lines);
+      case TopographyFormat::interferometer:
+        return formats::read_interferometer(path, lines, options);
+      case TopographyFormat::gwyddion:
+        return formats::read_gwyddion(path, lines, options);
+      default:
+        return formats::read_project(path, lines, options);
+    }
+  }();
+  return formats::reading_from_channels(path, raw, format, options);
 }
 
 Field read_field(const std::filesystem::path& path) {

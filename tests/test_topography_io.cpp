@@ -308,11 +308,11 @@ TEST_F(TopographyIoFiles, NanAndInfWithAHeaderAreInvalidPoints) {
   TopographyReadOptions options;
   options.lx = 1e-6;
   expect_input_error(write("overflow.txt", "1 2\n1e999 3\n"), 2, "out of the range", options);
-  // The project's own format states every height (its writer writes finite values only): NaN is refused.
+  // The project's own format alike: its writer writes finite heights, but a file edited by hand may not.
   expect_input_error(write("project_nan.txt",
                            "# contactbench surface v1\n# nx=2 ny=1 lx=1e-6 ly=5e-7 periodic=false unit=m\n"
                            "1 nan\n"),
-                     3, "not finite");
+                     0, "1 of 2 points of channel 'height' are invalid");
 }
 
 TEST_F(TopographyIoFiles, MissingSizeIsRejected) {

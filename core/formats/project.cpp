@@ -21,13 +21,17 @@ namespace {
 // The project format's values with the quantity and unit its header names: heights (no quantity, unit=m)
 // or a field (quantity=pressure unit=Pa, quantity=gap unit=m, ...), written by write_surface / write_field.
 struct ProjectValues {
-  Surface values;
+  DataBlock values;
+  Real lx = 0, ly = 0;
+  bool periodic = false;
   std::string quantity;  // empty: heights
   std::string unit;
 };
 
+// `syntax`: heights mark invalid points with NaN or Inf as the other text formats do; a field is refused
+// any (its writer writes finite values only).
 ProjectValues read_project_values(const fs::path& path, std::span<const Line> lines,
-                                  const TopographyReadOptions& options) {
+                                  const TopographyReadOptions& options, const RowSyntax& syntax) {
   const Line& magic = lines.front();
   if (magic.text != project_magic)
     throw InputError(path, magic.number,
@@ -84,17 +88,16 @@ ProjectValues read_project_values(const fs::path& path, std::span<const Line> li
   const PromisedShape promised{rows, columns, "ny=" + std::to_string(rows) + where,
                                "nx=" + std::to_string(columns) + where, header.number};
   // Scale 1: multiplying by 1.0 is exact, so the heights stay bit for bit what was written.
-  DataBlock block = parse_data(path, lines.subspan(2), 1.0, promised, " after the header");
-  return {
-      make_surface(std::move(block), *size_x, *size_y, options.periodic.value_or(periodic.value == "true")),
-      std::string(quantity.value), std::string(unit.value)};
+  DataBlock block = parse_data(path, lines.subspan(2), 1.0, promised, " after the header", syntax);
+  return {std::move(block),       *size_x, *size_y, periodic.value == "true", std::string(quantity.value),
+          std::string(unit.value)};
 }
 
 }  // namespace
 
-Surface read_project(const fs::path& path, std::span<const Line> lines,
-                     const TopographyReadOptions& options) {
-  ProjectValues read = read_project_values(path, lines, options);
+RawTopography read_project(const fs::path& path, std::span<const Line> lines,
+                           const TopographyReadOptions& options) {
+  ProjectValues read = read_project_values(path, lines, options, header_text_syntax());
   // A field in metres (the gap) reads as heights; any other is not a surface.
   if (read.unit != "m")
     throw InputError(
@@ -102,12 +105,15 @@ Surface read_project(const fs::path& path, std::span<const Line> lines,
         "is a " + read.quantity + " field [" + read.unit +
             "] written by contactbench, not heights in metres; draw it with `contactbench plot " +
             path.string() + "`");
-  return std::move(read.values);
+  RawTopography raw = single_height_channel(std::move(read.values), "m", read.lx, read.ly);
+  raw.periodic = read.periodic;
+  return raw;
 }
 
 Field read_project_field(const fs::path& path, std::span<const Line> lines) {
-  ProjectValues read = read_project_values(path, lines, {});
-  return {std::move(read.values), read.quantity.empty() ? "height" : read.quantity, read.unit};
+  ProjectValues read = read_project_values(path, lines, {}, RowSyntax{});
+  return {make_surface(std::move(read.values), read.lx, read.ly, read.periodic),
+          read.quantity.empty() ? "height" : read.quantity, read.unit};
 }
 
 }  // namespace contactbench::formats

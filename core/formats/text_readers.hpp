@@ -19,8 +19,9 @@ namespace contactbench::formats {
 inline constexpr std::string_view project_magic = "# contactbench surface v1";
 inline constexpr std::string_view project_prefix = "# contactbench surface";
 
-Surface read_project(const std::filesystem::path& path, std::span<const Line> lines,
-                     const TopographyReadOptions& options);
+// The project format's heights as its one channel, "height" (its size and periodicity with it).
+RawTopography read_project(const std::filesystem::path& path, std::span<const Line> lines,
+                           const TopographyReadOptions& options);
 // A field file of the project's format (write_field): its values as they are, with quantity and unit; a
 // surface file reads as quantity "height", unit "m".
 Field read_project_field(const std::filesystem::path& path, std::span<const Line> lines);
