@@ -120,9 +120,7 @@ void register_all() {
 
 int main(int argc, char** argv) {
   contactbench::bench::register_all();
-  benchmark::Initialize(&argc, argv);
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
+  const int status = contactbench::bench::run_benchmarks(argc, argv, {});  // records the threads too
   std::filesystem::remove_all(contactbench::bench::folder());
-  return 0;
+  return status;
 }
