@@ -29,6 +29,12 @@ namespace contactbench {
 
 namespace {
 
+// Convolutions of the finest grid's operator per load of the default solver, measured by counting them on
+// the 1024^2 periodic surface of docs/solvers.md's Planning (one cold load: 22; a 12-load curve: 433), with
+// room: the planner measures a curve's plans without a wisdom file when loads x this exceeds its pay-back
+// count. Plain Polonsky-Keer iterates about 15 times as often, so for it this undercounts (estimates more).
+constexpr double kApplicationsPerLoad = 40;
+
 struct BemOptions {
   TopographyOptions topography;
   std::vector<Real> loads;
@@ -191,6 +197,9 @@ void run_bem(const BemOptions& o, const CommandContext& context) {
   const Scene scene = scene_from_flags(document, command, flags);
   if (!o.approach_retract.empty()) return run_approach_retract(o, scene, command);
   const RunObserver observer = terminal_observer(command, o.progress);
+  // The planner's estimate of the run's work on its finest grid (core/fft.hpp FftWork; docs/solvers.md,
+  // Planning): kApplicationsPerLoad convolutions a load, so that a long curve without a wisdom file measures.
+  set_fft_work({.expected_applications = static_cast<double>(o.loads.size()) * kApplicationsPerLoad});
   FftwWisdomFile wisdom(fftw_wisdom_path(o.fftw_wisdom, o.threads), o.threads, observer.warning);
   const double planning_before = fftw_planning_seconds();
   SceneReport report;

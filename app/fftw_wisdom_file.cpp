@@ -64,12 +64,19 @@ std::optional<std::filesystem::path> fftw_wisdom_path(const std::string& option,
 }
 
 FftwWisdomFile::FftwWisdomFile(std::optional<std::filesystem::path> path, int threads, Warn warn)
-    : path_(std::move(path)), key_(fftw_wisdom_key(threads)), warn_(std::move(warn)) {
-  if (!path_) return;
+    : path_(std::move(path)),
+      key_(fftw_wisdom_key(threads)),
+      warn_(std::move(warn)),
+      work_before_(fft_work()) {
+  if (!path_) {
+    set_fft_work({.wisdom_kept = false, .expected_applications = work_before_.expected_applications});
+    return;
+  }
   const WisdomImport read = import_fftw_wisdom(*path_, key_);
   imported_ = read.imported;
   replaceable_ = !read.found || read.wisdom_file;
   learned_by_start_ = fftw_wisdom_text(key_);
+  set_fft_work({.wisdom_kept = kept(), .expected_applications = work_before_.expected_applications});
   if (read.problem.empty()) return;
   warn_("FFTW wisdom file " + path_->string() + " " + read.problem + "; FFTW plans by measuring" +
         (replaceable_ ? " and the file is rewritten with what it learns"
@@ -82,6 +89,7 @@ FftwWisdomFile::~FftwWisdomFile() {
     save();
   } catch (...) {  // a destructor must not throw; save() warns on its own and is not expected to throw
   }
+  set_fft_work(work_before_);
 }
 
 void FftwWisdomFile::save() {

@@ -14,6 +14,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "contactbench/core/fft.hpp"
+
 namespace contactbench {
 
 inline constexpr const char* kFftwWisdomVariable = "CONTACTBENCH_FFTW_WISDOM";
@@ -31,7 +33,8 @@ class FftwWisdomFile {
   using Warn = std::function<void(const std::string&)>;
 
   // Imports the file's wisdom into FFTW's planners, warning when it is unusable (foreign, damaged, not a
-  // wisdom file at all).
+  // wisdom file at all). While it lives, the planner is told whether the wisdom is kept (core/fft.hpp
+  // FftWork: the finest grids are then measured, once per machine).
   FftwWisdomFile(std::optional<std::filesystem::path> path, int threads, Warn warn);
   // Saves, if save() was not called (an error ended the command: the plans measured are still good).
   ~FftwWisdomFile();
@@ -46,6 +49,9 @@ class FftwWisdomFile {
   // For the run's stage line: "cached in FILE", "not kept" and the like.
   std::string describe() const;
 
+  // Whether what the planners measure is written to a file (a path, and not a foreign file left untouched).
+  bool kept() const { return path_.has_value() && replaceable_; }
+
  private:
   std::optional<std::filesystem::path> path_;
   std::string key_;
@@ -54,6 +60,7 @@ class FftwWisdomFile {
   bool replaceable_ = true;  // false for an existing file that is not a wisdom file
   bool imported_ = false;
   bool saved_ = false;
+  FftWork work_before_;  // the planner's FftWork before this file, given back when it goes
 };
 
 }  // namespace contactbench

@@ -229,37 +229,61 @@ Convolution<T>::Convolution(Index nx, Index ny, bool padded, int threads, FftRig
     aligned = aligned && F::alignment_of(reinterpret_cast<T*>(spectrum + row * m.nxh)) ==
                              F::alignment_of(reinterpret_cast<T*>(spectrum));
   // Measured plans apply 10-30 % faster than estimated ones (measured at 128^2 to 1024^2) and cost 0.25 s
-  // (256^2) to 1.3 s (1024^2, padded) to make, once per shape and process (FFTW keeps the wisdom: a load
-  // curve, or a second solver of the same grid, plans instantly). Small lattices are estimated, and so is
-  // any convolution asked to be.
-  const bool measured = plan_rigor == FftRigor::measure && lx_ * ly_ >= kMinPointsForThreads;
-  const unsigned rigor = measured ? FFTW_MEASURE : FFTW_ESTIMATE;
-  const unsigned flags = rigor | (aligned ? 0u : FFTW_UNALIGNED);
+  // (256^2) to 1.3 s (1024^2, padded) to make, once per shape and process unless FFTW's wisdom holds them
+  // (docs/solvers.md, Planning). `measure` measures lattices of kMinPointsForThreads points and more;
+  // `by_work` takes measured plans the wisdom holds already (FFTW_WISDOM_ONLY: none made otherwise) and
+  // else lets choose_fft_rigor decide; small lattices and `estimate` are estimated.
   const int n_x = static_cast<int>(lx_), n_y = static_cast<int>(ly_), nxh = static_cast<int>(m.nxh);
   const int rest_rows = static_cast<int>(ny_ % kRowsPerChunk), rest_columns = static_cast<int>(m.nxh % B);
+  const bool has_rest_rows = rest_rows && ny_ > kRowsPerChunk, has_rest_columns = rest_columns && m.nxh > B;
   auto* columns = reinterpret_cast<FCx*>(m.columns[0].get());
-  {
-    auto lock = lock_fftw_planner();
-    const FftwPlanningClock clock;
-    F::plan_with_nthreads(1);
+  const unsigned alignment = aligned ? 0u : FFTW_UNALIGNED;
+  // Every plan at one rigor; false (none kept) when one could not be made.
+  auto make_plans = [&](unsigned rigor) {
+    const unsigned flags = rigor | alignment;
     const int full_rows = static_cast<int>(std::min<Index>(kRowsPerChunk, ny_));
     m.r2c_full = F::r2c(n_x, full_rows, m.rows_in[0].get(), n_x, spectrum, nxh, flags);
     m.c2r_full = F::c2r(n_x, full_rows, spectrum, nxh, m.rows_out[0].get(), n_x, flags);
-    if (rest_rows && ny_ > kRowsPerChunk) {
+    if (has_rest_rows) {
       m.r2c_rest = F::r2c(n_x, rest_rows, m.rows_in[0].get(), n_x, spectrum, nxh, flags);
       m.c2r_rest = F::c2r(n_x, rest_rows, spectrum, nxh, m.rows_out[0].get(), n_x, flags);
     }
     const int full_columns = static_cast<int>(std::min<Index>(B, m.nxh));
     m.forward_full = F::c2c(n_y, full_columns, columns, FFTW_FORWARD, rigor);
     m.backward_full = F::c2c(n_y, full_columns, columns, FFTW_BACKWARD, rigor);
-    if (rest_columns && m.nxh > B) {
+    if (has_rest_columns) {
       m.forward_rest = F::c2c(n_y, rest_columns, columns, FFTW_FORWARD, rigor);
       m.backward_rest = F::c2c(n_y, rest_columns, columns, FFTW_BACKWARD, rigor);
     }
+    const bool made = m.r2c_full && m.c2r_full && m.forward_full && m.backward_full &&
+                      (!has_rest_rows || (m.r2c_rest && m.c2r_rest)) &&
+                      (!has_rest_columns || (m.forward_rest && m.backward_rest));
+    if (!made)
+      for (auto* plan : {&m.r2c_full, &m.r2c_rest, &m.c2r_full, &m.c2r_rest, &m.forward_full, &m.forward_rest,
+                         &m.backward_full, &m.backward_rest}) {
+        F::destroy(*plan);
+        *plan = nullptr;
+      }
+    return made;
+  };
+  const Index points = lx_ * ly_;
+  bool made = false;
+  {
+    auto lock = lock_fftw_planner();
+    const FftwPlanningClock clock;
+    F::plan_with_nthreads(1);
+    if (plan_rigor == FftRigor::by_work && points >= kMinPointsForMeasuredPlans) {
+      made = make_plans(FFTW_MEASURE | FFTW_WISDOM_ONLY);
+      if (made) planned_rigor_ = FftRigor::measure;
+    }
+    if (!made) {
+      const FftRigor rigor = choose_fft_rigor(plan_rigor, points);
+      planned_rigor_ = rigor == FftRigor::measure && points >= kMinPointsForThreads ? FftRigor::measure
+                                                                                    : FftRigor::estimate;
+      made = make_plans(planned_rigor_ == FftRigor::measure ? FFTW_MEASURE : FFTW_ESTIMATE);
+    }
   }
-  if (!m.r2c_full || !m.c2r_full || !m.forward_full || !m.backward_full ||
-      (rest_rows && ny_ > kRowsPerChunk && (!m.r2c_rest || !m.c2r_rest)) ||
-      (rest_columns && m.nxh > B && (!m.forward_rest || !m.backward_rest)))
+  if (!made)
     throw Error("convolution: FFTW could not plan the transforms of a " + std::to_string(lx_) + " x " +
                 std::to_string(ly_) + " lattice");
   // Measuring wrote into the buffers: the padding of the input rows must be zero.

@@ -65,9 +65,9 @@ class Convolution {
   using ProductHook = FunctionRef<void(double)>;
 
   // nx x ny grid; `padded`: linear convolution (zero padding to 2 nx x 2 ny), else circular. `rigor`: how
-  // the plans are made (measured by default; lattices below kMinPointsForThreads points are always
-  // estimated).
-  Convolution(Index nx, Index ny, bool padded, int threads, FftRigor rigor = FftRigor::measure);
+  // the plans are made (by default chosen by the run's work, core/fft.hpp choose_fft_rigor, after measured
+  // plans the wisdom holds already; lattices below kMinPointsForThreads points are always estimated).
+  Convolution(Index nx, Index ny, bool padded, int threads, FftRigor rigor = FftRigor::by_work);
   ~Convolution();
   Convolution(const Convolution&) = delete;
   Convolution& operator=(const Convolution&) = delete;
@@ -83,6 +83,9 @@ class Convolution {
   // Threads of the team apply() runs (1 below kMinPointsForThreads points of the transform's lattice); the
   // `thread` argument of the callbacks is below this.
   int threads() const { return threads_; }
+  // How the plans were made: measure (by measuring, or from the wisdom of an earlier measurement) or
+  // estimate.
+  FftRigor planned_rigor() const { return planned_rigor_; }
 
   // The multiplier, the normalisation 1/(lx ly) of the transform pair folded in. Double whatever T is.
   void set_multiplier(const Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>& m);
@@ -105,6 +108,7 @@ class Convolution {
   bool padded_;
   Index lx_, ly_;
   int threads_;
+  FftRigor planned_rigor_ = FftRigor::estimate;
   double self_response_ = 0;
   std::unique_ptr<Impl> impl_;
 };

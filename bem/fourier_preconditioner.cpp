@@ -41,7 +41,7 @@ std::unique_ptr<Convolution<T>> make_filter(
 
 template <class T>
 std::unique_ptr<Convolution<T>> make_fourier_preconditioner(const Grid& grid, Real modulus, int threads) {
-  return make_filter<T>(grid, filter_multiplier(grid, modulus), threads, FftRigor::measure);
+  return make_filter<T>(grid, filter_multiplier(grid, modulus), threads, FftRigor::by_work);
 }
 
 template <class T>

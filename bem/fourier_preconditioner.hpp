@@ -35,6 +35,6 @@ std::unique_ptr<Convolution<T>> make_fourier_preconditioner(const Grid& grid, Re
 // `rigor`: how its plans are made (Convolution).
 template <class T>
 std::unique_ptr<Convolution<T>> make_unit_fourier_preconditioner(const Grid& grid, int threads = 1,
-                                                                 FftRigor rigor = FftRigor::measure);
+                                                                 FftRigor rigor = FftRigor::by_work);
 
 }  // namespace contactbench

@@ -101,15 +101,16 @@ std::unique_ptr<HalfSpace> make_half_space(const Grid& grid, Real modulus, int t
 }
 
 template <class T>
-std::unique_ptr<Convolution<T>> make_half_space_convolution(const Grid& grid, Real modulus, int threads) {
+std::unique_ptr<Convolution<T>> make_half_space_convolution(const Grid& grid, Real modulus, int threads,
+                                                            FftRigor rigor) {
   check_operator(grid, modulus);
-  auto convolution = std::make_unique<Convolution<T>>(grid.nx, grid.ny, !grid.periodic, threads);
+  auto convolution = std::make_unique<Convolution<T>>(grid.nx, grid.ny, !grid.periodic, threads, rigor);
   convolution->set_multiplier(grid.periodic ? periodic_multiplier(grid, modulus)
                                             : nonperiodic_multiplier(grid, modulus));
   return convolution;
 }
 
-template std::unique_ptr<Convolution<double>> make_half_space_convolution(const Grid&, Real, int);
-template std::unique_ptr<Convolution<float>> make_half_space_convolution(const Grid&, Real, int);
+template std::unique_ptr<Convolution<double>> make_half_space_convolution(const Grid&, Real, int, FftRigor);
+template std::unique_ptr<Convolution<float>> make_half_space_convolution(const Grid&, Real, int, FftRigor);
 
 }  // namespace contactbench

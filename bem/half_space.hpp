@@ -47,8 +47,10 @@ std::unique_ptr<HalfSpace> make_half_space(const Grid& grid, Real modulus, int t
 
 // The engine of the operator a grid calls for, in double or single precision, for callers that fuse their
 // own element-wise work into the transforms (the Polonsky-Keer solver). Its self_response() is the
-// displacement of a unit pressure on one pixel at that pixel [m/Pa].
+// displacement of a unit pressure on one pixel at that pixel [m/Pa]. `rigor`: how its plans are made
+// (bem/convolution.hpp).
 template <class T>
-std::unique_ptr<Convolution<T>> make_half_space_convolution(const Grid& grid, Real modulus, int threads = 1);
+std::unique_ptr<Convolution<T>> make_half_space_convolution(const Grid& grid, Real modulus, int threads = 1,
+                                                            FftRigor rigor = FftRigor::by_work);
 
 }  // namespace contactbench

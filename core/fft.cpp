@@ -35,6 +35,15 @@ unsigned planner_flags(FftRigor rigor) {
   return rigor == FftRigor::measure ? FFTW_MEASURE : FFTW_ESTIMATE;
 }
 
+std::mutex& work_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+FftWork& work_setting() {
+  static FftWork work;
+  return work;
+}
+
 void check_shape(Index nx, Index ny) {
   if (nx < 1 || ny < 1)
     throw Error("FFT: shape must be at least 1 x 1, got " + std::to_string(nx) + " x " + std::to_string(ny));
@@ -59,10 +68,22 @@ RealFft2d::RealFft2d(Index nx, Index ny, int threads, FftRigor rigor)
     throw Error("FFT: out of memory for a " + std::to_string(nx) + " x " + std::to_string(ny) + " transform");
   fftw_plan_with_nthreads(threads_);
   // MEASURE overwrites the arrays while planning; they hold nothing yet.
-  forward_plan_ = fftw_plan_dft_r2c_2d(static_cast<int>(ny_), static_cast<int>(nx_), real_, spectrum_,
-                                       planner_flags(rigor));
-  backward_plan_ = fftw_plan_dft_c2r_2d(static_cast<int>(ny_), static_cast<int>(nx_), spectrum_, real_,
-                                        planner_flags(rigor));
+  auto make_plans = [&](unsigned flags) {
+    forward_plan_ =
+        fftw_plan_dft_r2c_2d(static_cast<int>(ny_), static_cast<int>(nx_), real_, spectrum_, flags);
+    backward_plan_ =
+        fftw_plan_dft_c2r_2d(static_cast<int>(ny_), static_cast<int>(nx_), spectrum_, real_, flags);
+  };
+  // By the work: a measured plan the wisdom already holds costs nothing (FFTW_WISDOM_ONLY makes none
+  // otherwise); else the rule decides.
+  if (rigor == FftRigor::by_work && nx_ * ny_ >= kMinPointsForMeasuredPlans) {
+    make_plans(FFTW_MEASURE | FFTW_WISDOM_ONLY);
+    if (!forward_plan_ || !backward_plan_) {
+      destroy(forward_plan_);
+      destroy(backward_plan_);
+    }
+  }
+  if (!forward_plan_) make_plans(planner_flags(choose_fft_rigor(rigor, nx_ * ny_)));
   if (!forward_plan_ || !backward_plan_) throw Error("FFT: FFTW could not plan the transform");
   real().setZero();
   spectrum().setZero();
@@ -112,6 +133,24 @@ FftwPlanningClock::FftwPlanningClock() : start_(std::chrono::steady_clock::now()
 FftwPlanningClock::~FftwPlanningClock() {
   const auto elapsed = std::chrono::steady_clock::now() - start_;
   planning_nanoseconds() += std::chrono::duration_cast<std::chrono::nanoseconds>(elapsed).count();
+}
+
+void set_fft_work(const FftWork& work) {
+  std::lock_guard lock(work_mutex());
+  work_setting() = work;
+}
+
+FftWork fft_work() {
+  std::lock_guard lock(work_mutex());
+  return work_setting();
+}
+
+FftRigor choose_fft_rigor(FftRigor asked, Index points) {
+  if (asked != FftRigor::by_work) return asked;
+  if (points < kMinPointsForMeasuredPlans) return FftRigor::estimate;
+  const FftWork work = fft_work();
+  return work.wisdom_kept || work.expected_applications > kPayBackApplications ? FftRigor::measure
+                                                                               : FftRigor::estimate;
 }
 
 std::unique_lock<std::mutex> lock_fftw_planner() {

@@ -16,8 +16,32 @@
 namespace contactbench {
 
 // How hard FFTW searches for a fast plan: `estimate` plans instantly, `measure` times candidates
-// (seconds for large grids) and pays off only for the many transforms of a solver.
-enum class FftRigor { estimate, measure };
+// (seconds for large grids) and pays off only for the many transforms of a solver; `by_work` lets the
+// planner choose by the run's work (choose_fft_rigor below; docs/solvers.md, Planning).
+enum class FftRigor { estimate, measure, by_work };
+
+// What a run tells the planner about its work, for FftRigor::by_work: whether FFTW's wisdom is kept in a file
+// (a measured plan is then paid once per machine, not once per run) and how many convolutions the run
+// expects to apply on its finest grid. Process-wide; the commands set it before their solves.
+struct FftWork {
+  bool wisdom_kept = false;
+  double expected_applications = 0;
+};
+void set_fft_work(const FftWork& work);
+FftWork fft_work();
+
+// Transform lattices below this many points are always estimated: a measured plan there never pays back
+// its planning within a run (docs/solvers.md, Planning: 256^2 needs 860-3,300 applications).
+inline constexpr Index kMinPointsForMeasuredPlans = Index{512} * 512;
+// Applications of one convolution that pay back measuring its plans at 512^2 and above (docs/solvers.md,
+// Planning: 440-2,000 measured, the largest taken so that a measured plan made for its own run surely pays).
+inline constexpr double kPayBackApplications = 2000;
+
+// FftRigor::by_work resolved for a lattice of `points` points, when no wisdom holds its plans already (the
+// caller tries FFTW_WISDOM_ONLY first): measure when the lattice is large enough and the wisdom is kept or
+// the run's expected applications exceed the pay-back count; estimate otherwise. `estimate` and `measure`
+// are returned as given.
+FftRigor choose_fft_rigor(FftRigor asked, Index points);
 
 // A 2D real <-> half-complex transform of one shape, with its own aligned buffers.
 // Transforms run on `threads` threads. One RealFft2d serves one caller at a time; creating and destroying

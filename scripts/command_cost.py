@@ -7,9 +7,12 @@ Usage: scripts/command_cost.py [--repetitions 3] [--threads 2] [--build build/re
 Measures, interleaved (cold, warm, off, cold, warm, off, ...) so that the machine's load falls on each alike:
   1. `contactbench bem S --periodic --loads 0.000478 --threads T` on a 1024^2 periodic surface S (surface A's
      spectrum, made by `contactbench generate`), wall time of the whole process:
-       cold  -- a new, empty wisdom file: FFTW plans by measuring and the file is written (a machine's first run);
-       warm  -- the file the run before wrote: the plans are read, not measured (every later run);
-       none  -- --fftw-wisdom none: plans measured and nothing kept (what every run cost before the file).
+       cold  -- a new, empty wisdom file: the finest grid's plans are measured and the file is written (a
+                machine's first run); coarse levels and lattices below 512^2 are estimated (docs/solvers.md,
+                Planning: the planner level chosen by the work);
+       warm  -- the file the run before wrote: the measured plans are read, not measured (every later run);
+       none  -- --fftw-wisdom none: nothing kept, so the planner measures only what the run's own work pays
+                back (one load: nothing; the plans are estimated).
   2. `contactbench run scenes/paper/surface_A.toml --threads T --no-plots`, the BEM stage's seconds and the
      planning line of "Stages that ran" (summary.json), cold / warm / none as above.
 Medians of the repetitions; the machine is shared, so the load average is recorded beside them.
@@ -103,10 +106,12 @@ def main():
         f"{min(loads):.1f} to {max(loads):.1f} on {os.cpu_count()} cores: the machine is shared and the times "
         "are noisy; medians of the repetitions, each repetition's value listed.",
         "",
-        "cold: a new wisdom file (FFTW plans by measuring, FFTW_MEASURE, and the file is written: a machine's "
-        "first run); warm: the file the cold run wrote (plans read, not measured: every later run); none: "
-        "`--fftw-wisdom none` (plans measured, nothing kept: every run before the wisdom file). The cases run "
-        "interleaved.",
+        "Planner level chosen by the work (docs/solvers.md, Planning): coarse levels and lattices below 512^2 "
+        "estimated; the finest level measured when a wisdom file is kept. cold: a new wisdom file (the finest "
+        "level's plans measured, FFTW_MEASURE, and the file is written: a machine's first run); warm: the file "
+        "the cold run wrote (plans read, not measured: every later run); none: `--fftw-wisdom none` (nothing "
+        "kept: measured only where the run's own expected work pays back, which one load or one scene does "
+        "not, so estimated). The cases run interleaved.",
         "",
         "## One load on a 1024^2 periodic surface, the whole `contactbench bem` process",
         "",

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Renders a Google Benchmark JSON of contactbench (bench_labelling, bench_sweep, bench_bem or
-bench_bem_solvers, bench_bem_adhesion, bench_fill, bench_formats_read) as Markdown tables.
+bench_bem_solvers, bench_bem_adhesion, bench_fill, bench_formats_read, bench_command) as Markdown
+tables.
 
 Medians of the repetitions, in milliseconds, and ratios to the references measured in the same run.
 Usage: render_bench.py results/bench/labelling.json > results/bench/labelling.md
@@ -441,12 +442,40 @@ def formats_read(data):
     return lines
 
 
+def command(data):
+    """bench_command: the whole `contactbench bem` command in-process beside its solve alone."""
+    rows = medians(data)
+    lines = header(data, "The whole bem command beside its solve", "scripts/bench.sh command")
+    lines.append("`contactbench bem FILE --periodic --loads ... --threads 2` run in-process (app/cli.hpp run_cli: "
+                 "reading the text surface, planning from the wisdom file an untimed first run wrote, solving, the "
+                 "statistics, writing the CSV; the process start is not in it) against BemSolver made on the "
+                 "surface already read and solved at the same loads (bench/bench_command.cpp). Surface: "
+                 "`contactbench generate --sigma 0.5e-6 --hurst 0.5 --qr 3.14e4 --size 200e-6 --grid n --seed 1`; "
+                 "one load 0.000478, a curve of 12 loads 0.000478 to 0.05. Medians of the repetitions, wall time.")
+    lines.append("")
+    lines.append("| n | loads | command [ms] | solve alone [ms] | overhead [ms] | command / solve |")
+    lines.append("|---:|---:|---:|---:|---:|---:|")
+    times = {}  # (whole or solve, n, loads) -> ms
+    for name, ms in rows.items():
+        if name.startswith("command/"):
+            kind, fields = parse(name)
+            times[(kind, int(fields["n"]), int(fields["loads"]))] = ms
+    for n, loads in sorted({(n, loads) for _, n, loads in times}):
+        whole, solve = times.get(("whole", n, loads)), times.get(("solve", n, loads))
+        over = whole - solve if whole is not None and solve is not None else None
+        ratio = whole / solve if whole is not None and solve else None
+        lines.append(f"| {n} | {loads} | {fmt(whole)} | {fmt(solve)} | {fmt(over)} | {fmt(ratio)} |")
+    return lines
+
+
 def main():
     with open(sys.argv[1]) as f:
         data = json.load(f)
     names = [b["name"] for b in data["benchmarks"]]
     if names and names[0].startswith("formats_read/"):
         lines = formats_read(data)
+    elif names and names[0].startswith("command/"):
+        lines = command(data)
     elif names and names[0].startswith("fill/"):
         lines = fill(data)
     elif names and names[0].startswith("bem_adhesion/"):

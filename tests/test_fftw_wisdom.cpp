@@ -228,7 +228,8 @@ TEST_F(FftwWisdom, GeneratedSurfacesDoNotDependOnTheWisdomHeld) {
   EXPECT_TRUE((refined_before.heights() == refined_after.heights()).all());
 }
 
-// The commands: a 256 x 256 periodic surface (its operators are measured plans), one load.
+// The commands: a 256 x 256 periodic surface, one load (its operators are estimated since the planner level
+// is chosen by the work, docs/solvers.md Planning; the run still measures and keeps other plans).
 class FftwWisdomCommands : public FftwWisdom {
  protected:
   void SetUp() override {

@@ -142,6 +142,8 @@ ActiveSetOutcome ActiveSet<T>::nested_start(const ActiveSetProblem& problem, std
 }
 
 // The next coarser level (null when the grid is too small or odd): the surface averaged over 2 x 2 blocks.
+// Its plans are estimated: a coarse level is solved once per load to a loose tolerance, far too few
+// applications to pay back a measured plan (docs/solvers.md, Planning).
 template <class T>
 void ActiveSet<T>::make_coarse_level() {
   const Index nx = grid_.nx, ny = grid_.ny;
@@ -149,7 +151,8 @@ void ActiveSet<T>::make_coarse_level() {
   Grid coarse_grid = grid_;
   coarse_grid.nx = nx / 2;
   coarse_grid.ny = ny / 2;
-  coarse_ = std::make_unique<ActiveSet<T>>(coarse_grid, coarse_heights(coarse_grid), modulus_, threads_);
+  coarse_ = std::make_unique<ActiveSet<T>>(coarse_grid, coarse_heights(coarse_grid), modulus_, threads_,
+                                           FftRigor::estimate);
 }
 
 template <class T>

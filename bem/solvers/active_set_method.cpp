@@ -8,12 +8,12 @@ namespace contactbench {
 using namespace active_set_tuning;
 
 template <class T>
-ActiveSet<T>::ActiveSet(const Grid& grid, std::vector<T> heights, Real modulus, int threads)
+ActiveSet<T>::ActiveSet(const Grid& grid, std::vector<T> heights, Real modulus, int threads, FftRigor rigor)
     : grid_(grid),
       h_(std::move(heights)),
       modulus_(modulus),
       threads_(threads),
-      operator_(make_half_space_convolution<T>(grid, modulus, threads)),
+      operator_(make_half_space_convolution<T>(grid, modulus, threads, rigor)),
       filter_(make_unit_fourier_preconditioner<float>(grid, threads, kFilterPlans)),
       n_(static_cast<std::size_t>(grid.points())),
       u_(n_),
@@ -237,8 +237,8 @@ template void ActiveSet<float>::finish(std::vector<float>&, double, double, doub
 template void ActiveSet<double>::displacement_minus_heights(std::vector<double>& out);
 template void ActiveSet<float>::displacement_minus_heights(std::vector<float>& out);
 
-template ActiveSet<double>::ActiveSet(const Grid&, std::vector<double>, Real, int);
-template ActiveSet<float>::ActiveSet(const Grid&, std::vector<float>, Real, int);
+template ActiveSet<double>::ActiveSet(const Grid&, std::vector<double>, Real, int, FftRigor);
+template ActiveSet<float>::ActiveSet(const Grid&, std::vector<float>, Real, int, FftRigor);
 
 template <class T>
 struct ActiveSetSolver<T>::Impl {

@@ -73,7 +73,10 @@ static_assert((2 * kExtensionRadius + 1) * (2 * kExtensionRadius + 1) <=
 template <class T>
 class ActiveSet {
  public:
-  ActiveSet(const Grid& grid, std::vector<T> heights, Real modulus, int threads);
+  // `rigor`: how the operator's plans are made (the finest level's by the run's work, the coarse levels'
+  // estimated: make_coarse_level).
+  ActiveSet(const Grid& grid, std::vector<T> heights, Real modulus, int threads,
+            FftRigor rigor = FftRigor::by_work);
   // The method's solve (ActiveSetSolver::solve); leaves u_ as G p of the solution.
   ActiveSetOutcome solve(const ActiveSetProblem& problem, double tolerance, Index max_iterations, bool warm,
                          std::vector<T>& p, const std::function<void()>& between);
