@@ -23,6 +23,7 @@
 #include "contactbench/theories/plateau_at_load.hpp"
 #include "contactbench/theories/plateau_model.hpp"
 #include "contactbench/theories/summit_gap_density.hpp"
+#include "random_surface.hpp"
 #include "small_scene.hpp"
 
 namespace contactbench {
@@ -30,13 +31,7 @@ namespace {
 
 constexpr Real um = 1e-6;
 
-Surface random_surface(Index n, std::uint64_t seed) {
-  const Grid grid{
-      .nx = n, .ny = n, .lx = static_cast<Real>(n) * um, .ly = static_cast<Real>(n) * um, .periodic = true};
-  const SelfAffinePsd psd{
-      .sigma = 1 * um, .hurst = 0.8, .qr = 2 * grid.dqx(), .qs = std::nullopt, .anisotropy = 1};
-  return generate_surface(grid, psd, seed);
-}
+using testing::random_surface;
 
 // The model's own curve says the area and spots at the load; the cut level's clusters must be those spots and
 // hold that area, node for node (both count the same set {h > z}: exact, no tolerance), and every other node

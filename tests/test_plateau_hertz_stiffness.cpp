@@ -15,20 +15,13 @@
 #include "contactbench/core/sweep.hpp"
 #include "contactbench/theories/plateau_hertz.hpp"
 #include "contactbench/theories/plateau_model.hpp"
+#include "random_surface.hpp"
 #include "small_scene.hpp"
 
 namespace contactbench {
 namespace {
 
-constexpr Real um = 1e-6;
-
-Surface random_surface(Index n, std::uint64_t seed) {
-  const Grid grid{
-      .nx = n, .ny = n, .lx = static_cast<Real>(n) * um, .ly = static_cast<Real>(n) * um, .periodic = true};
-  const SelfAffinePsd psd{
-      .sigma = 1 * um, .hurst = 0.8, .qr = 2 * grid.dqx(), .qs = std::nullopt, .anisotropy = 1};
-  return generate_surface(grid, psd, seed);
-}
+using testing::random_surface;
 
 // With exact levels the model's load is linear in the separation between two successive levels (the spots
 // and area of the lower level hold there, theories/plateau_model.hpp), so the secant between two loads

@@ -13,6 +13,7 @@
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/sweep.hpp"
 #include "contactbench/theories/plateau_model.hpp"
+#include "random_surface.hpp"
 
 namespace contactbench {
 namespace {
@@ -20,13 +21,7 @@ namespace {
 constexpr Real um = 1e-6;
 const Real pi = std::numbers::pi;
 
-Surface random_surface(Index n, std::uint64_t seed) {
-  const Grid grid{
-      .nx = n, .ny = n, .lx = static_cast<Real>(n) * um, .ly = static_cast<Real>(n) * um, .periodic = true};
-  const SelfAffinePsd psd{
-      .sigma = 1 * um, .hurst = 0.8, .qr = 2 * grid.dqx(), .qs = std::nullopt, .anisotropy = 1};
-  return generate_surface(grid, psd, seed);
-}
+using testing::random_surface;
 
 // docs/theory.md section 4 (the paper's eq. 3) as the header spells it out: P/(E* A0) summed over levels with
 // the value of sqrt(A_c N) reported at the lower level of each step (right endpoint), A_c = area_fraction A0.
