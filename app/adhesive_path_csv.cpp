@@ -5,13 +5,13 @@
 namespace contactbench {
 
 void write_adhesive_path_csv(std::ostream& out, const AdhesivePath& path, Real modulus, Index points,
-                             const Provenance& provenance) {
+                             const std::string& what, const Provenance& provenance) {
   const auto number = [](Real value) { return json_number(value); };
   const auto fraction = [&](Index count) {
     return number(static_cast<Real>(count) / static_cast<Real>(points));
   };
-  out << "# contactbench bem approach-retract path (commit " << provenance.commit << ", " << provenance.date
-      << ", " << threads_text(provenance) << ", " << provenance.machine << "): " << provenance.command << '\n'
+  out << "# " << what << " (commit " << provenance.commit << ", " << provenance.date << ", "
+      << threads_text(provenance) << ", " << provenance.machine << "): " << provenance.command << '\n'
       << "# separation d [m] of the flat (docs/solvers.md \"Separation control\"); load = net P/(E* A0), "
          "negative when tensile; energy U per nominal area [J/m^2] (docs/theory.md 10.7)\n";
   out << "# pull_off_load = " << number(path.pull_off_pressure / modulus)
@@ -25,8 +25,7 @@ void write_adhesive_path_csv(std::ostream& out, const AdhesivePath& path, Real m
         << ", contact_fraction " << fraction(jump.contact_points_before) << " -> "
         << fraction(jump.contact_points_after) << ", released " << number(jump.released_energy) << " J/m^2\n";
   if (!path.converged) out << "# NOT CONVERGED: some states did not converge (converged = 0)\n";
-  out << "leg,separation,load,adhesive_load,contact_fraction,attractive_fraction,mean_gap,energy,iterations,"
-         "converged\n";
+  out << kAdhesivePathColumns << '\n';
   for (const AdhesivePathState& s : path.states)
     out << (s.approaching ? "approach" : "retract") << ',' << number(s.separation) << ','
         << number(s.mean_pressure / modulus) << ',' << number(s.adhesive_pressure / modulus) << ','

@@ -180,7 +180,8 @@ void run_approach_retract(const BemOptions& o, const Scene& scene, const std::st
       approach_retract(solver, {.start = path[0], .turn = path[1], .steps = static_cast<Index>(steps)});
   const Provenance provenance = current_provenance(o.threads, command_line(o));
   write_output(o.out, [&](std::ostream& out) {
-    write_adhesive_path_csv(out, result, modulus, surface.grid().nx * surface.grid().ny, provenance);
+    write_adhesive_path_csv(out, result, modulus, surface.grid().nx * surface.grid().ny,
+                            "contactbench bem approach-retract path", provenance);
   });
   if (!result.converged) throw Error("contactbench bem: some states of the path did not converge (marked 0)");
 }

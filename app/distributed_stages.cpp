@@ -243,6 +243,8 @@ class DistributedRunner final : public StageRunner {
     if (!stage.load_path.empty()) missing.push_back("a load path (loads.path = \"as listed\")");
     if (stage.stiffness) missing.push_back("the contact stiffness (compare = [\"stiffness\"])");
     if (stage.distributions) missing.push_back("the distributions (distributions = { load, bins })");
+    if (stage.approach_retract)
+      missing.push_back("the approach-retract path (approach_retract = { from, to, steps })");
     for (const std::string& setting :
          undistributed_settings(bem_settings(), stage.settings, default_settings(bem_settings())))
       missing.push_back(setting);

@@ -1,13 +1,11 @@
 #include "contactbench/app/distribution_plots.hpp"
 
-#include <unistd.h>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
 #include "contactbench/app/field_picture.hpp"
 #include "contactbench/app/gnuplot_text.hpp"
-#include "contactbench/core/atomic_file.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench {
@@ -168,31 +166,13 @@ void draw_distribution_picture(const std::filesystem::path& csv, const std::file
     throw Error(csv.string() +
                 ": not a distribution CSV of contactbench (its column line starts with none of sigma_low, "
                 "gap_low, size_low)");
-  if (!gnuplot_available())
-    throw Error("gnuplot is not installed (Debian: gnuplot-nox), so " + csv.string() + " was not drawn");
-  const std::string suffix = ".partial." + std::to_string(::getpid());
-  const std::filesystem::path png_partial = png.empty() ? png : std::filesystem::path(png.string() + suffix);
-  const std::filesystem::path svg_partial = svg.empty() ? svg : std::filesystem::path(svg.string() + suffix);
-  const std::filesystem::path script =
-      (png.empty() ? svg : png).parent_path() / ("." + csv.filename().string() + ".gp" + suffix);
-  const auto absolute = [](const std::filesystem::path& path) {
-    return path.empty() ? std::string() : std::filesystem::absolute(path).string();
-  };
   const std::string title = csv.filename().string() + ": " + kind_name(file->kind) +
                             " at P/(E* A0) = " + (file->load.empty() ? std::string("?") : file->load);
-  write_file_atomically(script, [&](std::ostream& out) {
-    write_distribution_gnuplot_script(out, *file, absolute(csv), title, absolute(png_partial),
-                                      absolute(svg_partial));
-  });
-  const int status = std::system(("gnuplot " + shell_quote(script.string()) + " 2>/dev/null").c_str());
-  std::filesystem::remove(script);
-  if (status != 0) {
-    if (!png.empty()) std::filesystem::remove(png_partial);
-    if (!svg.empty()) std::filesystem::remove(svg_partial);
-    throw Error("gnuplot failed drawing " + csv.string());
-  }
-  if (!png.empty()) std::filesystem::rename(png_partial, png);
-  if (!svg.empty()) std::filesystem::rename(svg_partial, svg);
+  const std::string csv_path = std::filesystem::absolute(csv).string();
+  run_gnuplot(png, svg, csv,
+              [&](std::ostream& out, const std::string& png_path, const std::string& svg_path) {
+                write_distribution_gnuplot_script(out, *file, csv_path, title, png_path, svg_path);
+              });
 }
 
 bool draw_distribution_plots(const std::filesystem::path& folder, const SceneReport& report,

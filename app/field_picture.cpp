@@ -1,13 +1,10 @@
 #include "contactbench/app/field_picture.hpp"
 
-#include <unistd.h>
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <sstream>
 
 #include "contactbench/app/gnuplot_text.hpp"
-#include "contactbench/core/atomic_file.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench {
@@ -125,29 +122,11 @@ void write_field_gnuplot_script(std::ostream& out, const Field& field, const std
 
 void draw_field(const Field& field, const std::filesystem::path& data, const std::string& title,
                 const std::filesystem::path& png, const std::filesystem::path& svg) {
-  if (!gnuplot_available())
-    throw Error("gnuplot is not installed (Debian: gnuplot-nox), so " + data.string() + " was not drawn");
-  const std::string suffix = ".partial." + std::to_string(::getpid());
-  const std::filesystem::path png_partial = png.empty() ? png : std::filesystem::path(png.string() + suffix);
-  const std::filesystem::path svg_partial = svg.empty() ? svg : std::filesystem::path(svg.string() + suffix);
-  const std::filesystem::path script =
-      (png.empty() ? svg : png).parent_path() / ("." + data.filename().string() + ".gp" + suffix);
-  const auto absolute = [](const std::filesystem::path& path) {
-    return path.empty() ? std::string() : std::filesystem::absolute(path).string();
-  };
-  write_file_atomically(script, [&](std::ostream& out) {
-    write_field_gnuplot_script(out, field, absolute(data), title, absolute(png_partial),
-                               absolute(svg_partial));
-  });
-  const int status = std::system(("gnuplot " + shell_quote(script.string())).c_str());
-  std::filesystem::remove(script);
-  if (status != 0) {
-    if (!png.empty()) std::filesystem::remove(png_partial);
-    if (!svg.empty()) std::filesystem::remove(svg_partial);
-    throw Error("gnuplot failed drawing " + data.string());
-  }
-  if (!png.empty()) std::filesystem::rename(png_partial, png);
-  if (!svg.empty()) std::filesystem::rename(svg_partial, svg);
+  const std::string data_path = std::filesystem::absolute(data).string();
+  run_gnuplot(png, svg, data,
+              [&](std::ostream& out, const std::string& png_path, const std::string& svg_path) {
+                write_field_gnuplot_script(out, field, data_path, title, png_path, svg_path);
+              });
 }
 
 void draw_field_picture(const std::filesystem::path& field_file, const std::filesystem::path& png,

@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include "contactbench/app/adhesive_path_plot.hpp"
 #include "contactbench/app/cli.hpp"
 #include "contactbench/app/distribution_plots.hpp"
 #include "contactbench/app/field_picture.hpp"
@@ -49,7 +50,10 @@ void run_plot(const PlotOptions& o) {
   }
   for (const auto& path : {png, svg})
     if (!path.empty()) check_output_file(path, input, "--out");
-  if (input.extension() == ".csv") {
+  if (input.extension() == ".csv" && is_adhesive_path_file(input)) {
+    // An approach-retract path (app/adhesive_path_plot.hpp).
+    draw_adhesive_path_picture(input, png, svg);
+  } else if (input.extension() == ".csv") {
     // A distribution a scene's run wrote (app/distribution_plots.hpp); any other CSV is refused by name.
     draw_distribution_picture(input, png, svg);
   } else if (is_project_file(input)) {
@@ -83,7 +87,9 @@ void add_plot_command(CLI::App& parent) {
       "--fields` "
       "and a scene's `fields`) or any surface file (as a height map): a map with a colour bar in the field's "
       "unit, as PNG and SVG (gnuplot). A distribution CSV of a run (<label>_pressure_distribution.csv, "
-      "_gap_distribution.csv, _patch_sizes.csv) is drawn as its histogram beside the theories' columns.");
+      "_gap_distribution.csv, _patch_sizes.csv) is drawn as its histogram beside the theories' columns; an "
+      "approach-retract path CSV (`bem --approach-retract`, a scene's <label>_approach_retract.csv) as load "
+      "against separation and area against load, approach and retract legs apart.");
   options->topography.add_to(*command, "nothing for the picture");
   command
       ->add_option("--out", options->out,

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "contactbench/app/adhesive_path_csv.hpp"
 #include "contactbench/app/json_writer.hpp"
 #include "contactbench/app/unconverged.hpp"
 #include "contactbench/core/atomic_file.hpp"
@@ -47,6 +48,29 @@ std::string percent(Real value, bool is_signed = true) {
 
 std::string stamp(const Provenance& p) {
   return "commit " + p.commit + ", " + p.date + ", " + threads_text(p) + ", " + p.machine;
+}
+
+// The approach-retract path's summary (its states are in <label>_approach_retract.csv): loads as P/(E* A0).
+JsonObject path_json(const AdhesivePath& path, const SceneReport& report) {
+  const Real estar = report.scene.material.estar;
+  JsonObject o;
+  o.add("file_suffix", "_approach_retract.csv");
+  o.add("pull_off_load", path.pull_off_pressure / estar).add("pull_off_separation", path.pull_off_separation);
+  o.add("cycle_work", path.cycle_work).add("released_energy", path.released_energy);
+  std::vector<JsonObject> jumps;
+  for (const AdhesiveJump& jump : path.jumps) {
+    JsonObject j;
+    j.add("into_contact", jump.into_contact)
+        .add("separation_before", jump.separation_before)
+        .add("separation_after", jump.separation_after)
+        .add("load_before", jump.mean_pressure_before / estar)
+        .add("load_after", jump.mean_pressure_after / estar)
+        .add("released_energy", jump.released_energy);
+    jumps.push_back(std::move(j));
+  }
+  o.add("jumps", std::move(jumps));
+  o.add("states", static_cast<long long>(path.states.size())).add("converged", path.converged);
+  return o;
 }
 
 JsonObject provenance_json(const Provenance& p) {
@@ -235,6 +259,7 @@ void write_summary_json(std::ostream& out, const SceneReport& report, const Comp
     for (const std::size_t k : unconverged_loads(r.curve))
       unconverged.push_back(report.loads()[k]);
     o.add("unconverged_loads", std::span<const double>(unconverged));
+    if (r.curve.approach_retract) o.add("approach_retract", path_json(*r.curve.approach_retract, report));
     methods.push_back(std::move(o));
   }
   root.add("methods", std::move(methods));
@@ -308,6 +333,18 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
   out << "\nMethods as run, and the area each is compared by:\n\n";
   for (const MethodResult& r : report.methods)
     out << "- " << r.label << ": " << r.curve.parameters << "; compared area: " << r.compared_area << '\n';
+  for (const MethodResult& r : report.methods)
+    if (r.curve.approach_retract) {
+      const AdhesivePath& path = *r.curve.approach_retract;
+      const Real estar = report.scene.material.estar;
+      out << "\nApproach-retract path of " << r.label << " (" << r.label
+          << "_approach_retract.csv and its plot): " << path.states.size()
+          << " states, pull-off P/(E* A0) = " << table_number(path.pull_off_pressure / estar)
+          << " at separation " << table_number(path.pull_off_separation) << " m, " << path.jumps.size()
+          << " jumps (energy they release " << table_number(path.released_energy)
+          << " J/m^2, work around the cycle " << table_number(path.cycle_work) << " J/m^2)"
+          << (path.converged ? "" : "; NOT CONVERGED: some states did not converge") << ".\n";
+    }
   out << "\nStages that ran:";
   for (const StageRecord& s : report.stages)
     out << ' ' << s.name << " " << table_number(s.seconds, "%.3g") << " s;";
@@ -363,6 +400,14 @@ void write_report(const std::filesystem::path& folder, const SceneReport& report
         write_path_csv(out, m.curve.path_columns,
                        "contactbench run of scene " + report.scene.name + ", " + m.label + " (" +
                            stamp(provenance) + ")");
+      });
+  for (const MethodResult& m : report.methods)
+    if (m.curve.approach_retract)
+      write_file_atomically(folder / (m.label + "_approach_retract.csv"), [&](std::ostream& out) {
+        write_adhesive_path_csv(
+            out, *m.curve.approach_retract, report.scene.material.estar, m.curve.approach_retract_points,
+            "contactbench run of scene " + report.scene.name + ", " + m.label + ": approach-retract path",
+            provenance);
       });
   for (const MethodResult& m : report.methods)
     if (m.curve.distributions) {

@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include "contactbench/app/adhesive_path_plot.hpp"
 #include "contactbench/app/cli.hpp"
 #include "contactbench/app/comparison.hpp"
 #include "contactbench/app/distribution_plots.hpp"
@@ -94,6 +95,14 @@ void run_command(const RunCommandOptions& o, const CommandContext& context) {
     if (o.plots) {
       draw_load_area_plots(staging, report, std::cerr);
       draw_distribution_plots(staging, report, std::cerr);  // only when the scene asked for distributions
+      for (const MethodResult& m : report.methods)  // only when the scene asked for an approach_retract path
+        if (m.curve.approach_retract) try {
+            const std::filesystem::path csv = staging / (m.label + "_approach_retract.csv");
+            draw_adhesive_path_picture(csv, std::filesystem::path(csv).replace_extension(".png"),
+                                       std::filesystem::path(csv).replace_extension(".svg"));
+          } catch (const Error& e) {
+            std::cerr << "contactbench run: warning: " << e.what() << " (the numbers are in the CSV)\n";
+          }
     }
   });
   if (!o.quiet) {

@@ -18,6 +18,7 @@
 #include "contactbench/app/interface.hpp"
 #include "contactbench/app/scene_error.hpp"
 #include "contactbench/app/surface_source.hpp"
+#include "contactbench/bem/adhesive_path.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/types.hpp"
 
@@ -67,6 +68,10 @@ struct Scene {
   // `distributions = { load, bins }`: the BEM's pressure, gap and patch-size distributions at one of the
   // loads (app/distributions_csv.hpp); absent: none measured.
   std::optional<DistributionsSpec> distributions;
+  // `approach_retract = { from, to, steps }`: after its loads, each adhesive BEM also runs the closed
+  // approach-retract path under separation control (bem/adhesive_path.hpp; start = from, turn = to [m]);
+  // absent: none.
+  std::optional<AdhesivePathOptions> approach_retract;
   const MethodSpec& method(std::string_view label) const;  // throws Error if absent
 };
 

@@ -39,6 +39,7 @@ ScenePlan plan_scene(const Scene& scene, const Grid& surface) {
       BemStage stage = *needs.bem;
       stage.stiffness = scene.compares(Quantity::stiffness) && !stage.adhesion;
       stage.distributions = scene.distributions;  // measured at one load only when the scene asks
+      if (stage.adhesion) stage.approach_retract = scene.approach_retract;  // an adhesive stage's path
       stages.bem = index_of(plan.bems, PlannedBem{stage, {}},
                             [](const PlannedBem& a, const PlannedBem& b) { return a.stage == b.stage; });
       plan.bems[static_cast<std::size_t>(stages.bem)].connectivities.insert(needs.bem_connectivity);

@@ -282,6 +282,46 @@ std::optional<DistributionsSpec> parse_distributions(const Section& root, const 
   return DistributionsSpec{.load = *load, .bins = bins.value_or(60)};
 }
 
+// `approach_retract = { from = <m>, to = <m>, steps = <count> }`: the closed separation-controlled path
+// each adhesive BEM runs after its loads (bem/adhesive_path.hpp): down from `from` to `to`, and back, in
+// `steps` equal steps a leg. Needs the interface's adhesion and a BEM that models it. Absent: none.
+std::optional<AdhesivePathOptions> parse_approach_retract(const Section& root, const InterfaceSpec& interface,
+                                                          const std::vector<MethodSpec>& methods) {
+  const char* accepted_table =
+      "a table { from = <separation [m]>, to = <a smaller separation [m]>, steps = <2..100000> }";
+  const toml::table* table = root.subtable("approach_retract", false, accepted_table);
+  if (!table) return std::nullopt;
+  const Section p(*table, "approach_retract", root.problems());
+  p.reject_unknown({"from", "to", "steps"});
+  const Rule<Real> separation{[](Real v) { return std::isfinite(v); },
+                              "a finite separation [m] of the flat from the heights' mean plane"};
+  const auto from = p.number("from", true, separation);
+  const auto to = p.number("to", true, separation);
+  const auto steps = p.integer("steps", true, int_range(2, 100000));
+  if (from && to && !(*to < *from))
+    p.problem(
+        "to",
+        "the path turns at " + exact_number(*to) + " m, not below its start " + exact_number(*from) + " m",
+        "a separation below `from` (the flat comes down, then goes back up)");
+  // The adhesive BEM's: the scene's adhesion and at least one BEM that does not ignore it.
+  const bool adhesive_bem =
+      interface.adhesion && std::any_of(methods.begin(), methods.end(), [](const MethodSpec& m) {
+        return m.method->name() == "bem" &&
+               std::find(m.ignored.begin(), m.ignored.end(), Effect::adhesion) == m.ignored.end();
+      });
+  if (!adhesive_bem)
+    root.problem(
+        "approach_retract",
+        interface.adhesion ? "the path is the adhesive BEM's, and every bem method of this scene ignores "
+                             "the adhesion"
+                           : "the path's jumps come from the attraction, and this scene has no "
+                             "interface.adhesion",
+        "interface.adhesion and a [methods.<label>] table with method = \"bem\" that does not ignore it, "
+        "or no approach_retract key");
+  if (!from || !to || !steps) return std::nullopt;
+  return AdhesivePathOptions{.start = *from, .turn = *to, .steps = static_cast<Index>(*steps)};
+}
+
 std::string origin_name(const fs::path& origin) {
   return origin.empty() ? "<scene>" : origin.string();
 }
@@ -322,8 +362,8 @@ Scene parse_scene(std::string_view toml_text, const std::filesystem::path& origi
 Scene parse_scene_table(const toml::table& document, const std::filesystem::path& origin) {
   Problems problems(origin_name(origin));
   const Section root(document, "", problems, true);
-  root.reject_unknown({"name", "description", "reference", "compare", "distributions", "surface", "material",
-                       "interface", "loads", "methods"});
+  root.reject_unknown({"name", "description", "reference", "compare", "distributions", "approach_retract",
+                       "surface", "material", "interface", "loads", "methods"});
 
   Scene scene;
   const auto name =
@@ -342,6 +382,7 @@ Scene parse_scene_table(const toml::table& document, const std::filesystem::path
   std::vector<std::string> labels;  // every label in the file, also those with problems
   scene.methods = parse_methods(root, surface, scene.interface, folder, labels, problems);
   scene.distributions = parse_distributions(root, loads ? &loads->loads : nullptr, scene.methods);
+  scene.approach_retract = parse_approach_retract(root, scene.interface, scene.methods);
   if (const auto reference = root.string("reference", false, "a method label")) {
     if (!reference->empty() && std::find(labels.begin(), labels.end(), *reference) == labels.end())
       root.problem(

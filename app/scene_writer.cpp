@@ -55,6 +55,12 @@ SceneKeys scene_keys(const Scene& scene, bool with_estar) {
     distributions.put("load", scene.distributions->load);
     distributions.put("bins", static_cast<std::int64_t>(scene.distributions->bins));
   }
+  if (scene.approach_retract) {
+    SceneKeys& path = root.table("approach_retract");
+    path.put("from", scene.approach_retract->start);
+    path.put("to", scene.approach_retract->turn);
+    path.put("steps", static_cast<std::int64_t>(scene.approach_retract->steps));
+  }
   SceneKeys& methods = root.table("methods");
   for (const MethodSpec& m : scene.methods) {
     SceneKeys& keys = methods.table(m.label);

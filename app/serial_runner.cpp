@@ -108,6 +108,9 @@ class SerialRunner final : public StageRunner {
                                         std::chrono::duration<double>(Clock::now() - start).count()));
       done.solutions.push_back(std::move(solution));
     }
+    // The approach-retract path after the loads, from a fresh approach (the solver forgets the loads).
+    if (stage.approach_retract && adhesive)
+      done.approach_retract = approach_retract(*adhesive, *stage.approach_retract);
     // The residual topography: the surface as the path left it (its plastic flow kept), heights from the
     // given surface's mean plane, in the project's text format (core/topography_io.hpp).
     if (!stage.settings.residual_topography.empty() && solver)

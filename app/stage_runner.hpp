@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "contactbench/app/distributions_csv.hpp"
+#include "contactbench/bem/adhesive_path.hpp"
 #include "contactbench/bem/adhesive_solver.hpp"
 #include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
@@ -32,6 +33,7 @@ struct SolvedLoads {
   std::vector<AdhesiveLoad> adhesive;                        // with an attraction, per load
   std::vector<Real> stiffness;                         // with BemStage::stiffness: K = -dP/dd [Pa/m] per load
   std::optional<MeasuredDistributions> distributions;  // with BemStage::distributions
+  std::optional<AdhesivePath> approach_retract;        // with BemStage::approach_retract
   std::size_t bytes_per_rank = 0;  // the largest memory one rank held; 0 when solved by one process
 };
 

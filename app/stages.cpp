@@ -77,6 +77,9 @@ std::string BemStage::name() const {
   }
   if (stiffness) text << ", with the linearised stiffness";
   if (distributions) text << ", with the distributions at load " << distributions->load;
+  if (approach_retract)
+    text << ", then the approach-retract path " << approach_retract->start << " -> " << approach_retract->turn
+         << " m in " << approach_retract->steps << " steps a leg";
   if (settings.extrapolate) text << ", again on twice the points a side for the extrapolated area";
   if (settings.extrapolate && settings.error_estimate == ErrorEstimate::gci3)
     text << " and on a third grid for its error bar";
@@ -93,6 +96,10 @@ bool BemStage::operator==(const BemStage& other) const {
          distributions.has_value() == other.distributions.has_value() &&
          (!distributions || (distributions->load == other.distributions->load &&
                              distributions->bins == other.distributions->bins)) &&
+         approach_retract.has_value() == other.approach_retract.has_value() &&
+         (!approach_retract || (approach_retract->start == other.approach_retract->start &&
+                                approach_retract->turn == other.approach_retract->turn &&
+                                approach_retract->steps == other.approach_retract->steps)) &&
          same_settings(bem_settings(), SettingScope::solve, settings, other.settings);
 }
 
@@ -145,6 +152,7 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
   products.adhesive = std::move(loads.adhesive);
   products.stiffness = std::move(loads.stiffness);
   products.distributions = std::move(loads.distributions);
+  products.approach_retract = std::move(loads.approach_retract);
   products.bytes_per_rank = loads.bytes_per_rank;
   if (stage.settings.extrapolate) {
     // The same surface on twice the points a side (the method's preflight refuses a non-periodic one):
@@ -156,6 +164,7 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
     BemStage fine_stage = stage;
     fine_stage.stiffness = false;
     fine_stage.distributions.reset();  // the first grid's, as the mean gap
+    fine_stage.approach_retract.reset();
     SolvedLoads fine_loads =
         context.runner().solve_loads(fine_stage, fine, estar, mean_pressures, connectivities, "", context);
     products.fine_solutions = std::move(fine_loads.solutions);

@@ -14,6 +14,7 @@
 #include "contactbench/app/distributions_csv.hpp"
 #include "contactbench/app/methods/bem_settings.hpp"
 #include "contactbench/app/run_observer.hpp"
+#include "contactbench/bem/adhesive_path.hpp"
 #include "contactbench/bem/adhesive_solver.hpp"
 #include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/contact_statistics.hpp"
@@ -58,6 +59,8 @@ struct BemStage {
   // The scene's `distributions`: at this load (P/(E* A0)) the histograms of pressure and gap and the cluster
   // sizes (app/distributions_csv.hpp) are measured from the fields before they are dropped. Absent: none.
   std::optional<DistributionsSpec> distributions;
+  // The scene's `approach_retract` path, run after the loads by an adhesive stage; absent: none.
+  std::optional<AdhesivePathOptions> approach_retract;
   std::string name() const;  // e.g. "bem (active_set, periodic, tolerance 1e-08)"
   // Methods that ask for equal solves share one.
   bool operator==(const BemStage& other) const;
@@ -77,6 +80,7 @@ struct BemProducts {
   std::vector<AdhesiveLoad> adhesive;  // per load, with an attraction
   std::vector<Real> stiffness;  // K = -dP/dd [Pa/m] per load, with BemStage::stiffness; empty otherwise
   std::optional<MeasuredDistributions> distributions;  // with BemStage::distributions
+  std::optional<AdhesivePath> approach_retract;        // with BemStage::approach_retract
   // With BemStage::extrapolate: the same loads solved on twice the points a side (fields dropped too).
   std::vector<ContactSolution> fine_solutions;
   std::vector<AdhesiveLoad> fine_adhesive;

@@ -23,6 +23,11 @@ AdhesivePath approach_retract(AdhesiveBemSolver& solver, const AdhesivePathOptio
          << start << ", turn " << turn << ", steps " << steps << ", jump_fraction " << jump_fraction;
     throw Error(text.str());
   }
+  if (solver.surface().grid().periodic && !(turn > 0))
+    throw Error(
+        "adhesive path: on a periodic surface the separation is the mean gap and the path must turn "
+        "above 0 m (a mean gap of zero or less needs an infinite load), got turn " +
+        std::to_string(turn));
   solver.forget();
   AdhesivePath path;
   path.converged = true;

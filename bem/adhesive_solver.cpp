@@ -58,6 +58,13 @@ void AdhesiveBemSolver::forget() {
 const AdhesiveSolution& AdhesiveBemSolver::solve_for_separation(Real separation) {
   if (!std::isfinite(separation))
     throw Error("adhesive BEM: the separation must be finite, got " + std::to_string(separation));
+  // As for the non-adhesive solve (bem/bem_solver.cpp): the lift of the attraction has no mean on a periodic
+  // surface either, so the mean gap is the separation, and none of zero or less has an answer.
+  if (surface_.grid().periodic && !(separation > 0))
+    throw Error(
+        "adhesive BEM: on a periodic surface the separation is the mean gap and must be > 0 m (a mean gap of "
+        "zero or less needs an infinite load), got " +
+        std::to_string(separation));
   return solve_with(Control::separation, separation);
 }
 

@@ -200,6 +200,18 @@ class BemMethod final : public Method {
                       "boundary = \"mirrored\" with residual_topography would write the mirrored extension",
                       "boundary = \"as_is\", or no residual_topography");
     }
+    // The scene's approach-retract path, which an adhesive BEM runs after its loads: on the periodic problem
+    // the separation is the mean gap, and a path that turns at or below 0 m has no answer there.
+    if (check.scene.approach_retract && check.interface.adhesion &&
+        settings_.periodic.value_or(check.surface.grid().periodic) &&
+        !(check.scene.approach_retract->turn > 0))
+      check.problems.add(0, "approach_retract.to",
+                         "the " + std::string(name()) +
+                             " method solves the periodic problem, where the separation is "
+                             "the mean gap, and a mean gap of " +
+                             exact_number(check.scene.approach_retract->turn) +
+                             " m or less needs an infinite load",
+                         "a separation > 0 m, or periodic = false in the method");
     check_refine_key(check, settings_.refine);
     check_magnitudes(check);
     if (settings_.extrapolate) {
@@ -308,7 +320,8 @@ class BemMethod final : public Method {
                    .hardness = products.hardness,
                    .adhesion = products.adhesion,
                    .load_path = products.load_path,
-                   .distributions = std::nullopt};
+                   .distributions = std::nullopt,
+                   .approach_retract = std::nullopt};
     curve.parameters =
         "BEM " + stage.name().substr(4) +
         (settings_.extrapolate ? std::string(", perimeter-corrected area in area_fraction_corrected")
@@ -331,6 +344,10 @@ class BemMethod final : public Method {
                     "spots and separation of the finer grid";
     if (products.adhesion) add_adhesive_columns(products, in.scene.material.estar, curve);
     if (products.distributions) add_distributions(products, in, curve);
+    if (products.approach_retract) {
+      curve.approach_retract = products.approach_retract;
+      curve.approach_retract_points = products.points;
+    }
     return curve;
   }
 

@@ -120,6 +120,11 @@ struct MethodCurve {
   // At the scene's `distributions` load, the BEM's pressure, gap and patch-size distributions: a run writes
   // them as <label>_pressure_distribution.csv, _gap_distribution.csv and _patch_sizes.csv.
   std::optional<LoadDistributions> distributions;
+  // After the loads, the scene's `approach_retract` path (the adhesive BEM's, bem/adhesive_path.hpp) and the
+  // nodes of its grid (the area fractions' A0): a run writes it as <label>_approach_retract.csv with its
+  // plot.
+  std::optional<AdhesivePath> approach_retract;
+  Index approach_retract_points = 0;
 
   // From a library's curve: checks that it answers at `loads` (Error otherwise) and drops its copy of them.
   static MethodCurve from(const LoadAreaCurve& curve, const std::vector<Real>& loads);
