@@ -119,6 +119,15 @@ TEST(DistributedActiveSet, EqualsTheSerialMethodWithoutACoarseLevel) {
                            "load " + std::to_string(fraction) + " E* slope");
 }
 
+// 30 rows on 3 ranks: slabs of 10 rows, thinner than the window's radius of 12, so a halo comes from the
+// ranks beyond the neighbours (and, periodic, wraps onto the slab itself).
+TEST(DistributedActiveSet, EqualsTheSerialMethodOnSlabsThinnerThanTheWindow) {
+  const Case thin{.grid = {.nx = 64, .ny = 30, .lx = 1e-4, .ly = 0.47e-4, .periodic = true}};
+  const Case thin_non_periodic{.grid = thin.grid, .hurst = 0.8, .seed = 8, .periodic = false};
+  for (const Case& c : {thin, thin_non_periodic})
+    expect_same_solution(c, load(c, 0.05), DistributedActiveSet::kGatherBound, "thin slabs");
+}
+
 TEST(DistributedActiveSet, EqualsTheSerialMethodUnderSeparationControl) {
   const Case periodic{.grid = {.nx = 60, .ny = 60, .lx = 1e-4, .ly = 1e-4, .periodic = true}};
   expect_same_solution(periodic, {.load_control = false, .separation = 1.5e-6},
