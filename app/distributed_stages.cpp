@@ -249,15 +249,10 @@ class DistributedRunner final : public StageRunner {
          undistributed_settings(bem_settings(), stage.settings, default_settings(bem_settings())))
       missing.push_back(setting);
     if (missing.empty()) return "";
-    const bool names_default_solver = stage.settings.solver.solver == kDefaultSolver;
     std::string text = "the BEM stage has no distributed version with ";
     for (std::size_t k = 0; k < missing.size(); ++k)
       text += (k == 0 ? "" : k + 1 == missing.size() ? " and " : ", ") + missing[k];
-    if (names_default_solver) text += " (the default solver, when a method names none)";
     return text + ": run it as one process, or without " + (missing.size() > 1 ? "these" : "it") +
-           (names_default_solver ? " (solver = \"preconditioned_cg\" or \"polonsky_keer\"; --solver on the "
-                                   "command line)"
-                                 : "") +
            " (docs/mpi.md)";
   }
 

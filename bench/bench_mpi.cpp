@@ -6,7 +6,7 @@
 // median of the repetitions is reported.
 //
 //   mpiexec -n RANKS bench_mpi --n 2048 [--iterations 10] [--repetitions 3] [--threads 1]
-//                              [--solver polonsky_keer|preconditioned_cg] [--no-serial]
+//                              [--solver polonsky_keer|preconditioned_cg|active_set] [--no-serial]
 // prints one Markdown table row (rank 0): ranks, threads, n, solver, s/iteration, serial s/iteration, ratio,
 // transposes s/iteration, their share, MiB per rank (largest), serial MiB.
 //

@@ -18,7 +18,7 @@ void refuse(bool unsupported, const std::string& what) {
   if (unsupported)
     throw Error("distributed Polonsky-Keer: " + what +
                 " is not distributed yet (docs/mpi.md); it supports load control, elastic, double precision, "
-                "load_path = scaled, no coarse_start");
+                "load_path = scaled, no coarse_start (solvers polonsky_keer, preconditioned_cg, active_set)");
 }
 
 double max_over_ranks(double value, MPI_Comm comm) {
@@ -65,10 +65,15 @@ DistributedBemSolver::DistributedBemSolver(const Grid& grid, const HeightMap& lo
   for (std::size_t i = 0; i < n; ++i)
     h_[i] = local_heights.data()[i] - mean;
   g_.assign(n, 0.0);
-  t_.assign(n, 0.0);
-  u_.assign(n, 0.0);
   q_[0].assign(n, 0.0);
-  q_[1].assign(n, 0.0);
+  if (options_.solver == SolverKind::active_set) {
+    // Its own fields; here only the pressure (q_[0]) and G p - h (g_) between loads.
+    active_set_ = std::make_unique<DistributedActiveSet>(grid, h_, modulus, comm, threads);
+  } else {
+    t_.assign(n, 0.0);
+    u_.assign(n, 0.0);
+    q_[1].assign(n, 0.0);
+  }
   if (options_.solver == SolverKind::preconditioned_cg) {
     preconditioner_ = make_distributed_preconditioner(grid, modulus, comm, threads);
     z_.assign(n, 0.0);
@@ -85,7 +90,8 @@ DistributedBemSolver::~DistributedBemSolver() = default;
 std::size_t DistributedBemSolver::bytes() const {
   std::size_t values = h_.capacity() + g_.capacity() + t_.capacity() + u_.capacity() + z_.capacity() +
                        q_[0].capacity() + q_[1].capacity();
-  return sizeof(double) * values + operator_.bytes() + (preconditioner_ ? preconditioner_->bytes() : 0);
+  return sizeof(double) * values + operator_.bytes() + (preconditioner_ ? preconditioner_->bytes() : 0) +
+         (active_set_ ? active_set_->bytes() : 0);
 }
 
 void DistributedBemSolver::apply(const std::vector<double>& in, std::vector<double>& out) {
@@ -252,6 +258,32 @@ void DistributedBemSolver::iterate(double total) {
   separation_ = -moments.g_mean;  // the flat, from the mean gap on the contact set
 }
 
+// The active-set method from the serial solver's start (bem/solvers/active_set_solver.cpp): warm, the
+// previous pressure scaled to the load (PressureState::begin_load); cold, its nested coarse start.
+void DistributedBemSolver::solve_active_set(double mean_pressure, double total) {
+  std::vector<double>& q = q_[cur_];
+  std::vector<double> pressure;
+  if (warm_) {
+    double sum = 0;
+    for (const double v : q)
+      sum += v;
+    const double s = total / sum_over_ranks(sum, comm_);
+    pressure.resize(q.size());
+    for (std::size_t k = 0; k < q.size(); ++k)
+      pressure[k] = s * q[k];
+  }
+  const ActiveSetOutcome outcome =
+      active_set_->solve({.load_control = true, .mean_pressure = mean_pressure}, options_.tolerance,
+                         options_.max_iterations, warm_, pressure, options_.between_iterations);
+  q = std::move(pressure);
+  s_[cur_] = 1;
+  active_set_->displacement_minus_heights(g_);
+  separation_ = outcome.separation;  // the gap is g + d
+  iterations_ = outcome.iterations;
+  change_ = outcome.change;
+  converged_ = outcome.converged;
+}
+
 void DistributedBemSolver::write() {
   const Slab& slab = operator_.slab();
   solution_.pressure.resize(slab.count, grid_.nx);
@@ -301,7 +333,9 @@ const DistributedContactSolution& DistributedBemSolver::solve(Real mean_pressure
     return solution_;
   }
   const double total = mean_pressure * static_cast<double>(grid_.points());
-  if (warm_) {  // the previous pressure scaled to the new load
+  if (active_set_) {
+    // (its start is its own: solve_active_set)
+  } else if (warm_) {  // the previous pressure scaled to the new load
     double sum = 0;
     for (const double v : q_[cur_])
       sum += v;
@@ -311,7 +345,10 @@ const DistributedContactSolution& DistributedBemSolver::solve(Real mean_pressure
     s_[cur_] = mean_pressure;
   }
   try {
-    iterate(total);
+    if (active_set_)
+      solve_active_set(mean_pressure, total);
+    else
+      iterate(total);
   } catch (...) {
     warm_ = false;
     throw;
@@ -319,8 +356,9 @@ const DistributedContactSolution& DistributedBemSolver::solve(Real mean_pressure
   warm_ = true;
   write();
   if (!solution_.converged && options_.warning)
-    options_.warning("distributed Polonsky-Keer did not converge at P/A0 = " + std::to_string(mean_pressure) +
-                     " in " + std::to_string(iterations_) + " iterations (gap on the contact set " +
+    options_.warning(std::string(active_set_ ? "distributed active_set" : "distributed Polonsky-Keer") +
+                     " did not converge at P/A0 = " + std::to_string(mean_pressure) + " in " +
+                     std::to_string(iterations_) + " iterations (gap on the contact set " +
                      std::to_string(solution_.residual) + " of the height range); the result is marked " +
                      "converged = false");
   return solution_;

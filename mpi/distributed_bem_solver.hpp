@@ -6,9 +6,13 @@
 // damping and stopping criterion), so it takes the same iterations and finds the same contact set; the
 // pressures agree to round-off.
 //
-// Distributed so far: load control, elastic, double precision, plain Polonsky-Keer. Options that need more
-// (a hardness, single precision, the preconditioned solver, separation control, coarse or extrapolated
-// starts) are refused with an error naming them, never run approximately.
+// Also the preconditioned solver (its Fourier filter distributed), and the default solver, active_set
+// (mpi/distributed_active_set.hpp, the serial method step for step with its nested coarse start; its
+// warm start from the previous load's pressure scaled to the new load, as the serial solver's).
+//
+// Distributed so far: load control, elastic, double precision. Options that need more (a hardness, single
+// precision, separation control, coarse or extrapolated starts) are refused with an error naming them, never
+// run approximately.
 #pragma once
 
 #include <memory>
@@ -17,6 +21,7 @@
 
 #include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/core/grid.hpp"
+#include "contactbench/mpi/distributed_active_set.hpp"
 #include "contactbench/mpi/distributed_half_space.hpp"
 #include "contactbench/mpi/slab.hpp"
 
@@ -61,6 +66,7 @@ class DistributedBemSolver {
   cg::Moments gap_pass(const std::vector<double>& q_new, const std::vector<double>& q_old, double s_new,
                        double s_old);
   void iterate(double total);
+  void solve_active_set(double mean_pressure, double total);
   void write();
 
   Grid grid_;
@@ -69,6 +75,7 @@ class DistributedBemSolver {
   DistributedHalfSpace operator_;
   Index local_points_;
   std::unique_ptr<DistributedConvolution> preconditioner_;  // null: plain Polonsky-Keer
+  std::unique_ptr<DistributedActiveSet> active_set_;        // the active-set method instead of PK's
   std::vector<double> h_, g_, t_, u_, z_, q_[2];
   double s_[2] = {1, 1};
   int cur_ = 0;

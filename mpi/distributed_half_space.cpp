@@ -1,5 +1,6 @@
 #include "contactbench/mpi/distributed_half_space.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -87,6 +88,33 @@ std::unique_ptr<DistributedConvolution> make_distributed_preconditioner(const Gr
   // (E*/2)|q| with the pair's 1/(lx ly) folded in (bem/fourier_preconditioner.cpp).
   convolution->set_multiplier(radial_multiplier(*convolution, lattice_grid,
                                                 modulus / (2 * static_cast<Real>(lattice_grid.points())), 1));
+  return convolution;
+}
+
+std::unique_ptr<DistributedConvolution> make_distributed_unit_preconditioner(const Grid& grid, MPI_Comm comm,
+                                                                             int threads) {
+  validate(grid, "distributed filter grid");
+  const bool padded = !grid.periodic;
+  Grid lattice_grid = grid;
+  if (padded) {
+    lattice_grid.nx *= 2;
+    lattice_grid.ny *= 2;
+    lattice_grid.lx *= 2;
+    lattice_grid.ly *= 2;
+  }
+  auto convolution = std::make_unique<DistributedConvolution>(grid, padded, comm, threads);
+  // |q| / max |q| with the pair's normalisation: the serial filter's arithmetic
+  // (bem/fourier_preconditioner.cpp, (1/2)|q| / (points) first, then divided by its peak times the lattice's
+  // points).
+  const double lattice_points = static_cast<double>(lattice_grid.points());
+  std::vector<double> multiplier =
+      radial_multiplier(*convolution, lattice_grid, 1.0 / (2 * lattice_points), 1);
+  double peak = multiplier.empty() ? 0.0 : *std::max_element(multiplier.begin(), multiplier.end());
+  MPI_Allreduce(MPI_IN_PLACE, &peak, 1, MPI_DOUBLE, MPI_MAX, comm);
+  if (peak > 0)
+    for (double& m : multiplier)
+      m /= peak * lattice_points;
+  convolution->set_multiplier(std::move(multiplier));
   return convolution;
 }
 

@@ -42,4 +42,9 @@ class DistributedHalfSpace {
 std::unique_ptr<DistributedConvolution> make_distributed_preconditioner(const Grid& grid, Real modulus,
                                                                         MPI_Comm comm, int threads = 1);
 
+// The same filter scaled to a largest value of 1, as bem's make_unit_fourier_preconditioner (the same
+// multiplier values): the active-set method's filter (mpi/distributed_active_set.hpp). Collective.
+std::unique_ptr<DistributedConvolution> make_distributed_unit_preconditioner(const Grid& grid, MPI_Comm comm,
+                                                                             int threads = 1);
+
 }  // namespace contactbench::mpi

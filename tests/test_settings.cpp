@@ -88,10 +88,12 @@ TEST(Settings, TheDistributedPackingCarriesEverySolveSettingItTakesAndRefusesThe
   EXPECT_EQ(unpacked.solver.max_iterations, 77);
   EXPECT_EQ(unpacked.solver.solver, SolverKind::preconditioned_cg);
   EXPECT_TRUE(undistributed_settings(bem_settings(), settings, default_settings(bem_settings())).empty());
+  settings.solver.solver = SolverKind::active_set;  // the default solver: distributed too
+  EXPECT_TRUE(undistributed_settings(bem_settings(), settings, default_settings(bem_settings())).empty());
   settings.solver.single_precision = true;
-  settings.solver.solver = SolverKind::active_set;
+  settings.solver.load_path = LoadPathStart::extrapolated;
   EXPECT_EQ(undistributed_settings(bem_settings(), settings, default_settings(bem_settings())),
-            (std::vector<std::string>{"precision = \"single\"", "solver = \"active_set\""}));
+            (std::vector<std::string>{"precision = \"single\"", "load_path = \"extrapolated\""}));
 }
 
 // The command's flags become the scene's keys: the given ones only, typed as their rows say.

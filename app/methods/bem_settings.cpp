@@ -144,10 +144,10 @@ SettingTable<BemSettings> make_table() {
           .default_value = std::string(solver_name(kDefaultSolver)),
           .doc = "the BEM iteration (docs/solvers.md): Polonsky & Keer's, the same Fourier-preconditioned, "
                  "or the "
-                 "active-set method; the distributed solver has the first two",
+                 "active-set method; the distributed solver has all three",
           .flag = {"--solver"},
           .python = true,
-          .distributed_choices = {"polonsky_keer", "preconditioned_cg"},
+          .distributed_choices = {"polonsky_keer", "preconditioned_cg", "active_set"},
           .choices = solver_names()},
       [](BemSettings & s) -> auto& { return s.solver.solver; }));
   table.push_back(bind_choice(

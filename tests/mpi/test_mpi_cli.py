@@ -6,7 +6,8 @@ Usage: test_mpi_cli.py CONTACTBENCH MPIEXEC RANKS
 and convergence flags equal, its separation, mean gap, largest pressure and fields to 1e-12 relative (the
 distributed solver takes the serial iteration step for step; only the order of its global sums differs, so
 they agree to round-off: 1e-12 leaves a factor of 1e3 over what 1-3 ranks showed); the sweep's rows equal.
-A run's summary records the ranks and the memory per rank. What has no distributed version is refused.
+A run's summary records the ranks and the memory per rank. The default solver (active_set) is distributed: a
+command or scene that names no solver equals one process. What has no distributed version is refused.
 """
 import csv
 import json
@@ -64,16 +65,17 @@ with tempfile.TemporaryDirectory() as work:
     run(["generate", "--sigma", "1e-6", "--hurst", "0.7", "--qr", "1e5", "--size", "1e-4", "--size-y", "0.78125e-4",
          "--grid", "64", "--grid-y", "50", "--seed", "4", "--out", surface], distributed=False)
     loads = "1e-3,1e-2,5e-2"
-    for solver in ("polonsky_keer", "preconditioned_cg"):
+    # None: the default solver (active_set), named by no flag.
+    for solver in ("polonsky_keer", "preconditioned_cg", None):
         for boundary in ("--periodic", "--non-periodic"):
             outputs = {}
             for distributed in (False, True):
-                name = f"{solver}{boundary}{'_mpi' if distributed else ''}"
+                name = f"{solver or 'default'}{boundary}{'_mpi' if distributed else ''}"
                 out, fields = os.path.join(work, name + ".csv"), os.path.join(work, name)
-                run(["bem", surface, "--loads", loads, "--solver", solver, boundary, "--threads", "1", "--out", out,
-                     "--fields", fields], distributed)
+                run(["bem", surface, "--loads", loads] + (["--solver", solver] if solver else []) +
+                    [boundary, "--threads", "1", "--out", out, "--fields", fields], distributed)
                 outputs[distributed] = (out, fields)
-            what = f"bem {solver} {boundary} on {ranks} ranks"
+            what = f"bem {solver or 'default solver'} {boundary} on {ranks} ranks"
             same_bem_rows(rows(outputs[True][0]), rows(outputs[False][0]), what)
             for k in (1, 2, 3):
                 for kind in ("pressure", "gap"):
@@ -127,17 +129,31 @@ with tempfile.TemporaryDirectory() as work:
     except (OSError, KeyError, ValueError) as e:
         failures.append(f"run as {ranks} ranks: no readable summary.json ({e})")
 
-    # Refused, before any work, with the reason: what the distributed solver lacks, and commands with nothing
-    # to distribute.
-    # A scene or command that names no solver gets the same default as one process, active_set, which has no
-    # distributed version yet: refused with the reason, never silently replaced by another solver.
+    # A scene that names no solver gets the same default as one process, active_set, distributed: its curves
+    # equal one process's.
     default_scene = os.path.join(work, "default_solver.toml")
     with open(default_scene, "w") as f:
         f.write(f'name = "mpi_default"\n[surface]\nfile = "{surface}"\n[material]\nE = 100e9\nnu = 0.3\n'
-                '[loads]\nvalues = [1e-3]\n[methods.bem]\n')
-    for arguments, reason in ((["bem", surface, "--loads", "1e-3", "--solver", "active_set"], "no distributed version"),
-                              (["bem", surface, "--loads", "1e-3"], 'solver = "active_set" (the default'),
-                              (["run", default_scene, "--out", os.path.join(work, "refused")], 'solver = "active_set" (the default'),
+                '[loads]\nvalues = [1e-3, 1e-2]\n[methods.bem]\n')
+    curves = []
+    for distributed in (False, True):
+        out = os.path.join(work, "default_run" + ("_mpi" if distributed else ""))
+        run(["run", default_scene, "--out", out, "--threads", "1"], distributed)
+        try:
+            curves.append(rows(os.path.join(out, "curves.csv")))
+        except OSError as e:
+            failures.append(f"run {default_scene}: no curves.csv ({e})")
+    if len(curves) == 2:
+        same_bem_rows(curves[1], curves[0], f"run with the default solver on {ranks} ranks")
+
+    # Refused, before any work, with the reason: what the distributed solver lacks, and commands with nothing
+    # to distribute.
+    hard_scene = os.path.join(work, "hardness.toml")
+    with open(hard_scene, "w") as f:
+        f.write(f'name = "mpi_hard"\n[surface]\nfile = "{surface}"\n[material]\nE = 100e9\nnu = 0.3\n'
+                '[interface]\nhardness = 5e9\n[loads]\nvalues = [1e-3]\n[methods.bem]\n')
+    for arguments, reason in ((["run", hard_scene, "--out", os.path.join(work, "refused")], "a hardness (interface.hardness)"),
+                              (["bem", surface, "--loads", "1e-3", "--float"], 'precision = "single"'),
                               (["bem", surface, "--loads", "1e-3", "--float", "--solver", "preconditioned_cg"], 'precision = "single"'),
                               (["stats", surface], "has no distributed stages")):
         done = run(arguments, distributed=True, expect_status=1)

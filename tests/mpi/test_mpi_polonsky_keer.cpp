@@ -56,6 +56,10 @@ void expect_same_solutions(const Surface& surface, const std::vector<double>& sl
     EXPECT_TRUE(s.converged && d.converged) << what;
     EXPECT_EQ(d.iterations, s.iterations) << what;
     EXPECT_EQ(d.contact_points, s.contact_points) << what;
+    if (fraction == 0) {  // no load: nothing touches (and the next load starts afresh)
+      EXPECT_TRUE((pressure == 0).all() && (s.pressure.array() == 0).all()) << what;
+      continue;
+    }
     EXPECT_GT(s.contact_points, 0) << what;
     EXPECT_LT(testing::relative_difference(pressure, s.pressure), kPressureTolerance) << what;
     // The gap and the flat's height: differences of u - h, so relative to the surface's height range.
@@ -103,6 +107,24 @@ TEST(DistributedPreconditionedCg, IsNotThePlainIteration) {
   DistributedBemSolver filtered(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
                                 MPI_COMM_WORLD, options_for(SolverKind::preconditioned_cg));
   EXPECT_LT(filtered.solve(load).iterations, plain_solver.solve(load).iterations);
+}
+
+// The default solver through the same interface: its first load from its own start, the next ones
+// warm-started from the previous pressure scaled to the load, as the serial solver (the method itself against
+// the serial one: test_mpi_active_set.cpp).
+TEST(DistributedActiveSetSolver, TakesTheSerialStepsOnAPeriodicSurface) {
+  expect_same_solutions(periodic_surface(), {0.01, 0.03, 0.08}, options_for(SolverKind::active_set));
+}
+
+TEST(DistributedActiveSetSolver, TakesTheSerialStepsOnANonPeriodicSurface) {
+  expect_same_solutions(non_periodic_surface(), {0.02, 0.045}, options_for(SolverKind::active_set));
+}
+
+TEST(DistributedActiveSetSolver, TakesTheSerialStepsFromTheNestedCoarseStart) {
+  // 128^2: the first load from a coarse level of 64^2, then warm; a zero load between forgets the start.
+  const Surface surface = generate_surface({.nx = 128, .ny = 128, .lx = 1e-4, .ly = 1e-4, .periodic = true},
+                                           {.sigma = 1e-6, .hurst = 0.7, .qr = 1e5, .qs = std::nullopt}, 5);
+  expect_same_solutions(surface, {0.01, 0.03, 0.0, 0.02}, options_for(SolverKind::active_set));
 }
 
 TEST(DistributedBemSolver, ZeroLoadTouchesNothing) {
