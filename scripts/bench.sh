@@ -39,7 +39,7 @@ for name in "${@:-labelling sweep bem}"; do
     filter=${BENCH_FILTER:+--benchmark_filter=$BENCH_FILTER}
     build/release/bench/bench_$bench --benchmark_repetitions="${BENCH_REPETITIONS:-3}" \
       --benchmark_report_aggregates_only=true $filter --benchmark_out="$out.tmp" --benchmark_out_format=json \
-      --benchmark_context="commit=$commit,machine=$machine,command=scripts/bench.sh $bench${BENCH_REPETITIONS:+ with BENCH_REPETITIONS=$BENCH_REPETITIONS}${BENCH_FILTER:+ with BENCH_FILTER set to $BENCH_FILTER}"
+      --benchmark_context="commit=$commit,machine=$machine,command=scripts/bench.sh $bench${BENCH_REPETITIONS:+ with BENCH_REPETITIONS set to $BENCH_REPETITIONS}${BENCH_FILTER:+ with BENCH_FILTER set to $BENCH_FILTER}"
     if [[ -n ${BENCH_APPEND:-} && -f $out ]]; then
       # Adds this run's benchmarks to the recorded ones (replacing any of the same name); the context keeps
       # every run's command, commit and date, one entry each, so that render_bench.py can list the runs.
