@@ -98,13 +98,16 @@ const ContactSolution& BemSolver::solve(Real mean_pressure) {
     solution_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return solution_;
   }
+  // The start after a previous load: the one forced, or the solver's own (bem/solvers/load_stepping.hpp).
+  const LoadPathStart load_start = load_path_start(options_, surface_.grid());
+  if (load_start == LoadPathStart::cold) engine_->forget();
   Index coarse_iterations = 0;
   if (options_.coarse_start && !engine_->warm())
     coarse_iterations = coarse_start(*engine_, surface_, engine_modulus_, options_, threads_, mean_pressure);
   const Real hardness = options_.hardness.value_or(std::numeric_limits<Real>::infinity());
   const SolveOutcome outcome =
       engine_->solve_load(mean_pressure, hardness, options_.tolerance, options_.max_iterations,
-                          options_.load_path == LoadPathStart::extrapolated);
+                          load_start == LoadPathStart::extrapolated);
   Index iterations = outcome.iterations;
   Real change = outcome.change;
   bool converged = outcome.converged;

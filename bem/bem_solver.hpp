@@ -25,8 +25,6 @@
 
 namespace contactbench {
 
-enum class LoadPathStart { scaled, extrapolated };
-
 struct BemSolverOptions {
   Real tolerance = 1e-10;  // of the stopping criterion (docs/solvers.md "Stopping criteria ...")
   Index max_iterations = 20000;
@@ -54,10 +52,10 @@ struct BemSolverOptions {
   // Fourier-preconditioned direction, or the active-set method. Same problem, same options, converged means
   // the residual check passed for each.
   SolverKind solver = kDefaultSolver;
-  // Where solve() starts a load after a previous one (load stepping, loads in increasing order):
-  // scaled, the last solution scaled to the new load; extrapolated, the linear extrapolation of the last two
-  // solutions in the load (clipped at 0, then scaled), the last one scaled when there is only one.
-  LoadPathStart load_path = LoadPathStart::scaled;
+  // Where solve() starts a load after a previous one (load stepping, loads in increasing order): as the
+  // solver declares (SolverEntry::load_path, chosen by measurement: docs/solvers.md "Starts"), or forced
+  // to one of the starts (LoadPathStart, bem/solver_registry.hpp).
+  LoadPathStart load_path = LoadPathStart::solver;
   // A cold load-controlled solve starts from the solution of the surface averaged over 2 x 2 blocks, solved
   // to 1e-4 (itself from a coarser one, down to 64 points a side), its pressure injected (docs/solvers.md).
   bool coarse_start = false;

@@ -32,6 +32,18 @@ inline constexpr SolverKind kDefaultSolver = SolverKind::active_set;
 
 class ContactSolver;  // bem/solvers/contact_solver.hpp
 
+// Where a load-controlled solve starts after a previous load (load stepping; docs/solvers.md "Starts"):
+//   scaled, the last solution scaled to the new load;
+//   extrapolated, the linear extrapolation of the last two solutions in the load (clipped at 0, then
+//     scaled), the last one scaled when there is only one;
+//   cold, as if there were no previous load (each solver's own cold start: active_set's nested coarse
+//     start, the uniform pressure for the others);
+//   solver, the start the solver declares for the grid (SolverEntry::load_path): the one measured
+//     cheapest on the benchmark's load curves (bench/bench_load_path.cpp). Only BemSolverOptions::load_path
+//     takes it.
+// The order is that of the scene key's choices (app/methods/bem_settings.cpp).
+enum class LoadPathStart { scaled, extrapolated, cold, solver };
+
 // One solver as it registers itself.
 struct SolverEntry {
   SolverKind kind = SolverKind::polonsky_keer;
@@ -43,6 +55,10 @@ struct SolverEntry {
   bool separation_control = false;
   bool hardness = false;
   bool single_precision = false;
+  // How it starts a load after a previous one on a grid when the caller leaves it to the solver
+  // (BemSolverOptions::load_path = solver): scaled, extrapolated or cold, chosen by measurement
+  // (docs/solvers.md "Starts", bench/bench_load_path.cpp). Empty: scaled.
+  std::function<LoadPathStart(const Grid& grid)> load_path;
   // Makes the solver for a centred surface, E* [Pa], threads, in float when single_precision.
   std::function<std::unique_ptr<ContactSolver>(const Surface& centred, Real modulus, int threads,
                                                bool single_precision)>

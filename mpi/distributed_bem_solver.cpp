@@ -49,7 +49,9 @@ DistributedBemSolver::DistributedBemSolver(const Grid& grid, const HeightMap& lo
   refuse(options_.hardness.has_value(), "a hardness");
   refuse(options_.single_precision, "single precision");
   refuse(options_.coarse_start, "coarse_start");
-  refuse(options_.load_path != LoadPathStart::scaled, "load_path = extrapolated");
+  // It starts each load from the last scaled, the start every solver may take when left to choose.
+  refuse(options_.load_path != LoadPathStart::scaled && options_.load_path != LoadPathStart::solver,
+         "load_path = extrapolated or cold");
   const Slab& slab = operator_.slab();
   throw_on_any_rank(local_heights.rows() != slab.count || local_heights.cols() != grid.nx,
                     "distributed Polonsky-Keer: the local heights are " +

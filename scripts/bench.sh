@@ -2,14 +2,16 @@
 # Runs the Google Benchmark harnesses (2 threads, medians of repetitions) and records them under
 # results/bench/: <name>.json (Google Benchmark's output, with commit, date, threads and machine in its
 # context) and <name>.md (tables with ratios to the references measured in the same run).
-# Usage: scripts/bench.sh [labelling|sweep|bem|bem_solvers|bem_adhesion|fill|formats_read|command ...]
+# Usage: scripts/bench.sh [labelling|sweep|bem|bem_solvers|bem_adhesion|fill|formats_read|command|load_path ...]
 #   (default: labelling sweep bem).
-# BENCH_FILTER=REGEX runs only the matching benchmarks (recorded in the files' command); BENCH_APPEND=1 adds
+# BENCH_FILTER=REGEX runs only the matching benchmarks (recorded in the files' command); BENCH_REPETITIONS=N
+# repeats each N times instead of 3 (recorded too: for iteration counts, which do not vary); BENCH_APPEND=1 adds
 # them to the recorded JSON instead of replacing it (a long run made in parts). bem_solvers compares the BEM
 # solvers at equal accuracy (bench/bench_bem_solvers.cpp); its full matrix takes hours on two cores, so it is
 # run in parts with BENCH_FILTER (results/bench/bem_solvers.md records which). Takes about 15 minutes for
 # labelling and sweep, and as long again for bem; command (the whole bem command beside its solve) a few
-# minutes.
+# minutes; load_path (each solver's load curves warm against cold, bench/bench_load_path.cpp) about an hour
+# on two cores (BENCH_FILTER for parts).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -22,7 +24,7 @@ if ! dpkg-query -W -f='${Status}' libopencv-dev 2>/dev/null | grep -q "install o
 fi
 cmake --preset release >/dev/null
 cmake --build --preset release -j "$(nproc)" --target bench_labelling bench_sweep bench_bem bench_bem_solvers \
-  bench_bem_adhesion bench_fill bench_command
+  bench_bem_adhesion bench_fill bench_command bench_load_path
 # formats_read: reading a 4096^2 file of each binary format (bench/bench_formats_read.cpp), about 5 minutes.
 cmake --build --preset release -j "$(nproc)" --target bench_formats_read
 
@@ -35,9 +37,9 @@ for name in "${@:-labelling sweep bem}"; do
   for bench in $name; do
     out=results/bench/$bench.json
     filter=${BENCH_FILTER:+--benchmark_filter=$BENCH_FILTER}
-    build/release/bench/bench_$bench --benchmark_repetitions=3 --benchmark_report_aggregates_only=true $filter \
-      --benchmark_out="$out.tmp" --benchmark_out_format=json \
-      --benchmark_context="commit=$commit,machine=$machine,command=scripts/bench.sh $bench${BENCH_FILTER:+ with BENCH_FILTER set to $BENCH_FILTER}"
+    build/release/bench/bench_$bench --benchmark_repetitions="${BENCH_REPETITIONS:-3}" \
+      --benchmark_report_aggregates_only=true $filter --benchmark_out="$out.tmp" --benchmark_out_format=json \
+      --benchmark_context="commit=$commit,machine=$machine,command=scripts/bench.sh $bench${BENCH_REPETITIONS:+ with BENCH_REPETITIONS set to $BENCH_REPETITIONS}${BENCH_FILTER:+ with BENCH_FILTER set to $BENCH_FILTER}"
     if [[ -n ${BENCH_APPEND:-} && -f $out ]]; then
       # Adds this run's benchmarks to the recorded ones (replacing any of the same name); the context keeps
       # every run's command, commit and date, one entry each, so that render_bench.py can list the runs.

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Renders a Google Benchmark JSON of contactbench (bench_labelling, bench_sweep, bench_bem or
-bench_bem_solvers, bench_bem_adhesion, bench_fill, bench_formats_read, bench_command) as Markdown
-tables.
+bench_bem_solvers, bench_bem_adhesion, bench_fill, bench_formats_read, bench_command, bench_load_path) as
+Markdown tables.
 
 Medians of the repetitions, in milliseconds, and ratios to the references measured in the same run.
 Usage: render_bench.py results/bench/labelling.json > results/bench/labelling.md
@@ -468,11 +468,59 @@ def command(data):
     return lines
 
 
+def counter_medians(data):
+    """name -> {counter: value} from the median aggregate rows (or the single run of a benchmark repeated
+    once)."""
+    out = {}
+    for b in data["benchmarks"]:
+        if b.get("run_type") == "aggregate" and b.get("aggregate_name") == "median":
+            out[b["run_name"]] = b
+        elif b.get("run_type") == "iteration" and b.get("repetitions", 1) <= 1:
+            out.setdefault(b["run_name"], b)
+    return out
+
+
+def load_path(data):
+    """bench_load_path: each solver's 10-load curve with each start against 10 cold solves, in one run."""
+    starts = ("scaled", "extrapolated", "cold")  # LoadPathStart's order
+    lines = header(data, "Load curves: how each solver starts the next load", "scripts/bench.sh load_path")
+    lines.append("10 loads, contact 1 % to 30 % (nominal, log-spaced), increasing, tolerance 1e-8, each start's "
+                 "curve against the same 10 loads solved cold in the same run (bench/bench_load_path.cpp). "
+                 "Iterations: the curve's total as each solver counts them (active_set's coarse levels at a "
+                 "quarter); scaled, extrapolated: their ratio to the cold curve's. declared: the start the solver declares "
+                 "(SolverEntry::load_path), what scenes get. Time: the solves' own seconds, medians of the "
+                 "repetitions (shared machine, OMP_WAIT_POLICY=PASSIVE). area diff.: the largest over the 10 "
+                 "loads of |N - N_cold| / N_cold (contact nodes) of any start.")
+    lines.append("")
+    lines.append("| solver | boundary | n | surface | cold iterations | scaled | extrapolated | declared | "
+                 "declared / cold | cold [s] | declared [s] | time ratio | area diff. |")
+    lines.append("|---|---|---:|---|---:|---:|---:|---|---:|---:|---:|---:|---:|")
+    rows = []
+    for name, b in counter_medians(data).items():
+        parts = name.split("/")
+        if parts[0] != "load_path":
+            continue
+        solver, boundary, n, surface = parts[1], parts[2], int(parts[3].split(":")[1]), parts[4]
+        declared = starts[int(round(b["declared"]))]
+        area = max(b.get(f"{s}_area_difference", 0) for s in starts)
+        rows.append((solver, boundary, n, surface,
+                     f"| {solver} | {boundary} | {n} | {surface} | {b['cold_iterations']:.0f} "
+                     f"| {b['scaled_ratio']:.2f} | {b['extrapolated_ratio']:.2f} | {declared} "
+                     f"| {b['solver_ratio']:.2f} | {fmt(b['cold_seconds'])} | {fmt(b['solver_seconds'])} "
+                     f"| {b['solver_time_ratio']:.2f} | {area:.1e} |"))
+    order = {"polonsky_keer": 0, "preconditioned_cg": 1, "active_set": 2}
+    for row in sorted(rows, key=lambda r: (order.get(r[0], 9), r[0], r[1] != "periodic", r[2], r[3])):
+        lines.append(row[4])
+    return lines
+
+
 def main():
     with open(sys.argv[1]) as f:
         data = json.load(f)
     names = [b["name"] for b in data["benchmarks"]]
-    if names and names[0].startswith("formats_read/"):
+    if names and names[0].startswith("load_path/"):
+        lines = load_path(data)
+    elif names and names[0].startswith("formats_read/"):
         lines = formats_read(data)
     elif names and names[0].startswith("command/"):
         lines = command(data)

@@ -153,14 +153,15 @@ SettingTable<BemSettings> make_table() {
   table.push_back(bind_choice(
       Row{.key = "load_path",
           .kind = SettingKind::choice,
-          .accepted = "`\"scaled\"`, `\"extrapolated\"`",
-          .default_value = std::string("scaled"),
+          .accepted = "`\"scaled\"`, `\"extrapolated\"`, `\"cold\"`, `\"solver\"`",
+          .default_value = std::string("solver"),
           .doc =
               "where each load after the first starts (loads are solved in increasing order): the previous "
-              "solution scaled to the new load, or the linear extrapolation of the last two in the load "
-              "(clipped at 0, then scaled)",
-          .distributed_choices = {"scaled"},
-          .choices = {"scaled", "extrapolated"}},
+              "solution scaled to the new load, the linear extrapolation of the last two in the load "
+              "(clipped at 0, then scaled), cold (as a load alone), or the start the solver declares, "
+              "measured cheapest for it (docs/solvers.md \"Starts\")",
+          .distributed_choices = {"scaled", "solver"},
+          .choices = {"scaled", "extrapolated", "cold", "solver"}},
       [](BemSettings & s) -> auto& { return s.solver.load_path; }));
   table.push_back(bind(
       Row{.key = "extrapolate",

@@ -53,6 +53,13 @@ template void PressureState<float>::begin_load(double, bool);
 template void PressureState<double>::end_load(double);
 template void PressureState<float>::end_load(double);
 
+LoadPathStart load_path_start(const BemSolverOptions& options, const Grid& grid) {
+  if (options.load_path != LoadPathStart::solver) return options.load_path;
+  const SolverEntry& entry = solver_entry(options.solver);
+  const LoadPathStart declared = entry.load_path ? entry.load_path(grid) : LoadPathStart::scaled;
+  return declared == LoadPathStart::solver ? LoadPathStart::scaled : declared;  // never itself
+}
+
 Index coarse_start(ContactSolver& solver, const Surface& surface, Real modulus,
                    const BemSolverOptions& options, int threads, Real mean_pressure) {
   // Each coarse pixel's pressure on its four fine pixels.

@@ -1,13 +1,18 @@
 // Where a load-controlled solve starts (BemSolverOptions::load_path and coarse_start; docs/solvers.md):
-// after a previous load, from its solution scaled to the new load or from the extrapolation of the last two
-// (PressureState::begin_load, load_stepping.cpp); cold, optionally from the solution of the surface averaged
-// over 2 x 2 blocks (coarse_start below). Internal to the solvers (bem/solvers/).
+// after a previous load, as the solver declares or the options force (load_path_start below): warm, from
+// its solution scaled to the new load or from the extrapolation of the last two (PressureState::begin_load,
+// load_stepping.cpp), or cold; cold, optionally from the solution of the surface averaged over 2 x 2 blocks
+// (coarse_start below). Internal to the solvers (bem/solvers/).
 #pragma once
 
 #include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/solvers/contact_solver.hpp"
 
 namespace contactbench {
+
+// The start a load after a previous one takes on `grid`: options.load_path, or when that is `solver` the
+// start the solver declares for the grid (SolverEntry::load_path). Never `solver`.
+LoadPathStart load_path_start(const BemSolverOptions& options, const Grid& grid);
 
 // Solves the surface averaged over 2 x 2 blocks (its mean kept, so the load is the same) loosely, itself
 // from a coarser start down to 64 points a side, and starts `solver` from its pressure injected. Elastic: a
