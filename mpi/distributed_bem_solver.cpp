@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contactbench/bem/solvers/constrained_cg_kernels.hpp"
+#include "contactbench/bem/solvers/load_stepping.hpp"
 #include "contactbench/bem/solvers/polonsky_keer_step.hpp"
 #include "contactbench/core/error.hpp"
 
@@ -16,9 +17,11 @@ namespace {
 
 void refuse(bool unsupported, const std::string& what) {
   if (unsupported)
-    throw Error("distributed Polonsky-Keer: " + what +
-                " is not distributed yet (docs/mpi.md); it supports load control, elastic, double precision, "
-                "load_path = scaled, no coarse_start (solvers polonsky_keer, preconditioned_cg, active_set)");
+    throw Error(
+        "distributed Polonsky-Keer: " + what +
+        " is not distributed yet (docs/mpi.md); it supports load control, elastic, double precision, "
+        "load_path = scaled, cold or solver, no coarse_start (solvers polonsky_keer, preconditioned_cg, "
+        "active_set)");
 }
 
 double max_over_ranks(double value, MPI_Comm comm) {
@@ -50,8 +53,7 @@ DistributedBemSolver::DistributedBemSolver(const Grid& grid, const HeightMap& lo
   refuse(options_.single_precision, "single precision");
   refuse(options_.coarse_start, "coarse_start");
   // It starts each load from the last scaled, the start every solver may take when left to choose.
-  refuse(options_.load_path != LoadPathStart::scaled && options_.load_path != LoadPathStart::solver,
-         "load_path = extrapolated or cold");
+  refuse(load_path_start(options_, grid) == LoadPathStart::extrapolated, "load_path = extrapolated");
   const Slab& slab = operator_.slab();
   throw_on_any_rank(local_heights.rows() != slab.count || local_heights.cols() != grid.nx,
                     "distributed Polonsky-Keer: the local heights are " +
@@ -334,6 +336,10 @@ const DistributedContactSolution& DistributedBemSolver::solve(Real mean_pressure
     write();
     return solution_;
   }
+  // The start after a previous load as one process chooses it (bem/solvers/load_stepping.hpp): forced, or
+  // the one the solver declares (active_set: cold, its nested coarse start, from 512^2), so that the
+  // iterations stay those of one process.
+  if (load_path_start(options_, grid_) == LoadPathStart::cold) warm_ = false;
   const double total = mean_pressure * static_cast<double>(grid_.points());
   if (active_set_) {
     // (its start is its own: solve_active_set)

@@ -160,7 +160,7 @@ SettingTable<BemSettings> make_table() {
               "solution scaled to the new load, the linear extrapolation of the last two in the load "
               "(clipped at 0, then scaled), cold (as a load alone), or the start the solver declares, "
               "measured cheapest for it (docs/solvers.md \"Starts\")",
-          .distributed_choices = {"scaled", "solver"},
+          .distributed_choices = {"scaled", "cold", "solver"},
           .choices = {"scaled", "extrapolated", "cold", "solver"}},
       [](BemSettings & s) -> auto& { return s.solver.load_path; }));
   table.push_back(bind(

@@ -134,10 +134,11 @@ SolverEntry preconditioned_cg_entry() {
       .separation_control = false,
       .hardness = false,
       .single_precision = true,
-      // Warm, the extrapolation of the last two solutions: on the benchmark's 10-load curves (contact 1 %
-      // to 30 %, bench/bench_load_path.cpp) 0.92 to 0.93 of the cold solves' iterations at 256^2, the last
-      // solution scaled 0.94 to 0.95 (docs/solvers.md "Starts").
-      .load_path = [](const Grid&) { return LoadPathStart::extrapolated; },
+      // Warm, the last solution scaled: on the benchmark's 10-load curves (contact 1 % to 30 %,
+      // bench/bench_load_path.cpp) 0.94 to 0.95 of the cold solves' iterations at 256^2; the extrapolation of
+      // the last two took 0.92 to 0.93, a 2 % gain not worth a start the distributed solver does not have
+      // (under mpiexec the default must take the same steps as one process; docs/solvers.md "Starts").
+      .load_path = [](const Grid&) { return LoadPathStart::scaled; },
       .make = [](const Surface& centred, Real modulus, int threads,
                  bool single_precision) -> std::unique_ptr<ContactSolver> {
         if (single_precision)
