@@ -43,7 +43,7 @@ class DistributedActiveSet::Coarse {
  public:
   Coarse(const Grid& fine, const std::vector<double>& fine_heights, Real modulus, MPI_Comm comm, int threads,
          Index gather_bound)
-      : grid_(fine), comm_(comm) {
+      : grid_(fine) {
     grid_.nx = fine.nx / 2;
     grid_.ny = fine.ny / 2;
     const Slab fine_slab = slab_of(fine, comm);
@@ -124,7 +124,6 @@ class DistributedActiveSet::Coarse {
 
  private:
   Grid grid_;
-  MPI_Comm comm_;
   std::vector<Slab> layout_;
   Slab slab_;
   std::unique_ptr<DistributedActiveSet> distributed_;
