@@ -27,17 +27,29 @@
 # (a snapshot that lacks some large test files: exclude them with `-- . ':(exclude)path'`; none is needed).
 #
 # Debian 12 packages it needs (apt-get install, as root):
-#   python3 python3-dev python3-numpy python3-scipy python3-pip g++ cmake ninja-build libeigen3-dev
-#   meson python3-mesonpy flit python3-hatchling python3-hatch-vcs
+#   to build: python3 python3-dev python3-numpy python3-scipy python3-pip g++ cmake ninja-build libeigen3-dev
+#             meson python3-mesonpy flit python3-hatchling python3-hatch-vcs
+#   what `import SurfaceTopography` imports (its file readers are imported eagerly): python3-pydantic
+#             python3-defusedxml python3-h5py python3-tifffile python3-openpyxl python3-olefile python3-pandas
+#             python3-zstandard python3-xmltodict python3-yaml python3-dateutil python3-requests python3-pil
+#             python3-matplotlib
 # No Python index is used (pip runs with --no-index --no-deps --no-build-isolation). FFTW is not used by the
-# peer (muGrid has pocketfft built in). Optional Python dependencies the peer declares but the side-by-side
-# does not import (netCDF4, h5py, pandas, the file readers' libraries, muTimer, primefac) are not installed.
+# peer (muGrid has pocketfft built in). Declared dependencies nothing imports here (netCDF4, muTimer,
+# numpyencoder, primefac) are not installed.
 #
-# Patches, applied to the trees in SRC (idempotent), because Debian 12's tools are older than the pins:
+# Patches, applied to the trees in SRC (idempotent), because Debian 12 is older than the pins (numpy 1.24 where
+# muGrid and SurfaceTopography want >= 2.1 and >= 2.0; Eigen 3.4, meson-python 0.12):
 #   muGrid/CMakeLists.txt: find_package(Eigen3 5.0.1) -> 3.4 (Debian's Eigen; the build otherwise fetches
 #     Eigen 5.0.1 from gitlab, which is offline here); the version string from git -> the given version;
+#   muGrid's bindings (scripts/peers/patch_mugrid_dlpack.py): a host field's __dlpack__ also gives the legacy
+#     capsule numpy 1.24's from_dlpack takes, and Field.py views the imported buffer writeable; without it
+#     every FFT of the half-space fails ("PyCapsule_GetPointer called with incorrect name", then "assignment
+#     destination is read-only");
 #   SurfaceTopography/pyproject.toml: the [tool.meson-python] table (a key Debian's meson-python 0.12 rejects)
-#     removed.
+#     removed; SurfaceTopography/IO/IBW.py: igor2 (no Debian package; only .ibw files need it) imported
+#     only if present;
+#   PREFIX/tiffile.py: the PyPI package "tiffile" (SurfaceTopography's JPK reader imports it) is an alias of
+#     tifffile; this one-line module stands in for it, over Debian's python3-tifffile.
 set -euo pipefail
 
 if [[ $# -ne 2 ]]; then
@@ -77,6 +89,7 @@ pip_install DISCOVER_VERSION="$DISCOVERVERSION_VERSION" DiscoverVersion
 pip_install SETUPTOOLS_SCM_PRETEND_VERSION="$NUMPI_VERSION" NuMPI
 
 echo "== muGrid (CMake, C++ with Python bindings; no MPI, no NetCDF)"
+$PY "$(dirname "$(realpath "$0")")/patch_mugrid_dlpack.py" "$SRC/muGrid"
 sed -i 's/find_package(Eigen3 5.0.1 QUIET)/find_package(Eigen3 3.4 QUIET)/' "$SRC/muGrid/CMakeLists.txt"
 sed -i "s/set(MUGRID_VERSION_STRING \"unknown\")/set(MUGRID_VERSION_STRING \"v$MUGRID_VERSION\")/; \
 s/set(MUGRID_GIT_HASH \"unknown\")/set(MUGRID_GIT_HASH \"$MUGRID_COMMIT\")/" "$SRC/muGrid/CMakeLists.txt"
@@ -90,6 +103,24 @@ cmake --install "$PREFIX/.build/muGrid"
 
 echo "== SurfaceTopography (meson-python, a C++ extension)"
 sed -i '/^\[tool.meson-python\]/,/^allow-windows-internal-shared-libs/d' "$SRC/SurfaceTopography/pyproject.toml"
+$PY - "$SRC/SurfaceTopography/SurfaceTopography/IO/IBW.py" <<'PATCH'
+import sys
+path = sys.argv[1]
+text = open(path).read()
+old = "from igor2.binarywave import load as loadibw\n"
+new = ("try:\n    from igor2.binarywave import load as loadibw\n"
+       "except ImportError:  # igor2 is no Debian package: only .ibw files need it (contactbench's peer build)\n"
+       "    loadibw = None\n")
+if new not in text:
+    if text.count(old) != 1:
+        sys.exit(f"build_contactmechanics: {path} is not the expected SurfaceTopography source")
+    open(path, "w").write(text.replace(old, new))
+PATCH
+cat > "$PREFIX/tiffile.py" <<'TIFFILE'
+# The PyPI package "tiffile" is an alias of tifffile; Debian has python3-tifffile only (contactbench peer build).
+from tifffile import *  # noqa: F401,F403
+from tifffile import TiffFile, TiffFileError, __version__  # noqa: F401
+TIFFILE
 pip_install DISCOVER_VERSION="$ST_VERSION" SurfaceTopography --config-settings=compile-args=-j$JOBS
 
 echo "== ContactMechanics, Adhesion (pure Python; flit imports them, so they come after their dependencies)"

@@ -45,6 +45,7 @@ def main():
     parser.add_argument("--forcetol", type=float, default=1e-5,
                         help="largest pixel force outside the contact, relative to the mean pixel force")
     parser.add_argument("--maxiter", type=int, default=100000)
+    parser.add_argument("--pressure-out", help="write each load's pressure [Pa] (rows along y) to PREFIX_<k>.npy")
     args = parser.parse_args()
 
     from ContactMechanics import PeriodicFFTElasticHalfSpace, make_system
@@ -55,10 +56,10 @@ def main():
     # ContactMechanics indexes heights[ix, iy]: the transpose of the file's rows along y.
     topography = Topography(np.ascontiguousarray(heights.T), physical_sizes=(lx, ly), periodic=True)
     substrate = PeriodicFFTElasticHalfSpace(topography.nb_grid_pts, args.modulus, topography.physical_sizes)
-    system = make_system(substrate, topography)
+    system = make_system(substrate=substrate, surface=topography)
     nodes = heights.size
     pixel_area = lx * ly / nodes
-    for load in args.loads:
+    for k, load in enumerate(args.loads):
         total_force = load * args.modulus * lx * ly
         forcetol = args.forcetol * total_force / nodes
         begin = time.perf_counter()
@@ -66,9 +67,13 @@ def main():
                                        maxiter=args.maxiter)
         seconds = time.perf_counter() - begin
         forces = result.jac
+        gap = result.x - (topography.heights() + result.offset)  # ContactMechanics: gap = u - (h + offset)
+        if args.pressure_out:
+            np.save(f"{args.pressure_out}_{k}.npy", np.ascontiguousarray(forces.T) / pixel_area)
         print(json.dumps({
             "load": load, "area_fraction": float(np.count_nonzero(forces > 0)) / nodes,
             "mean_pressure": float(forces.sum() / (lx * ly)), "max_pressure": float(forces.max() / pixel_area),
+            "mean_gap": float(gap.mean()),
             "iterations": int(result.nit), "converged": bool(result.success), "solve_seconds": seconds,
             "seconds_since_start": time.perf_counter() - START, "peer_version": ContactMechanics.__version__,
         }), flush=True)
