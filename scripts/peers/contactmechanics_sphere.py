@@ -4,9 +4,9 @@ periodic grid, solved by ContactMechanics / Adhesion; reads the heights from a .
 contactbench's), prints one JSON document on stdout. Run with the peer on PYTHONPATH:
 
   PYTHONPATH=PEER /usr/bin/python3 scripts/peers/contactmechanics_sphere.py adhesion HEIGHTS.npy --size L
-      --modulus E --work W --range RHO --indentations D1 D2 ...
+      --modulus E --work W --range RHO --indentations=D1,D2,...
   PYTHONPATH=PEER /usr/bin/python3 scripts/peers/contactmechanics_sphere.py plastic HEIGHTS.npy --size L
-      --modulus E --hardness H --loads P1 P2 ...
+      --modulus E --hardness H --loads P1,P2,...
 
 adhesion: Adhesion's exponential interaction V(g) = -w exp(-g/rho) (attraction (w/rho) exp(-g/rho), the
 project's exponential law) with the bound-constrained system (BoundedSmoothContactSystem, L-BFGS-B, its
@@ -86,6 +86,10 @@ def plastic(args, heights):
     return {"loads": answers}
 
 
+def floats(text):
+    return [float(item) for item in text.split(",")]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("case", choices=["adhesion", "plastic"])
@@ -96,9 +100,9 @@ def main():
     parser.add_argument("--range", type=float, help="rho [m]")
     parser.add_argument("--gtol", type=float, default=1e-6,
                         help="L-BFGS-B's projected-gradient tolerance relative to the peak stress's pixel force")
-    parser.add_argument("--indentations", type=float, nargs="+", help="[m]")
+    parser.add_argument("--indentations", type=floats, help="[m], comma-separated (negative: apart)")
     parser.add_argument("--hardness", type=float, help="[Pa]")
-    parser.add_argument("--loads", type=float, nargs="+", help="P/(E* A0)")
+    parser.add_argument("--loads", type=floats, help="P/(E* A0), comma-separated")
     parser.add_argument("--pentol", type=float, default=None, help="[um]; default ContactMechanics' Sq/(10 n)")
     parser.add_argument("--forcetol", type=float, default=1e-5,
                         help="largest pixel force outside the contact, relative to the mean pixel force")

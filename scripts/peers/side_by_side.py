@@ -348,7 +348,7 @@ def part_adhesion(args, cb, peer_versions):
     heights = sphere_heights(radius, size, n)
     area0 = size * size
     lift = heights.max() - heights.mean()  # the apex above the mean plane: separation d = lift - indentation
-    start, turn, steps = 2 * rho, -1.2 * rho, 40  # indentations: from 2 rho apart to 1.2 rho into contact
+    start, turn, steps = 2 * rho, -1.2 * rho, 20  # indentations: from 2 rho apart to 1.2 rho into contact
     loads_seen = [os.getloadavg()[0]]
     surface = cb.Surface(heights, lx=size, periodic=True)
     law = {"model": "exponential", "work": work, "range": rho}
@@ -365,7 +365,7 @@ def part_adhesion(args, cb, peer_versions):
             indentations = [lift - d for d in path.separation]
             wall, out = run([sys.executable, ROOT / "scripts" / "peers" / "contactmechanics_sphere.py", "adhesion",
                              heights_file, "--size", size, "--modulus", modulus, "--work", work, "--range", rho,
-                             "--indentations", *indentations], peer_env(args.peer))
+                             "--indentations=" + ",".join(f"{d:.17g}" for d in indentations)], peer_env(args.peer))
             answer = json.loads(out)
             peer_seconds.append(sum(s["seconds"] for s in answer["states"]))
             peer_states = answer["states"]
@@ -492,7 +492,7 @@ def part_plastic(args, cb, peer_versions):
             cb_seconds.append(time.perf_counter() - begin)
             wall, out = run([sys.executable, ROOT / "scripts" / "peers" / "contactmechanics_sphere.py", "plastic",
                              heights_file, "--size", size, "--modulus", modulus, "--hardness", hardness,
-                             "--loads", *loads], peer_env(args.peer))
+                             "--loads=" + ",".join(f"{load:.17g}" for load in loads)], peer_env(args.peer))
             answer = json.loads(out)
             peer_loads = answer["loads"]
             peer_seconds.append(sum(a["seconds"] for a in peer_loads))
