@@ -44,7 +44,7 @@ PENTOL_OF_SQ = 1e-9
 def stamp(threads):
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, capture_output=True,
                             text=True).stdout.strip()
-    if subprocess.run(["git", "diff", "--quiet", "HEAD", "--", "core", "bem", "app", "python"],
+    if subprocess.run(["git", "diff", "--quiet", "HEAD", "--", "core", "bem", "app", "python", "scripts/peers"],
                       cwd=ROOT).returncode:
         commit += "+uncommitted"
     machine = next((line.split(":", 1)[1].strip() for line in
