@@ -25,6 +25,8 @@
 
 namespace contactbench {
 
+struct FlatHeightMemory;
+
 struct BemSolverOptions {
   Real tolerance = 1e-10;  // of the stopping criterion (docs/solvers.md "Stopping criteria ...")
   Index max_iterations = 20000;
@@ -140,6 +142,9 @@ class BemSolver {
   ContactSolution solution_;
   // The iteration, in the chosen scalar: the registry's solver (bem/solver_registry.hpp).
   std::unique_ptr<ContactSolver> engine_;
+  // With a hardness, for the solvers that meet it by a search on the flat's height: what the last load's
+  // search left (bem/solvers/hardness_search.hpp); empty when the engine's state is not that search's.
+  std::unique_ptr<FlatHeightMemory> flat_height_;
   // keep_plastic_deformation: lowers the plastic nodes of solution_ by their overlap (in surface_ and the
   // engine's heights).
   void keep_plastic_deformation();

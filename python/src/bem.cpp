@@ -2,11 +2,15 @@
 // docs/theory.md section 6). Solves release the GIL. Ctrl-C is honoured between iterations: the solver's
 // between_iterations hook takes the GIL, lets Python run its signal handlers and abandons the solve with
 // KeyboardInterrupt (the solver then starts its next solve afresh). With `adhesion`, the adhesive solver
-// (bem/adhesive_solver.hpp) around the same contact solver, as `contactbench bem --adhesion` runs it.
+// (bem/adhesive_solver.hpp) around the same contact solver, as `contactbench bem --adhesion` runs it. With
+// `hardness`, the elastic-perfectly plastic cap (docs/solvers.md "Hardness") as `contactbench bem --hardness`
+// solves it, and the load path up and down keeping the plastic deformation (solve_path), as a scene's
+// loads.path = "as listed" does.
 #include <pybind11/stl.h>
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <mutex>
@@ -39,6 +43,29 @@ struct BemResult {
   std::optional<AdhesiveLoad> adhesive;
   Index points = 0;
   bool separated = false;
+  // With a hardness: the cap H [Pa], for the plastic load fraction (None without).
+  std::optional<Real> hardness = std::nullopt;
+};
+
+// The plastic nodes / all nodes, as the BEM method's plastic_area_fraction column
+// (app/methods/bem_method.cpp).
+Real plastic_area_fraction(const BemResult& r) {
+  return static_cast<Real>(r.solution.plastic_points) / static_cast<Real>(r.points);
+}
+
+// H x the plastic area over P: the share of the load the plastic nodes carry, as the BEM method's
+// plastic_load_fraction column (docs/theory.md section 6.7; 0 at no load).
+Real plastic_load_fraction(const BemResult& r) {
+  return r.solution.mean_pressure > 0 ? *r.hardness * plastic_area_fraction(r) / r.solution.mean_pressure : 0;
+}
+
+// A load path up and down (BemSolver.solve_path), as a scene's loads.path = "as listed" runs it
+// (app/serial_runner.cpp): one result per step in the path's order, the loads as given, and the surface as
+// the path left it (the residual topography; with a hardness only).
+struct PythonLoadPath {
+  std::vector<BemResult> results;
+  std::vector<Real> loads;  // P/(E* A0)
+  std::optional<Surface> residual_topography;
 };
 
 // An approach-retract path and what it needs to give its loads in the loads' unit and its areas as
@@ -59,6 +86,46 @@ py::array path_column(const PythonAdhesivePath& p,
   return py::array(py::cast(column));
 }
 
+// The scene's interface table `document` read by the scene's own reader (app/interface.cpp): the same checks
+// and messages, each key named as the caller wrote it (hardness, adhesion.KEY), not as interface.KEY.
+InterfaceSpec read_python_interface(const toml::table& document) {
+  Problems problems("BemSolver");
+  InterfaceSpec spec = read_interface(Section(document, "", problems, true));
+  try {
+    problems.throw_if_any();
+  } catch (const SceneError& error) {
+    // "BemSolver: interface.adhesion.work: reason" becomes "BemSolver: adhesion.work: reason".
+    std::string message;
+    for (std::string line : error.problems()) {
+      const std::string prefix = "interface.";
+      if (const auto at = line.find(prefix); at != std::string::npos) line.erase(at, prefix.size());
+      message += (message.empty() ? "" : "\n") + line;
+    }
+    throw Error(message);
+  }
+  return spec;
+}
+
+// The Python type's name of `value`, for messages.
+std::string type_name(const py::handle& value) {
+  return py::str(py::type::of(value).attr("__name__"));
+}
+
+// `hardness` as the scene's interface.hardness, read by the scene's reader (same check, same message, named
+// hardness): a number H [Pa], or None (elastic). A bool or a string is refused by its type.
+std::optional<Real> hardness_of(const py::object& hardness) {
+  if (hardness.is_none()) return std::nullopt;
+  const bool number = (py::isinstance<py::int_>(hardness) || py::isinstance<py::float_>(hardness) ||
+                       py::hasattr(hardness, "__float__")) &&
+                      !py::isinstance<py::bool_>(hardness) && !py::isinstance<py::str>(hardness);
+  if (!number)
+    throw Error("hardness: wrong type: expected a number H [Pa], got " + type_name(hardness) +
+                "; accepted: a finite number > 0 [Pa], or None (elastic)");
+  const toml::table document{
+      {"interface", toml::table{{"hardness", py::cast<double>(py::float_(hardness))}}}};
+  return read_python_interface(document).hardness;
+}
+
 // `adhesion` as the scene's interface.adhesion table ({"model": "dugdale", "work": w, "stress": σ0} or
 // {"model": "exponential", "work": w, "range": ρ}), read by the scene's own reader (app/interface.cpp): the
 // same checks and messages, each key named as adhesion.KEY. None: non-adhesive.
@@ -68,8 +135,7 @@ std::optional<AdhesionLaw> adhesion_of(const py::object& adhesion) {
       "a dict {\"model\": \"dugdale\", \"work\": W, \"stress\": SIGMA0} or {\"model\": \"exponential\", "
       "\"work\": W, \"range\": RHO}";
   if (!py::isinstance<py::dict>(adhesion))
-    throw Error("adhesion: expected " + accepted + ", got " +
-                std::string(py::str(py::type::of(adhesion).attr("__name__"))));
+    throw Error("adhesion: expected " + accepted + ", got " + type_name(adhesion));
   toml::table table;
   for (const auto& [name, value] : adhesion.cast<py::dict>()) {
     if (!py::isinstance<py::str>(name)) throw Error("adhesion: keys are strings; accepted: " + accepted);
@@ -81,22 +147,10 @@ std::optional<AdhesionLaw> adhesion_of(const py::object& adhesion) {
       table.insert(key, value.cast<double>());
     else
       throw Error("adhesion." + key + ": wrong type: expected a number (model: a string), got " +
-                  std::string(py::str(py::type::of(value).attr("__name__"))) + "; accepted: " + accepted);
+                  type_name(value) + "; accepted: " + accepted);
   }
   const toml::table document{{"interface", toml::table{{"adhesion", table}}}};
-  Problems problems("BemSolver");
-  const InterfaceSpec spec = read_interface(Section(document, "", problems, true));
-  try {
-    problems.throw_if_any();
-  } catch (const SceneError& error) {
-    // "BemSolver: interface.adhesion.work: reason": the key as the caller wrote it.
-    std::string message;
-    for (std::string line : error.problems()) {
-      if (const auto at = line.find("interface.adhesion"); at != std::string::npos) line.erase(at, 10);
-      message += (message.empty() ? "" : "\n") + line;
-    }
-    throw Error(message);
-  }
+  const InterfaceSpec spec = read_python_interface(document);
   validate_adhesion_law(*spec.adhesion, "adhesion");  // the solver's own check (always passes here)
   return spec.adhesion;
 }
@@ -168,20 +222,46 @@ class PythonBemSolver {
                                                       AdhesiveSolverOptions{.contact = options_}, threads);
     else
       solver_ = std::make_unique<BemSolver>(solved, modulus, options_, threads);
+    threads_ = threads;
+    given_ = solved;
   }
 
   BemResult solve(Real mean_pressure) {
     std::lock_guard lock(mutex_);
     if (adhesive_) return adhesive_result(adhesive_->solve(mean_pressure));
-    const ContactSolution& solution = solver_->solve(mean_pressure);
-    return {solution, contact_statistics(solution, labeller_), modulus_, std::nullopt, 0, false};
+    return result_of(solver_->solve(mean_pressure));
   }
 
   BemResult solve_for_separation(Real separation) {
     std::lock_guard lock(mutex_);
     if (adhesive_) return adhesive_result(adhesive_->solve_for_separation(separation));
-    const ContactSolution& solution = solver_->solve_for_separation(separation);
-    return {solution, contact_statistics(solution, labeller_), modulus_, std::nullopt, 0, false};
+    return result_of(solver_->solve_for_separation(separation));
+  }
+
+  // The load path in the listed order, up and down, as a scene's loads.path = "as listed" runs it
+  // (app/serial_runner.cpp): a solver of its own from the surface as given (this one's warm start and state
+  // untouched), keeping the plastic deformation from one step to the next when there is a hardness
+  // (BemSolverOptions::keep_plastic_deformation; docs/solvers.md "Unloading and reloading").
+  PythonLoadPath solve_path(const std::vector<Real>& loads) {
+    std::lock_guard lock(mutex_);
+    if (adhesive_)
+      throw Error(
+          "solve_path: the load path is the plastic BEM's (it keeps the plastic deformation); with adhesion "
+          "use solve_loads or approach_retract; accepted: BemSolver(..., hardness=H) or no adhesion");
+    BemSolverOptions options = options_;
+    options.keep_plastic_deformation = options_.hardness.has_value();
+    BemSolver path_solver(*given_, modulus_, options, threads_);
+    PythonLoadPath path;
+    for (const Real load : loads) {
+      path.results.push_back(result_of(path_solver.solve(load * modulus_)));
+      path.loads.push_back(load);
+      {  // and between steps, as solve_loads does between loads
+        py::gil_scoped_acquire locked;
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+      }
+    }
+    if (options_.hardness) path.residual_topography = path_solver.surface();
+    return path;
   }
 
   // The approach-retract path (bem/adhesive_path.hpp), as `contactbench bem --approach-retract` runs it.
@@ -198,7 +278,29 @@ class PythonBemSolver {
             modulus_, grid.nx * grid.ny};
   }
 
+  // As the scene's preflight refuses them (app/methods/method.cpp, check_hardness_above_loads), in its words
+  // and before any solve: loads whose mean pressure load x E* is at or above the hardness (full plastic
+  // contact, p = H everywhere, which has no solution to compute), each named by its position.
+  void check_below_hardness(const std::vector<Real>& loads) const {
+    if (!options_.hardness) return;
+    std::string refused;
+    for (std::size_t k = 0; k < loads.size(); ++k)
+      if (loads[k] * modulus_ >= *options_.hardness)
+        refused += (refused.empty() ? "" : ", ") + formats::format_real(loads[k]) + " (loads[" +
+                   std::to_string(k) + "])";
+    if (refused.empty()) return;
+    throw Error(
+        "hardness: the hardness " + formats::format_real(*options_.hardness) +
+        " Pa is at or below the mean pressure P/A0 = load E* of the loads " + refused +
+        ": full plastic contact, which has no solution to compute; accepted: loads below hardness/E* = " +
+        formats::format_real(*options_.hardness / modulus_) + ", or a larger hardness");
+  }
+
   Real modulus() const { return modulus_; }
+  Index points() const {
+    const Grid& grid = surface().grid();
+    return grid.nx * grid.ny;
+  }
   const BemSolverOptions& options() const { return options_; }
   const std::optional<AdhesionLaw>& adhesion() const { return adhesion_; }
   const Surface& surface() const { return adhesive_ ? adhesive_->surface() : solver_->surface(); }
@@ -208,10 +310,15 @@ class PythonBemSolver {
   // takes it (app/serial_runner.cpp), and what the attraction adds.
   BemResult adhesive_result(const AdhesiveSolution& state) {
     const ContactSolution solution = state.contact();
-    const Grid& grid = adhesive_->surface().grid();
-    return {solution,          contact_statistics(solution, labeller_),
-            modulus_,          state.adhesive(),
-            grid.nx * grid.ny, state.separated};
+    return {solution,       contact_statistics(solution, labeller_), modulus_, state.adhesive(), points(),
+            state.separated};
+  }
+
+  // A non-adhesive solution and its statistics, with the hardness for the plastic columns.
+  BemResult result_of(const ContactSolution& solution) {
+    return {
+        solution,         contact_statistics(solution, labeller_), modulus_, std::nullopt, points(), false,
+        options_.hardness};
   }
 
   Real modulus_;
@@ -220,7 +327,9 @@ class PythonBemSolver {
   Labeller labeller_;
   std::unique_ptr<BemSolver> solver_;            // without adhesion
   std::unique_ptr<AdhesiveBemSolver> adhesive_;  // with adhesion
-  std::mutex mutex_;                             // one solve at a time: the GIL is released while it runs
+  int threads_ = 1;
+  std::optional<Surface> given_;  // as given (periodicity applied), where a load path starts
+  std::mutex mutex_;              // one solve at a time: the GIL is released while it runs
 };
 
 // The solve runs without the GIL; a mutex (taken without the GIL, so no deadlock) keeps calls from two Python
@@ -264,7 +373,9 @@ std::string bem_keywords_doc() {
              (row.accepted.empty() ? kind_text(row.kind) : row.accepted) + "\n";
   }
   return text +
-         ")\n  modulus: E* [Pa]; hardness: the interface's perfectly plastic cap H [Pa] (None: elastic); "
+         ")\n  modulus: E* [Pa]; hardness: the interface's perfectly plastic cap H [Pa] (None: elastic), as "
+         "the "
+         "scene's interface.hardness and the CLI's --hardness; "
          "adhesion: the interface's attraction (None: non-adhesive), {\"model\": \"dugdale\", \"work\": w "
          "[J/m^2], \"stress\": sigma0 [Pa]} or {\"model\": \"exponential\", \"work\": w, \"range\": rho "
          "[m]}, "
@@ -338,6 +449,22 @@ void register_bem(py::module_& m) {
       .def_property_readonly(
           "plastic_points", [](const BemResult& r) { return r.solution.plastic_points; },
           "nodes at p = hardness (0 without a hardness)")
+      .def_property_readonly(
+          "plastic_area_fraction",
+          [](const BemResult& r) -> std::optional<Real> {
+            if (!r.hardness) return std::nullopt;
+            return plastic_area_fraction(r);
+          },
+          "with a hardness: nodes at p = H / all nodes [-], the CLI's plastic_area_fraction; None without")
+      .def_property_readonly(
+          "plastic_load_fraction",
+          [](const BemResult& r) -> std::optional<Real> {
+            if (!r.hardness) return std::nullopt;
+            return plastic_load_fraction(r);
+          },
+          "with a hardness: H x plastic area / P, the share of the load the plastic nodes carry [-] (the "
+          "CLI's "
+          "plastic_load_fraction; docs/theory.md section 6.7); None without")
       .def_property_readonly(
           "iterations", [](const BemResult& r) { return r.solution.iterations; },
           "conjugate-gradient iterations (with a hardness: of every solve of the search)")
@@ -501,11 +628,99 @@ void register_bem(py::module_& m) {
       .def_property_readonly(
           "converged", [](const Path& p) { return p.path.converged; }, "every state converged");
 
+  using LoadPath = PythonLoadPath;
+  // One column of the path's steps as a new numpy array.
+  const auto steps_column = [](const LoadPath& p, auto value) {
+    std::vector<decltype(value(p.results.front(), Real{}))> column;
+    for (std::size_t k = 0; k < p.results.size(); ++k)
+      column.push_back(value(p.results[k], p.loads[k]));
+    return py::array(py::cast(column));
+  };
+  py::class_<PythonLoadPath>(
+      m, "LoadPath",
+      "A load path up and down (BemSolver.solve_path), as a scene's loads.path = \"as listed\" solves it: "
+      "one entry per step in the path's order, as the columns of the scene's <label>_path.csv (each a new "
+      "numpy array), the BemResult of each step, and the residual topography.")
+      .def_property_readonly(
+          "results", [](const LoadPath& p) { return p.results; }, "the BemResult of each step, in order")
+      .def_property_readonly(
+          "load",
+          [=](const LoadPath& p) { return steps_column(p, [](const BemResult&, Real l) { return l; }); },
+          "P/(E* A0) of each step [-], as listed")
+      .def_property_readonly(
+          "direction",
+          [](const LoadPath& p) {
+            std::vector<int> column;
+            for (std::size_t k = 0; k < p.loads.size(); ++k) {
+              const Real before = k == 0 ? 0 : p.loads[k - 1];  // from zero load for the first
+              column.push_back(p.loads[k] > before ? 1 : p.loads[k] < before ? -1 : 0);
+            }
+            return py::array(py::cast(column));
+          },
+          "+1 loading, -1 unloading, 0 the same load again (from the step before; from zero for the first)")
+      .def_property_readonly(
+          "area_fraction",
+          [=](const LoadPath& p) {
+            return steps_column(p, [](const BemResult& r, Real) { return r.statistics.area_fraction; });
+          },
+          "contact nodes / all nodes [-] (the path CSV's area_fraction_nodes)")
+      .def_property_readonly(
+          "area_fraction_corrected",
+          [=](const LoadPath& p) {
+            return steps_column(
+                p, [](const BemResult& r, Real) { return r.statistics.area_fraction_corrected; });
+          },
+          "A/A0 less the perimeter term [-] (the path CSV's area_fraction, the scene's default compared "
+          "area)")
+      .def_property_readonly(
+          "plastic_area_fraction",
+          [=](const LoadPath& p) {
+            return steps_column(
+                p, [](const BemResult& r, Real) { return r.hardness ? plastic_area_fraction(r) : Real{0}; });
+          },
+          "nodes at p = H / all nodes [-] (0 without a hardness)")
+      .def_property_readonly(
+          "plastic_load_fraction",
+          [=](const LoadPath& p) {
+            return steps_column(
+                p, [](const BemResult& r, Real) { return r.hardness ? plastic_load_fraction(r) : Real{0}; });
+          },
+          "H x plastic area / P [-] (0 without a hardness)")
+      .def_property_readonly(
+          "separation",
+          [=](const LoadPath& p) {
+            return steps_column(p, [](const BemResult& r, Real) { return r.solution.separation; });
+          },
+          "d: the flat's height above the mean plane of the given heights [m]")
+      .def_property_readonly(
+          "iterations",
+          [=](const LoadPath& p) {
+            return steps_column(p, [](const BemResult& r, Real) { return r.solution.iterations; });
+          },
+          "solver iterations of each step")
+      .def_property_readonly(
+          "state_converged",
+          [=](const LoadPath& p) {
+            return steps_column(p, [](const BemResult& r, Real) { return r.solution.converged; });
+          },
+          "whether each step converged")
+      .def_property_readonly(
+          "converged",
+          [](const LoadPath& p) {
+            return std::all_of(p.results.begin(), p.results.end(),
+                               [](const BemResult& r) { return r.solution.converged; });
+          },
+          "every step converged")
+      .def_property_readonly(
+          "residual_topography", [](const LoadPath& p) { return p.residual_topography; },
+          "with a hardness: the surface as the path left it, lowered where it flowed (heights from the given "
+          "surface's mean plane; what the scene's residual_topography file holds); None without");
+
   py::class_<PythonBemSolver>(m, "BemSolver", solver_doc.c_str())
-      .def(py::init([](const Surface& surface, Real modulus, std::optional<Real> hardness,
+      .def(py::init([](const Surface& surface, Real modulus, const py::object& hardness,
                        const py::object& adhesion, int threads, const py::kwargs& keywords) {
-             return std::make_unique<PythonBemSolver>(surface, modulus, hardness, adhesion_of(adhesion),
-                                                      threads, settings_of(keywords));
+             return std::make_unique<PythonBemSolver>(surface, modulus, hardness_of(hardness),
+                                                      adhesion_of(adhesion), threads, settings_of(keywords));
            }),
            py::arg("surface"), py::arg("modulus"), py::kw_only(), py::arg("hardness") = py::none(),
            py::arg("adhesion") = py::none(), py::arg("threads") = 1)
@@ -513,6 +728,7 @@ void register_bem(py::module_& m) {
           "solve",
           [](PythonBemSolver& s, std::optional<Real> load, std::optional<Real> mean_pressure) {
             const Real pressure = mean_pressure_of(load, mean_pressure, s.modulus());
+            s.check_below_hardness({pressure / s.modulus()});
             return unlocked([&] { return s.solve(pressure); });
           },
           py::arg("load") = py::none(), py::kw_only(), py::arg("mean_pressure") = py::none(),
@@ -534,6 +750,7 @@ void register_bem(py::module_& m) {
               if (!(std::isfinite(loads[k]) && loads[k] >= 0 && (k == 0 || loads[k] >= loads[k - 1])))
                 throw Error("loads: every load P/(E* A0) must be finite, >= 0 and ascending; load " +
                             std::to_string(k) + " is " + formats::format_real(loads[k]));
+            s.check_below_hardness(loads);
             std::vector<BemResult> results;
             for (const Real load : loads) {
               results.push_back(unlocked([&] { return s.solve(load * s.modulus()); }));
@@ -545,6 +762,27 @@ void register_bem(py::module_& m) {
           "Solves each load P/(E* A0) (ascending), like `contactbench bem --loads`: a list of BemResult. "
           "Ctrl-C "
           "stops it between iterations (KeyboardInterrupt).")
+      .def(
+          "solve_path",
+          [](PythonBemSolver& s, const std::vector<Real>& loads) {
+            if (loads.empty()) throw Error("loads: the path needs at least one load P/(E* A0)");
+            for (std::size_t k = 0; k < loads.size(); ++k)
+              if (!(std::isfinite(loads[k]) && loads[k] > 0))
+                throw Error(
+                    "loads: every load P/(E* A0) of a path must be finite and > 0 (any order); load " +
+                    std::to_string(k) + " is " + formats::format_real(loads[k]));
+            s.check_below_hardness(loads);
+            py::gil_scoped_release release;
+            return s.solve_path(loads);
+          },
+          py::arg("loads"),
+          "Solves the loads P/(E* A0) in the order listed, up and down, as a scene's loads.path = \"as "
+          "listed\" does: from the surface as given (a solver of its own: this one's warm start is left as "
+          "it "
+          "is), and with a hardness keeping the plastic deformation from one step to the next (unloading is "
+          "the elastic response of the deformed surface, reloading gives the loaded state again): a "
+          "LoadPath. "
+          "Releases the GIL; Ctrl-C stops it between iterations (KeyboardInterrupt).")
       .def(
           "approach_retract",
           [](PythonBemSolver& s, Real start, Real turn, Index steps) {
