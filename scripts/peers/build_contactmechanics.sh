@@ -80,8 +80,12 @@ export PATH="$TOOLS:/usr/local/bin:/usr/bin:/bin"
 export PYTHONPATH="$PREFIX"
 PY=/usr/bin/python3
 pip_install() { # version-variable-assignment tree [pip options]
-  env "$1" $PY -m pip install --no-index --no-deps --no-build-isolation --upgrade --target "$PREFIX" "${@:3}" \
-    "$SRC/$2"
+  # A previous install of the package is removed first, not by pip's --upgrade: with --target, --upgrade lets
+  # a wheel's data files (SurfaceTopography's ChangeLog.md) replace the package folder of the same name.
+  local lower
+  lower=$(echo "$2" | tr '[:upper:]' '[:lower:]')
+  rm -rf "${PREFIX:?}/$2" "$PREFIX/$lower"-*.dist-info "$PREFIX/_$2".*.so
+  env "$1" $PY -m pip install --no-index --no-deps --no-build-isolation --target "$PREFIX" "${@:3}" "$SRC/$2"
 }
 
 echo "== DiscoverVersion, NuMPI (pure Python)"
