@@ -158,8 +158,8 @@ SettingTable<BemSettings> make_table() {
           .doc =
               "where each load after the first starts (loads are solved in increasing order): the previous "
               "solution scaled to the new load, the linear extrapolation of the last two in the load "
-              "(clipped at 0, then scaled), cold (as a load alone), or the start the solver declares, "
-              "measured cheapest for it (docs/solvers.md \"Starts\")",
+              "(clipped at 0, then scaled), cold (as a load alone), or the start the solver declares by "
+              "measurement (docs/solvers.md \"Starts\")",
           .distributed_choices = {"scaled", "cold", "solver"},
           .choices = {"scaled", "extrapolated", "cold", "solver"}},
       [](BemSettings & s) -> auto& { return s.solver.load_path; }));

@@ -93,7 +93,7 @@ SolverEntry active_set_entry() {
           // Warm from the last solution's contact set below 512^2 points, cold (the nested coarse start)
           // from there: on the benchmark's 10-load curves (contact 1 % to 30 %, bench/bench_load_path.cpp)
           // the warm curve took 0.88 to 0.91 of the cold solves' iterations at 256^2, 0.98 to 1.03 at 512^2
-          // and 1.11 to 1.17 at 1024^2, where the nested start is as good a start as the last solution
+          // and 1.09 to 1.23 at 1024^2, where the nested start is as good a start as the last solution
           // and the warm set's first update overshoots (docs/solvers.md "Starts").
           .load_path =
               [](const Grid& grid) {

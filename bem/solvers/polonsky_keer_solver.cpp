@@ -294,8 +294,8 @@ SolverEntry polonsky_keer_entry() {
       .hardness = false,
       .single_precision = true,
       // Warm, the last solution scaled: on the benchmark's 10-load curves (contact 1 % to 30 %,
-      // bench/bench_load_path.cpp) 0.62 to 0.71 of the cold solves' iterations, the extrapolation 0.74 to
-      // 0.91 (docs/solvers.md "Starts").
+      // bench/bench_load_path.cpp) 0.62 to 0.75 of the cold solves' iterations at 256^2 and 512^2, the
+      // extrapolation 0.74 to 0.91 (docs/solvers.md "Starts").
       .load_path = [](const Grid&) { return LoadPathStart::scaled; },
       .make = [](const Surface& centred, Real modulus, int threads,
                  bool single_precision) -> std::unique_ptr<ContactSolver> {

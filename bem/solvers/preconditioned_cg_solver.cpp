@@ -135,9 +135,9 @@ SolverEntry preconditioned_cg_entry() {
       .hardness = false,
       .single_precision = true,
       // Warm, the last solution scaled: on the benchmark's 10-load curves (contact 1 % to 30 %,
-      // bench/bench_load_path.cpp) 0.94 to 0.95 of the cold solves' iterations at 256^2; the extrapolation of
-      // the last two took 0.92 to 0.93, a 2 % gain not worth a start the distributed solver does not have
-      // (under mpiexec the default must take the same steps as one process; docs/solvers.md "Starts").
+      // bench/bench_load_path.cpp) 0.94 to 1.00 of the cold solves' iterations at 256^2 and 512^2. The
+      // extrapolation took 0.92 to 0.97, but the distributed preconditioned_cg (mpi/) starts scaled and
+      // must take the serial one's steps (tests/mpi): docs/solvers.md "Starts".
       .load_path = [](const Grid&) { return LoadPathStart::scaled; },
       .make = [](const Surface& centred, Real modulus, int threads,
                  bool single_precision) -> std::unique_ptr<ContactSolver> {
