@@ -30,6 +30,20 @@ const std::vector<std::string>& solver_names() {
   return names;
 }
 
+std::string_view load_path_start_name(LoadPathStart start) {
+  switch (start) {
+    case LoadPathStart::scaled:
+      return "scaled";
+    case LoadPathStart::extrapolated:
+      return "extrapolated";
+    case LoadPathStart::cold:
+      return "cold";
+    case LoadPathStart::solver:
+      return "solver";
+  }
+  return "?";
+}
+
 std::string_view solver_name(SolverKind kind) {
   return solver_entry(kind).name;
 }

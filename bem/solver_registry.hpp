@@ -74,6 +74,8 @@ const SolverEntry& solver_entry(SolverKind kind);
 const std::vector<std::string>& solver_names();
 // The name of a kind ("polonsky_keer", "preconditioned_cg").
 std::string_view solver_name(SolverKind kind);
+// The scene key's spelling of a start ("scaled", "extrapolated", "cold", "solver").
+std::string_view load_path_start_name(LoadPathStart start);
 // The kind of a name; an unknown name throws Error naming it, `where` it came from, and every known name.
 SolverKind solver_kind(std::string_view name, std::string_view where = "solver");
 

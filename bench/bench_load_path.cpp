@@ -100,20 +100,6 @@ Curve solve_curve(BemSolver& solver, const std::vector<Real>& loads) {
   return curve;
 }
 
-const char* start_label(LoadPathStart start) {
-  switch (start) {
-    case LoadPathStart::scaled:
-      return "scaled";
-    case LoadPathStart::extrapolated:
-      return "extrapolated";
-    case LoadPathStart::cold:
-      return "cold";
-    case LoadPathStart::solver:
-      return "solver";
-  }
-  return "?";
-}
-
 void load_path(benchmark::State& state, SolverKind solver_kind, SurfaceKind kind, Index n, bool periodic) {
   const Surface surface = case_surface(kind, n).with_periodic(periodic);
   const std::vector<Real> loads = curve_loads(surface);
@@ -140,7 +126,7 @@ void load_path(benchmark::State& state, SolverKind solver_kind, SurfaceKind kind
   }
   const Curve& cold = curves.front();
   for (std::size_t i = 0; i < starts.size(); ++i) {
-    const std::string label = start_label(starts[i]);
+    const std::string label(load_path_start_name(starts[i]));
     double area_difference = 0;
     for (std::size_t k = 0; k < loads.size(); ++k)
       area_difference =
@@ -160,7 +146,7 @@ void load_path(benchmark::State& state, SolverKind solver_kind, SurfaceKind kind
   const LoadPathStart declared = load_path_start(options, surface.grid());
   for (const char* counter : {"_iterations", "_seconds", "_ratio", "_time_ratio", "_area_difference"})
     state.counters[std::string("solver") + counter] =
-        state.counters[std::string(start_label(declared)) + counter];
+        state.counters[std::string(load_path_start_name(declared)) + counter];
   state.counters["declared"] = static_cast<double>(declared);
   state.counters["area_fraction"] =
       static_cast<double>(cold.contact_points.back()) / static_cast<double>(surface.grid().points());

@@ -35,20 +35,6 @@ std::vector<Real> curve_loads(const Surface& surface, double low, double high, i
   return loads;
 }
 
-const char* start_name(LoadPathStart start) {
-  switch (start) {
-    case LoadPathStart::scaled:
-      return "scaled";
-    case LoadPathStart::extrapolated:
-      return "extrapolated";
-    case LoadPathStart::cold:
-      return "cold";
-    case LoadPathStart::solver:
-      return "solver";
-  }
-  return "?";
-}
-
 class LoadPath : public EachSolver {};
 
 TEST_P(LoadPath, EveryStartGivesTheColdAnswers) {
@@ -72,7 +58,7 @@ TEST_P(LoadPath, EveryStartGivesTheColdAnswers) {
       for (std::size_t k = 0; k < loads.size(); ++k) {
         const ContactSolution& s = path.solve(loads[k]);
         const std::string what = std::string(periodic ? "periodic" : "non-periodic") + ", " +
-                                 start_name(start) + ", load " + std::to_string(k);
+                                 std::string(load_path_start_name(start)) + ", load " + std::to_string(k);
         EXPECT_TRUE(s.converged) << what;
         EXPECT_EQ(s.contact_points, cold[k].contact_points) << what;
         EXPECT_LT((s.pressure - cold[k].pressure).abs().maxCoeff(),
