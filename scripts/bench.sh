@@ -2,14 +2,14 @@
 # Runs the Google Benchmark harnesses (2 threads, medians of repetitions) and records them under
 # results/bench/: <name>.json (Google Benchmark's output, with commit, date, threads and machine in its
 # context) and <name>.md (tables with ratios to the references measured in the same run).
-# Usage: scripts/bench.sh [labelling|sweep|bem|bem_solvers|bem_adhesion|fill|formats_read|command ...]
+# Usage: scripts/bench.sh [labelling|sweep|bem|bem_solvers|bem_adhesion|fill|formats_read|command|contact_stiffness ...]
 #   (default: labelling sweep bem).
 # BENCH_FILTER=REGEX runs only the matching benchmarks (recorded in the files' command); BENCH_APPEND=1 adds
 # them to the recorded JSON instead of replacing it (a long run made in parts). bem_solvers compares the BEM
 # solvers at equal accuracy (bench/bench_bem_solvers.cpp); its full matrix takes hours on two cores, so it is
 # run in parts with BENCH_FILTER (results/bench/bem_solvers.md records which). Takes about 15 minutes for
 # labelling and sweep, and as long again for bem; command (the whole bem command beside its solve) a few
-# minutes.
+# minutes; contact_stiffness (the stiffness solves of a paper scene, before and after issue 36) about one.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -22,7 +22,7 @@ if ! dpkg-query -W -f='${Status}' libopencv-dev 2>/dev/null | grep -q "install o
 fi
 cmake --preset release >/dev/null
 cmake --build --preset release -j "$(nproc)" --target bench_labelling bench_sweep bench_bem bench_bem_solvers \
-  bench_bem_adhesion bench_fill bench_command
+  bench_bem_adhesion bench_fill bench_command bench_contact_stiffness
 # formats_read: reading a 4096^2 file of each binary format (bench/bench_formats_read.cpp), about 5 minutes.
 cmake --build --preset release -j "$(nproc)" --target bench_formats_read
 
