@@ -31,7 +31,7 @@ struct ContactStiffness {
 
 // The relative residual the load-path stages solve to (app/serial_runner.cpp): the energy estimate's error
 // is quadratic in it, and measured on surface A 512^2 at the paper scene's 12 loads the stiffness then
-// agrees with that of a 1e-10 solve to better than 1e-8 relative (bench/bench_contact_stiffness.cpp;
+// agrees with that of a 1e-10 solve to 1.3e-10 relative at most (bench/bench_contact_stiffness.cpp;
 // docs/solvers.md, "The stiffness solve"), far below the 1e-4 the comparison needs.
 inline constexpr Real kStageStiffnessTolerance = 1e-5;
 
