@@ -58,6 +58,12 @@ class SerialRunner final : public StageRunner {
                                         .ly = solved.grid().ly / 2,
                                         .periodic = false}
                                  : solved.grid();
+    // The stiffness solves of the stage: planned once, to the stage tolerance (bem/contact_stiffness.hpp;
+    // docs/solvers.md, "The stiffness solve").
+    std::optional<ContactStiffnessSolver> stiffness_solver;
+    if (stage.stiffness)
+      stiffness_solver.emplace(solved.grid(), estar, stage.hardness, context.threads,
+                               StiffnessOptions{.tolerance = kStageStiffnessTolerance});
     SolvedLoads done;
     // The solve at the scene's reference load of the distributions: the first at it (along a path too).
     std::optional<std::size_t> measured_solve;
@@ -78,8 +84,7 @@ class SerialRunner final : public StageRunner {
       }
       std::optional<Real> stiffness;
       if (stage.stiffness) {  // the linearised response of the converged state (docs/theory.md 12.2)
-        const ContactStiffness response =
-            contact_stiffness(solved.grid(), estar, solution.pressure, stage.hardness, context.threads);
+        const ContactStiffness response = stiffness_solver->solve(solution.pressure);
         if (!response.converged)
           observer.warn(name + ": load " + std::to_string(k + 1) +
                         ": the stiffness solve stopped unconverged at a relative residual of " +

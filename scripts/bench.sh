@@ -2,7 +2,7 @@
 # Runs the Google Benchmark harnesses (2 threads, medians of repetitions) and records them under
 # results/bench/: <name>.json (Google Benchmark's output, with commit, date, threads and machine in its
 # context) and <name>.md (tables with ratios to the references measured in the same run).
-# Usage: scripts/bench.sh [labelling|sweep|bem|bem_solvers|bem_adhesion|fill|formats_read|command|load_path ...]
+# Usage: scripts/bench.sh [labelling|sweep|bem|bem_solvers|bem_adhesion|fill|formats_read|command|load_path|contact_stiffness ...]
 #   (default: labelling sweep bem).
 # BENCH_FILTER=REGEX runs only the matching benchmarks (recorded in the files' command); BENCH_REPETITIONS=N
 # repeats each N times instead of 3 (recorded too: for iteration counts, which do not vary); BENCH_APPEND=1 adds
@@ -12,6 +12,7 @@
 # labelling and sweep, and as long again for bem; command (the whole bem command beside its solve) a few
 # minutes; load_path (each solver's load curves warm against cold, bench/bench_load_path.cpp) about an hour
 # on two cores (BENCH_FILTER for parts).
+# contact_stiffness (the stiffness solves of a paper scene, before and after issue 36) about one minute.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -24,7 +25,8 @@ if ! dpkg-query -W -f='${Status}' libopencv-dev 2>/dev/null | grep -q "install o
 fi
 cmake --preset release >/dev/null
 cmake --build --preset release -j "$(nproc)" --target bench_labelling bench_sweep bench_bem bench_bem_solvers \
-  bench_bem_adhesion bench_fill bench_command bench_load_path
+  bench_bem_adhesion bench_fill bench_command bench_load_path \
+  bench_contact_stiffness
 # formats_read: reading a 4096^2 file of each binary format (bench/bench_formats_read.cpp), about 5 minutes.
 cmake --build --preset release -j "$(nproc)" --target bench_formats_read
 

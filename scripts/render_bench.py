@@ -514,12 +514,42 @@ def load_path(data):
     return lines
 
 
+def contact_stiffness(data):
+    """bench_contact_stiffness: the stiffness solves of a paper scene's 12 loads, before issue 36 and after."""
+    rows = median_rows(data)
+    times = medians(data)
+    lines = header(data, "The contact stiffness solve (K = -dP/dd of the BEM)", "scripts/bench.sh contact_stiffness")
+    lines.append("Surface A (seed 1) refined to 512^2, periodic, the 12 loads of scenes/paper/surface_A_gap.toml, each "
+                 "solved once by active_set at 1e-8 (not timed); a row times the 12 stiffness solves "
+                 "(bench/bench_contact_stiffness.cpp). before: the implementation before issue 36; one_state: "
+                 "contact_stiffness per load (fused iteration, plans per load); stage: one ContactStiffnessSolver "
+                 "for the 12 loads, as the scenes run it (stage:1e-5 is the scene path). k_error: largest relative "
+                 "difference of K from before:1e-10 over the loads. ratio: time over before:1e-10 of the same run.")
+    lines.append("")
+    lines.append("| path:tolerance | time [ms] | ratio | iterations (12 loads) | per load | FFT pairs / iteration "
+                 "| k_error |")
+    lines.append("|---|---:|---:|---:|---|---:|---:|")
+    reference = next((t for n, t in times.items() if "/before:1e-10" in n), None)
+    for name, row in rows.items():
+        if "fft_pair" in name:
+            continue
+        label = name.split("/")[2]
+        per_load = " ".join(f"{row[k]:.0f}" for k in sorted(row) if k.startswith("iterations_"))
+        t = times.get(name)
+        lines.append(f"| {label} | {fmt(t)} | {fmt(t / reference if t and reference else None)} "
+                     f"| {row['iterations']:.0f} | {per_load} | {fmt(row.get('fft_pairs_per_iteration'))} "
+                     f"| {row['k_error']:.2g} |")
+    return lines
+
+
 def main():
     with open(sys.argv[1]) as f:
         data = json.load(f)
     names = [b["name"] for b in data["benchmarks"]]
     if names and names[0].startswith("load_path/"):
         lines = load_path(data)
+    elif names and names[0].startswith("contact_stiffness/"):
+        lines = contact_stiffness(data)
     elif names and names[0].startswith("formats_read/"):
         lines = formats_read(data)
     elif names and names[0].startswith("command/"):
