@@ -4,12 +4,18 @@
 Many periodic surfaces (Hurst 0.3-0.9, several seeds, two bands, isotropic and anisotropic), each generated on a
 coarse grid of `--base` points a side (its spectrum cut at that grid's Nyquist, so every finer grid is the same
 surface, Fourier-refined: docs/theory.md section 2), solved by the BEM at every load of 1e-4 ... 5e-2 on
-base, 2 base, ... up to `--truth` points a side. For every case (surface x load) and every error estimate of
-bem/grid_convergence.hpp (gci3: three grids n, 2n, 4n, the observed order clamped to [0.5, 1], Roache's factor
-1.25 within 10 % of order 1, else 3; gci2: two grids 2n, 4n at the formal order 1, factor 3), of variants that
-failed (gci3_roache: Roache's GCI at the observed order; gci3_fine: that bar on the 4n grid's count; gci_ext:
-the bar on the change of the order-1 extrapolates) and of the former |extrapolated - corrected(4n)|, the estimate
-made from the grids n = base is compared with the truth:
+base, 2 base, ... up to `--truth` points a side. Two sets of surfaces: the calibration set (seeds 101 ...
+100 + --seeds; raw.csv), on which the calibrated factors are chosen, and the hold-out set (the next
+--holdout-seeds seeds, with two more families; holdout.csv), which only checks them. For every case (surface x
+load) the estimates made from the grids base, 2 base, 4 base are compared with the truth:
+
+  calibrated3   bem/grid_convergence.hpp's calibrated bar on the order-1 extrapolate 2 f3 - f2 (its factor read
+                from the header);
+  corrected1    the one-grid bar on each grid's perimeter-corrected area, factor x |N - A_corrected|;
+  gci3, gci2    Roache's GCI as the code computes it (three grids, the order clamped to [0.5, 1], factor 1.25
+                within 10 % of order 1, else 3; two grids at order 1, factor 3);
+  variants that failed: gci3_roache (Roache's GCI at the observed order), gci3_fine (that bar on the 4n grid's
+  count), gci_ext3 (3 x the change of the order-1 extrapolates), former (|extrapolated - corrected(4n)|).
 
   truth = the three-grid Richardson extrapolation with the observed order from truth/4, truth/2 and truth
           points a side (when that order is outside [0.5, 2]: the order-1 extrapolation of the two finest);
@@ -17,12 +23,15 @@ made from the grids n = base is compared with the truth:
           extrapolation of the two finest, the perimeter-corrected area of the finest).
 
 Coverage = fraction of cases whose true error |value - truth| is inside the bar; over-estimation = bar / true
-error (median per load band). Writes results/studies/error_bar/{table.md, cases.csv, estimate.gp, estimate.png,
-estimate.svg}.
+error (median and 10 % / 90 % quantiles per load band), on the hold-out set with the shipped factors, on the
+calibration set (in sample), and by halves of the calibration set (the factor chosen on one seed, checked on
+the other). Writes results/studies/error_bar/{table.md, cases.csv, estimate.gp, estimate.png, estimate.svg}
+and, when it solves, raw.csv and holdout.csv.
 
-Usage: PYTHONPATH=build/release/python /usr/bin/python3 scripts/studies/error_bar.py [--threads 2]
-       [--base 64] [--truth 1024] [--seeds 2] [--reuse]
-(--reuse reads the solves back from cases.csv's raw columns, to redo the analysis without solving.)
+Usage: OMP_WAIT_POLICY=PASSIVE PYTHONPATH=build/release/python /usr/bin/python3 scripts/studies/error_bar.py
+       [--threads 2] [--base 64] [--truth 1024] [--seeds 2] [--holdout-seeds 2] [--reuse]
+(--reuse reads the solves back from raw.csv and holdout.csv where they exist and solves only the missing set,
+to redo the analysis without solving.)
 """
 import argparse
 import math
@@ -420,16 +429,18 @@ def main():
                     pct(median([r["error"] / r["truth"] for r in sel])),
                     pct(median([r["truth_uncertainty"] / r["truth"] for r in sel]))))
         md.append("")
-    hardest = sorted([r for r in records if r["estimate"] == "calibrated3" and r["set"] == "calibration"],
-                     key=lambda r: r["error"] / r["bar"] if r["bar"] > 0 else math.inf, reverse=True)[:5]
-    md += ["## The calibrated3 cases closest to the bar, calibration set (the tests' cases)", "",
-           "| family | seed | load | value | bar | truth | true error / bar | observed order |",
-           "|---|---:|---:|---:|---:|---:|---:|---:|"]
-    for r in hardest:
-        md.append("| {} | {} | {:g} | {:.6f} | {:.6f} | {!r} | {:.2f} | {:.2f} |".format(
-            r["family"], r["seed"] + 100, r["load"], r["value"], r["bar"],
-            r["truth"], r["error"] / r["bar"] if r["bar"] > 0 else math.inf, r["order"]))
-    md += ["", "![true error against the estimate](estimate.png)", "",
+    for name in ("calibrated3", "gci3"):
+        hardest = sorted([r for r in records if r["estimate"] == name and r["set"] == "calibration"],
+                         key=lambda r: r["error"] / r["bar"] if r["bar"] > 0 else math.inf, reverse=True)[:5]
+        md += ["## The {} cases closest to the bar, calibration set (the tests' cases)".format(name), "",
+               "| family | seed | load | value | bar | truth | true error / bar | observed order |",
+               "|---|---:|---:|---:|---:|---:|---:|---:|"]
+        for r in hardest:
+            md.append("| {} | {} | {:g} | {:.6f} | {:.6f} | {!r} | {:.2f} | {:.2f} |".format(
+                r["family"], r["seed"] + 100, r["load"], r["value"], r["bar"],
+                r["truth"], r["error"] / r["bar"] if r["bar"] > 0 else math.inf, r["order"]))
+        md.append("")
+    md += ["![true error against the estimate](estimate.png)", "",
            ("Solves read back from raw.csv and holdout.csv (their first lines: the commit and date they were "
             "made at)." if args.reuse else "Solves: {:.0f} s.".format(elapsed)), "",
            "Made by `PYTHONPATH=build/release/python /usr/bin/python3 scripts/studies/error_bar.py --threads {} "
