@@ -36,6 +36,30 @@ GridConvergence grid_convergence_three(Real coarse, Real medium, Real fine) {
   return g;
 }
 
+GridConvergence grid_convergence_calibrated(Real coarse, Real medium, Real fine) {
+  const Real d21 = medium - coarse, d32 = fine - medium;
+  GridConvergence g;
+  g.grids = 3;
+  g.order = d21 * d32 > 0 ? std::log2(d21 / d32) : std::numeric_limits<Real>::quiet_NaN();
+  g.factor = kCalibratedThreeGridFactor;
+  // The formal order 1 (section 9.1): the coarse grids' apparent order is not kept by finer ones, and the
+  // order-1 extrapolate was the more accurate in the calibration study (docs/studies.md section 7).
+  g.value = 2 * fine - medium;
+  // The scale of the extrapolate's error: the last step, the step before as the order 1 carries it to the
+  // last (so that an anomalously small last step does not shrink the bar), and how much the order-1
+  // extrapolate itself moved between the two pairs (how far the grids are from the asymptotic range).
+  const Real scale = std::max({std::abs(d32), std::abs(d21) / 2, std::abs(2 * d32 - d21)});
+  g.error = g.factor * scale;
+  // The spread over plausible orders: the extrapolate at the observed one, when that is trusted.
+  if (g.order >= kSmallestTrustedOrder && g.order <= kLargestTrustedOrder)
+    g.error = std::max(g.error, std::abs(fine + d32 / (std::exp2(g.order) - 1) - g.value));
+  return g;
+}
+
+Real corrected_area_error(Real nodes, Real corrected) {
+  return kCalibratedCorrectionFactor * std::abs(nodes - corrected);
+}
+
 GridConvergence grid_convergence_two(Real medium, Real fine) {
   GridConvergence g;
   g.grids = 2;

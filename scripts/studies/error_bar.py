@@ -4,12 +4,18 @@
 Many periodic surfaces (Hurst 0.3-0.9, several seeds, two bands, isotropic and anisotropic), each generated on a
 coarse grid of `--base` points a side (its spectrum cut at that grid's Nyquist, so every finer grid is the same
 surface, Fourier-refined: docs/theory.md section 2), solved by the BEM at every load of 1e-4 ... 5e-2 on
-base, 2 base, ... up to `--truth` points a side. For every case (surface x load) and every error estimate of
-bem/grid_convergence.hpp (gci3: three grids n, 2n, 4n, the observed order clamped to [0.5, 1], Roache's factor
-1.25 within 10 % of order 1, else 3; gci2: two grids 2n, 4n at the formal order 1, factor 3), of variants that
-failed (gci3_roache: Roache's GCI at the observed order; gci3_fine: that bar on the 4n grid's count; gci_ext:
-the bar on the change of the order-1 extrapolates) and of the former |extrapolated - corrected(4n)|, the estimate
-made from the grids n = base is compared with the truth:
+base, 2 base, ... up to `--truth` points a side. Two sets of surfaces: the calibration set (seeds 101 ...
+100 + --seeds; raw.csv), on which the calibrated factors are chosen, and the hold-out set (the next
+--holdout-seeds seeds, with two more families; holdout.csv), which only checks them. For every case (surface x
+load) the estimates made from the grids base, 2 base, 4 base are compared with the truth:
+
+  calibrated3   bem/grid_convergence.hpp's calibrated bar on the order-1 extrapolate 2 f3 - f2 (its factor read
+                from the header);
+  corrected1    the one-grid bar on each grid's perimeter-corrected area, factor x |N - A_corrected|;
+  gci3, gci2    Roache's GCI as the code computes it (three grids, the order clamped to [0.5, 1], factor 1.25
+                within 10 % of order 1, else 3; two grids at order 1, factor 3);
+  variants that failed: gci3_roache (Roache's GCI at the observed order), gci3_fine (that bar on the 4n grid's
+  count), gci_ext3 (3 x the change of the order-1 extrapolates), former (|extrapolated - corrected(4n)|).
 
   truth = the three-grid Richardson extrapolation with the observed order from truth/4, truth/2 and truth
           points a side (when that order is outside [0.5, 2]: the order-1 extrapolation of the two finest);
@@ -17,12 +23,15 @@ made from the grids n = base is compared with the truth:
           extrapolation of the two finest, the perimeter-corrected area of the finest).
 
 Coverage = fraction of cases whose true error |value - truth| is inside the bar; over-estimation = bar / true
-error (median per load band). Writes results/studies/error_bar/{table.md, cases.csv, estimate.gp, estimate.png,
-estimate.svg}.
+error (median and 10 % / 90 % quantiles per load band), on the hold-out set with the shipped factors, on the
+calibration set (in sample), and by halves of the calibration set (the factor chosen on one seed, checked on
+the other). Writes results/studies/error_bar/{table.md, cases.csv, estimate.gp, estimate.png, estimate.svg}
+and, when it solves, raw.csv and holdout.csv.
 
-Usage: PYTHONPATH=build/release/python /usr/bin/python3 scripts/studies/error_bar.py [--threads 2]
-       [--base 64] [--truth 1024] [--seeds 2] [--reuse]
-(--reuse reads the solves back from cases.csv's raw columns, to redo the analysis without solving.)
+Usage: OMP_WAIT_POLICY=PASSIVE PYTHONPATH=build/release/python /usr/bin/python3 scripts/studies/error_bar.py
+       [--threads 2] [--base 64] [--truth 1024] [--seeds 2] [--holdout-seeds 2] [--reuse]
+(--reuse reads the solves back from raw.csv and holdout.csv where they exist and solves only the missing set,
+to redo the analysis without solving.)
 """
 import argparse
 import math
@@ -49,6 +58,12 @@ FAMILIES = [
     ("H0.9", 0.9, 4, 1.0, 1.0),
     ("H0.5 narrow", 0.5, 8, 0.5, 1.0),  # band qr = 8 q0 ... qs = Nyquist/2: fewer, larger spots
     ("H0.6 aniso 3", 0.6, 4, 1.0, 3.0),
+]
+# Families only the hold-out set has (nothing was calibrated on their kind): a narrow band at H 0.8, and an
+# anisotropy the other way round at H 0.4.
+HOLDOUT_FAMILIES = [
+    ("H0.8 narrow", 0.8, 8, 0.5, 1.0),
+    ("H0.4 aniso 1/2", 0.4, 4, 1.0, 0.5),
 ]
 
 
@@ -101,6 +116,71 @@ def gci2(medium, fine):
     """Two grids at the formal order 1 and factor 3: (value, bar)."""
     d = fine - medium
     return fine + d, FACTOR_TWO * abs(d)
+
+
+def header_constant(name):
+    """A constant of bem/grid_convergence.hpp, read from the header so that the study and the code cannot
+    disagree on the factor shipped."""
+    for line in open(os.path.join(ROOT, "bem", "grid_convergence.hpp")):
+        if "constexpr Real " + name + " =" in line:
+            return float(line.split("=")[1].strip().rstrip(";"))
+    raise RuntimeError(name + " not found in bem/grid_convergence.hpp")
+
+
+def calibrated_scale(coarse, medium, fine):
+    """The calibrated bar's scale, as bem/grid_convergence.cpp: the largest of the last step, half the step
+    before (order 1 carries it to the last) and the change of the order-1 extrapolate between the pairs."""
+    d21, d32 = medium - coarse, fine - medium
+    return max(abs(d32), abs(d21) / 2, abs(2 * d32 - d21))
+
+
+def order_spread(coarse, medium, fine):
+    """The distance from the order-1 extrapolate to the one at the observed order, when the counts converge
+    monotonically at an order in [0.5, 2]; else 0."""
+    d21, d32 = medium - coarse, fine - medium
+    if d21 * d32 > 0:
+        p = math.log(d21 / d32) / math.log(2)
+        if SMALLEST_ORDER <= p <= LARGEST_ORDER:
+            return abs(fine + d32 / (2**p - 1) - (2 * fine - medium))
+    return 0.0
+
+
+def calibrated3(coarse, medium, fine, factor):
+    """As bem/grid_convergence.cpp, grid_convergence_calibrated: value = 2 fine - medium (order 1), bar =
+    max(factor x scale, the order spread). (value, bar, observed order)."""
+    d21, d32 = medium - coarse, fine - medium
+    p = math.log(d21 / d32) / math.log(2) if d21 * d32 > 0 else math.nan
+    return (2 * fine - medium, max(factor * calibrated_scale(coarse, medium, fine),
+                                   order_spread(coarse, medium, fine)), p)
+
+
+def corrected_bar(nodes, corrected, factor):
+    """As bem/grid_convergence.cpp, corrected_area_error: the bar on one grid's perimeter-corrected area."""
+    return factor * abs(nodes - corrected)
+
+
+def needed_three_grid_factor(coarse, medium, fine, true):
+    """The least factor with which calibrated3's bar covers this case's truth (0 when the order spread does)."""
+    error = abs(2 * fine - medium - true)
+    if error <= order_spread(coarse, medium, fine):
+        return 0.0
+    scale = calibrated_scale(coarse, medium, fine)
+    return error / scale if scale > 0 else math.inf
+
+
+def needed_correction_factor(nodes, corrected, true):
+    """The least factor with which corrected1's bar covers this case's truth."""
+    scale = abs(nodes - corrected)
+    error = abs(corrected - true)
+    return error / scale if scale > 0 else (0.0 if error == 0 else math.inf)
+
+
+def round_up(x, digits=2):
+    """x rounded up to `digits` significant digits (the factors shipped)."""
+    if x <= 0 or x != x or x == math.inf:
+        return x
+    scale = 10 ** (math.floor(math.log10(x)) - digits + 1)
+    return math.ceil(x / scale - 1e-9) * scale
 
 
 # --- the solves ---
@@ -166,105 +246,214 @@ def main():
     parser.add_argument("--base", type=int, default=64)
     parser.add_argument("--truth", type=int, default=1024)
     parser.add_argument("--seeds", type=int, default=2)
+    parser.add_argument("--holdout-seeds", type=int, default=2)
     parser.add_argument("--reuse", action="store_true")
     args = parser.parse_args()
     os.chdir(ROOT)
     sys.path.insert(0, os.path.join(ROOT, "build", "release", "python"))
-    raw_path = os.path.join(OUT, "raw.csv")
+    # Two sets of surfaces, each in its own file of raw solves: the calibration set (seeds 101 ...) on which
+    # factors are chosen, and the hold-out set (the seeds after those) that only checks them.
+    sets = [("raw.csv", FAMILIES, range(1, args.seeds + 1)),
+            ("holdout.csv", FAMILIES + HOLDOUT_FAMILIES, range(args.seeds + 1, args.seeds + args.holdout_seeds + 1))]
     cases = {}  # (family name, seed) -> {n: [(nodes, corrected, converged) per load]}
     started = time.time()
-    if args.reuse and os.path.exists(raw_path):
-        for line in open(raw_path):
-            if line.startswith("#") or line.startswith("family"):
-                continue
-            f, seed, n, k, nodes, corr, conv = line.strip().split(",")
-            cases.setdefault((f, int(seed)), {}).setdefault(int(n), [None] * len(LOADS))[int(k)] = (
-                float(nodes), float(corr), conv == "1")
-    else:
+    for file_name, families, seeds in sets:
+        raw_path = os.path.join(OUT, file_name)
+        if args.reuse and os.path.exists(raw_path):
+            for line in open(raw_path):
+                if line.startswith("#") or line.startswith("family"):
+                    continue
+                f, seed, n, k, nodes, corr, conv = line.strip().split(",")
+                cases.setdefault((f, int(seed)), {}).setdefault(int(n), [None] * len(LOADS))[int(k)] = (
+                    float(nodes), float(corr), conv == "1")
+            continue
+        if not seeds:
+            continue
         import contactbench as cb
-        for family in FAMILIES:
-            for seed in range(1, args.seeds + 1):
+        solved = {}
+        for family in families:
+            for seed in seeds:
                 t0 = time.time()
-                cases[(family[0], seed)] = solve_case(cb, family, 100 + seed, args.base, args.truth, args.threads)
-                print("{} seed {}: {:.0f} s".format(family[0], seed, time.time() - t0), file=sys.stderr)
-        raw = ["# error_bar study raw solves: scripts/studies/error_bar.py ({})".format(stamp()),
+                solved[(family[0], seed)] = solve_case(cb, family, 100 + seed, args.base, args.truth, args.threads)
+                print("{} seed {}: {:.0f} s".format(family[0], 100 + seed, time.time() - t0), file=sys.stderr)
+        raw = ["# error_bar study raw solves: scripts/studies/error_bar.py ({}, {} threads)".format(
+                   stamp(), args.threads),
                "family,seed,n,load_index,area_fraction_nodes,area_fraction_corrected,converged"]
-        for (f, seed), grids in cases.items():
+        for (f, seed), grids in solved.items():
             for n, rows in sorted(grids.items()):
                 for k, (nodes, corr, conv) in enumerate(rows):
                     raw.append("{},{},{},{},{!r},{!r},{}".format(f, seed, n, k, nodes, corr, int(conv)))
         write_atomically(raw_path, "\n".join(raw) + "\n")
+        cases.update(solved)
     elapsed = time.time() - started
-
-    estimates = ["gci3", "gci3_roache", "gci3_fine", "gci_ext3", "gci_ext1.25", "gci2", "former"]
-    records = []  # one per case and estimate
-    for (f, seed), grids in cases.items():
+    calibration_seeds = set(range(1, args.seeds + 1))
+    holdout_seeds = set(range(args.seeds + 1, args.seeds + args.holdout_seeds + 1))
+    base = args.base
+    estimate_grids = (base, 2 * base, 4 * base)
+    # One entry per case (surface x load): the grids' numbers, the truth, the set it belongs to.
+    case_rows = []
+    for (f, seed), grids in sorted(cases.items()):
         for k, load in enumerate(LOADS):
             true, true_unc, true_order = truth_of(grids, k, args.truth)
-            n = args.base
-            c, m, fi = grids[n][k][0], grids[2 * n][k][0], grids[4 * n][k][0]
-            vr, br, pr = gci3_roache(c, m, fi)
-            v2, b2 = gci2(m, fi)
-            v3, b3, p3 = gci3(c, m, fi)
-            ve, be3 = gci_extrapolates(c, m, fi, FACTOR_TWO)
-            _, be1 = gci_extrapolates(c, m, fi, FACTOR_THREE)
-            former_value = 2 * fi - m
-            former_bar = abs(former_value - grids[4 * n][k][1])
-            for name, value, bar, order in (("gci3", v3, b3, p3), ("gci3_roache", vr, br, pr),
-                                            ("gci3_fine", fi, br, pr), ("gci_ext3", ve, be3, math.nan),
-                                            ("gci_ext1.25", ve, be1, math.nan), ("gci2", v2, b2, math.nan),
-                                            ("former", former_value, former_bar, math.nan)):
-                err = abs(value - true)
-                records.append(dict(family=f, seed=seed, load=load, estimate=name, truth=true,
-                                    truth_uncertainty=true_unc, truth_order=true_order, value=value, bar=bar,
-                                    order=order, error=err, covered=err <= bar,
-                                    ratio=bar / err if err > 0 else math.inf))
+            case_rows.append(dict(family=f, seed=seed, load=load, k=k, grids=grids, truth=true,
+                                  truth_uncertainty=true_unc, truth_order=true_order,
+                                  set="calibration" if seed in calibration_seeds else "holdout"))
 
+    def counts(case, column=0):
+        return [case["grids"][n][case["k"]][column] for n in estimate_grids]
+
+    # The factors: the least that covers every case of a set of seeds, rounded up to two digits (the rule the
+    # shipped constants of bem/grid_convergence.hpp were made by, on the whole calibration set).
+    def three_grid_factor(seeds):
+        return round_up(max(needed_three_grid_factor(*counts(c), c["truth"]) for c in case_rows
+                            if c["seed"] in seeds))
+
+    def correction_factor(seeds):
+        return round_up(max(needed_correction_factor(c["grids"][n][c["k"]][0], c["grids"][n][c["k"]][1],
+                                                     c["truth"])
+                            for c in case_rows if c["seed"] in seeds for n in estimate_grids))
+
+    shipped_three = header_constant("kCalibratedThreeGridFactor")
+    shipped_correction = header_constant("kCalibratedCorrectionFactor")
+    fitted_three, fitted_correction = three_grid_factor(calibration_seeds), correction_factor(calibration_seeds)
+
+    def case_estimates(c, three_factor, correction):
+        """(name, value, bar, order) of every estimate on this case."""
+        co, me, fi = counts(c)
+        out = [("calibrated3",) + calibrated3(co, me, fi, three_factor)]
+        for n in estimate_grids:
+            nodes, corrected = c["grids"][n][c["k"]][0], c["grids"][n][c["k"]][1]
+            out.append(("corrected1 n={}".format(n), corrected, corrected_bar(nodes, corrected, correction),
+                        math.nan))
+        out.append(("gci3",) + gci3(co, me, fi))
+        out.append(("gci3_roache",) + gci3_roache(co, me, fi))
+        out.append(("gci3_fine", fi) + gci3_roache(co, me, fi)[1:])
+        out.append(("gci_ext3",) + gci_extrapolates(co, me, fi, FACTOR_TWO) + (math.nan,))
+        out.append(("gci2",) + gci2(me, fi) + (math.nan,))
+        former_value = 2 * fi - me
+        out.append(("former", former_value, abs(former_value - c["grids"][4 * base][c["k"]][1]), math.nan))
+        return out
+
+    def make_records(selected, three_factor, correction):
+        records = []
+        for c in selected:
+            for name, value, bar, order in case_estimates(c, three_factor, correction):
+                err = abs(value - c["truth"])
+                records.append(dict(family=c["family"], seed=c["seed"], load=c["load"], set=c["set"],
+                                    estimate=name, truth=c["truth"], truth_uncertainty=c["truth_uncertainty"],
+                                    truth_order=c["truth_order"], value=value, bar=bar, order=order, error=err,
+                                    covered=err <= bar, ratio=bar / err if err > 0 else math.inf))
+        return records
+
+    records = make_records(case_rows, shipped_three, shipped_correction)
+
+    def band_rows(selected, name):
+        """Per load band and over all: (band, cases, coverage, median, q10, q90 of bar / true error, worst
+        true error / bar)."""
+        rows = []
+        for band, lo, hi in BANDS + [("all", 0, 1)]:
+            sel = [r for r in selected if r["estimate"] == name and lo <= r["load"] <= hi]
+            if not sel:
+                continue
+            ratios = [r["ratio"] for r in sel]
+            rows.append(("all" if band == "all" else "{} ({:g}-{:g})".format(band, lo, hi), len(sel),
+                         sum(r["covered"] for r in sel) / len(sel), median(ratios), quantile(ratios, 0.1),
+                         quantile(ratios, 0.9),
+                         max(r["error"] / r["bar"] if r["bar"] > 0 else math.inf for r in sel)))
+        return rows
+
+    def fmt(x):
+        return "{:.2f}".format(x) if x == x and x != math.inf else ("inf" if x == math.inf else "-")
+
+    families = sorted({c["family"] for c in case_rows})
     md = ["# Calibration of the BEM reference's error bar", "",
           "Surfaces generated on {0} points a side (L = 200 um, sigma = 0.5 um, spectrum cut at that grid's "
           "Nyquist or half of it), Fourier-refined; BEM (active_set, tolerance 1e-8) on {0} ... {1} points a side "
           "at P/(E* A0) = {2}. The estimates are made from the grids {0}, {3}, {4}; the truth is the three-grid "
-          "extrapolation from {5}, {6}, {1} (docs/studies.md). Families: {7}; seeds 101 ... {8}.".format(
-              args.base, args.truth, ", ".join("{:g}".format(l) for l in LOADS), 2 * args.base, 4 * args.base,
-              args.truth // 4, args.truth // 2, "; ".join(
+          "extrapolation from {5}, {6}, {1} (docs/studies.md). Calibration set (raw.csv): seeds 101 ... {7} of "
+          "{8}. Hold-out set (holdout.csv, never used to choose anything): seeds {9} ... {10} of those families "
+          "and of {11}.".format(
+              base, args.truth, ", ".join("{:g}".format(l) for l in LOADS), 2 * base, 4 * base,
+              args.truth // 4, args.truth // 2, 100 + args.seeds, "; ".join(
                   "{} (H {}, qr {} q0, qs {} x Nyquist, m2x/m2y {})".format(*fam) for fam in FAMILIES),
-              100 + args.seeds), ""]
-    md += ["## Coverage and over-estimation per load band", "",
-           "| estimate | load band | cases | coverage | median bar / true error | worst true error / bar | "
-           "median true error | median truth uncertainty |", "|---|---|---:|---:|---:|---:|---:|---:|"]
-    for name in estimates:
-        for band, lo, hi in BANDS + [("all", 0, 1)]:
-            sel = [r for r in records if r["estimate"] == name and lo <= r["load"] <= hi]
-            cov = sum(r["covered"] for r in sel) / len(sel)
-            ratios = sorted(r["ratio"] for r in sel)
-            worst = max(r["error"] / r["bar"] if r["bar"] > 0 else math.inf for r in sel)
-            md.append("| {} | {} | {} | {:.1f} % | {:.2f} | {:.2f} | {} | {} |".format(
-                name, band if band == "all" else "{} ({:g}-{:g})".format(band, lo, hi), len(sel), 100 * cov,
-                median(ratios), worst, pct(median([r["error"] / r["truth"] for r in sel])),
-                pct(median([r["truth_uncertainty"] / r["truth"] for r in sel]))))
+              101 + args.seeds, 100 + args.seeds + args.holdout_seeds, "; ".join(
+                  "{} (H {}, qr {} q0, qs {} x Nyquist, m2x/m2y {})".format(*fam) for fam in HOLDOUT_FAMILIES)),
+          "",
+          "Estimates: `calibrated3` (the code's default: bem/grid_convergence.hpp, value 2 f3 - f2, bar max(K "
+          "max(|f3 - f2|, |f2 - f1|/2, |(2 f3 - f2) - (2 f2 - f1)|), |E_p - (2 f3 - f2)|) with K = {0:g}); "
+          "`corrected1 n=...` (the perimeter-corrected area of one grid, bar K' |N - A_corrected| with K' = "
+          "{1:g}); `gci3`, `gci2` (Roache's GCI, kept as choices); the variants that failed (`gci3_roache`, "
+          "`gci3_fine`, `gci_ext3`) and the former |extrapolated - corrected(4n)|. Coverage: the share of cases "
+          "whose true error is inside the bar; over-estimation: bar / true error (median, and the 10 % and 90 % "
+          "quantiles).".format(shipped_three, shipped_correction), ""]
+    md += ["## The calibrated factors", "",
+           "The least factor that covers every case of the calibration set, rounded up to two digits: "
+           "K = {} (shipped: {}), K' = {} over the grids {} (shipped: {}).".format(
+               fmt(fitted_three), shipped_three, fmt(fitted_correction),
+               ", ".join(str(n) for n in estimate_grids), shipped_correction), ""]
+    # Out of sample by halves: the factor chosen on one seed of the calibration set, checked on the other.
+    md += ["## Out of sample by halves of the calibration set", "",
+           "The split fixed before looking: the factor chosen on the surfaces of one seed (all families), "
+           "checked on those of the other.", "",
+           "| estimate | factor chosen on | factor | checked on | load band | cases | coverage | "
+           "median bar / true error | 10 % | 90 % | worst true error / bar |",
+           "|---|---|---:|---|---|---:|---:|---:|---:|---:|---:|"]
+    for train in sorted(calibration_seeds):
+        test = calibration_seeds - {train}
+        k3, kc = three_grid_factor({train}), correction_factor({train})
+        half = make_records([c for c in case_rows if c["seed"] in test], k3, kc)
+        for name, factor in [("calibrated3", k3)] + [("corrected1 n={}".format(n), kc) for n in estimate_grids]:
+            for band, n_cases, cov, med, q10, q90, worst in band_rows(half, name):
+                md.append("| {} | seed {} | {:g} | seed{} {} | {} | {} | {:.1f} % | {} | {} | {} | {} |".format(
+                    name, 100 + train, factor, "s" if len(test) > 1 else "",
+                    ", ".join(str(100 + t) for t in sorted(test)), band, n_cases, 100 * cov, fmt(med),
+                    fmt(q10), fmt(q90), fmt(worst)))
     md.append("")
-    hardest = sorted([r for r in records if r["estimate"] == "gci3"], key=lambda r: r["bar"] / max(r["error"], 1e-300))[:5]
-    md += ["## The gci3 cases closest to the bar (the tests' cases)", "",
-           "| family | seed | load | value | bar | truth | true error / bar | observed order |",
-           "|---|---:|---:|---:|---:|---:|---:|---:|"]
-    for r in hardest:
-        md.append("| {} | {} | {:g} | {:.6f} | {:.6f} | {:.6f} | {:.2f} | {:.2f} |".format(
-            r["family"], r["seed"] + 100, r["load"], r["value"], r["bar"],
-            r["truth"], r["error"] / r["bar"] if r["bar"] > 0 else math.inf, r["order"]))
-    md += ["", "![true error against the estimate](estimate.png)", "",
-           ("Solves read back from raw.csv (its first line: the commit and date they were made at)." if args.reuse
-            else "Solves: {:.0f} s.".format(elapsed)), "",
+    estimates = ["calibrated3"] + ["corrected1 n={}".format(n) for n in estimate_grids] + [
+        "gci3", "gci3_roache", "gci3_fine", "gci_ext3", "gci2", "former"]
+    for set_name, title in (("holdout", "Hold-out set (out of sample: the shipped factors)"),
+                            ("calibration", "Calibration set (in sample for calibrated3 and corrected1)")):
+        selected = [r for r in records if r["set"] == set_name]
+        if not selected:
+            continue
+        md += ["## " + title, "",
+               "| estimate | load band | cases | coverage | median bar / true error | 10 % | 90 % | "
+               "worst true error / bar | median true error | median truth uncertainty |",
+               "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+        for name in estimates:
+            for band, n_cases, cov, med, q10, q90, worst in band_rows(selected, name):
+                lo, hi = next(((l, h) for b, l, h in BANDS if band.startswith(b)), (0, 1))
+                sel = [r for r in selected if r["estimate"] == name and lo <= r["load"] <= hi]
+                md.append("| {} | {} | {} | {:.1f} % | {} | {} | {} | {} | {} | {} |".format(
+                    name, band, n_cases, 100 * cov, fmt(med), fmt(q10), fmt(q90), fmt(worst),
+                    pct(median([r["error"] / r["truth"] for r in sel])),
+                    pct(median([r["truth_uncertainty"] / r["truth"] for r in sel]))))
+        md.append("")
+    for name in ("calibrated3", "gci3"):
+        hardest = sorted([r for r in records if r["estimate"] == name and r["set"] == "calibration"],
+                         key=lambda r: r["error"] / r["bar"] if r["bar"] > 0 else math.inf, reverse=True)[:5]
+        md += ["## The {} cases closest to the bar, calibration set (the tests' cases)".format(name), "",
+               "| family | seed | load | value | bar | truth | true error / bar | observed order |",
+               "|---|---:|---:|---:|---:|---:|---:|---:|"]
+        for r in hardest:
+            md.append("| {} | {} | {:g} | {:.6f} | {:.6f} | {!r} | {:.2f} | {:.2f} |".format(
+                r["family"], r["seed"] + 100, r["load"], r["value"], r["bar"],
+                r["truth"], r["error"] / r["bar"] if r["bar"] > 0 else math.inf, r["order"]))
+        md.append("")
+    md += ["![true error against the estimate](estimate.png)", "",
+           ("Solves read back from raw.csv and holdout.csv (their first lines: the commit and date they were "
+            "made at)." if args.reuse else "Solves: {:.0f} s.".format(elapsed)), "",
            "Made by `PYTHONPATH=build/release/python /usr/bin/python3 scripts/studies/error_bar.py --threads {} "
-           "--base {} --truth {} --seeds {}{}` ({}, {} threads).".format(
-               args.threads, args.base, args.truth, args.seeds, " --reuse" if args.reuse else "", stamp(),
-               args.threads), ""]
+           "--base {} --truth {} --seeds {} --holdout-seeds {}{}` ({}, {} threads).".format(
+               args.threads, base, args.truth, args.seeds, args.holdout_seeds, " --reuse" if args.reuse else "",
+               stamp(), args.threads), ""]
     write_atomically(os.path.join(OUT, "table.md"), "\n".join(md))
     csv = ["# error_bar study: scripts/studies/error_bar.py ({})".format(stamp()),
-           "family,seed,load,estimate,value,bar,order,truth,truth_uncertainty,truth_order,true_error,covered"]
+           "family,seed,load,estimate,value,bar,order,truth,truth_uncertainty,truth_order,true_error,covered,set"]
     for r in records:
-        csv.append("{},{},{:g},{},{!r},{!r},{!r},{!r},{!r},{!r},{!r},{}".format(
+        csv.append("{},{},{:g},{},{!r},{!r},{!r},{!r},{!r},{!r},{!r},{},{}".format(
             r["family"], r["seed"] + 100, r["load"], r["estimate"], r["value"], r["bar"], r["order"], r["truth"],
-            r["truth_uncertainty"], r["truth_order"], r["error"], int(r["covered"])))
+            r["truth_uncertainty"], r["truth_order"], r["error"], int(r["covered"]), r["set"]))
     write_atomically(os.path.join(OUT, "cases.csv"), "\n".join(csv) + "\n")
     script = """# Made by scripts/studies/error_bar.py: `gnuplot estimate.gp` in this folder redraws from cases.csv.
 set datafile separator ','
@@ -274,19 +463,35 @@ set xlabel 'error bar (estimate) in A/A0'
 set ylabel 'true error |value - truth| in A/A0'
 set key top left
 set grid
-set title 'BEM reference: true error against its error bar, base grid {base}, truth {truth}'
+set title 'BEM reference: true error against its error bar, grids {base}/{b2}/{b4}, truth {truth}'
 do for [t in "pngcairo svg"] {{
   if (t eq "pngcairo") {{ set terminal pngcairo noenhanced size 900,750 font ',11'; set output 'estimate.png' }}
   else {{ set terminal svg noenhanced size 900,750 dynamic font ',11'; set output 'estimate.svg' }}
   plot [1e-6:1] [1e-7:1] x with lines lc rgb 'black' title 'true error = bar', \\
-       'cases.csv' using (strcol(4) eq 'gci3' ? $6 : NaN):11 with points pt 7 ps 0.8 title 'gci3', \\
-       'cases.csv' using (strcol(4) eq 'gci2' ? $6 : NaN):11 with points pt 5 ps 0.6 title 'gci2', \\
-       'cases.csv' using (strcol(4) eq 'former' ? $6 : NaN):11 with points pt 2 ps 0.8 title 'former |ext - corrected|'
+       'cases.csv' using (strcol(4) eq 'calibrated3' && strcol(13) eq 'calibration' ? $6 : NaN):11 with points pt 7 ps 0.8 lc rgb '#1f77b4' title 'calibrated3, calibration set', \\
+       'cases.csv' using (strcol(4) eq 'calibrated3' && strcol(13) eq 'holdout' ? $6 : NaN):11 with points pt 5 ps 0.8 lc rgb '#d62728' title 'calibrated3, hold-out set', \\
+       'cases.csv' using (strcol(4) eq 'corrected1 n={b4}' ? $6 : NaN):11 with points pt 4 ps 0.7 lc rgb '#2ca02c' title 'corrected area n={b4}, one grid (both sets)', \\
+       'cases.csv' using (strcol(4) eq 'gci3' ? $6 : NaN):11 with points pt 2 ps 0.7 lc rgb '#7f7f7f' title 'gci3 (both sets)'
 }}
 unset output
-""".format(base=args.base, truth=args.truth)
+""".format(base=base, b2=2 * base, b4=4 * base, truth=args.truth)
     gnuplot(script, OUT, "estimate")
     print("\n".join(md))
+
+
+def quantile(values, q):
+    """The q quantile (linear between order statistics; inf counts as the largest)."""
+    values = sorted(v for v in values if v == v)
+    if not values:
+        return math.nan
+    x = q * (len(values) - 1)
+    i = int(math.floor(x))
+    if i + 1 >= len(values):
+        return values[-1]
+    lo, hi = values[i], values[i + 1]
+    if hi == math.inf:
+        return lo if x == i else math.inf
+    return lo + (x - i) * (hi - lo)
 
 
 def median(values):
