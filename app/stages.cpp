@@ -81,7 +81,7 @@ std::string BemStage::name() const {
     text << ", then the approach-retract path " << approach_retract->start << " -> " << approach_retract->turn
          << " m in " << approach_retract->steps << " steps a leg";
   if (settings.extrapolate) text << ", again on twice the points a side for the extrapolated area";
-  if (settings.extrapolate && settings.error_estimate == ErrorEstimate::gci3)
+  if (settings.extrapolate && uses_third_grid(settings.error_estimate))
     text << " and on a third grid for its error bar";
   if (!load_path.empty())
     text << ", along the load path as listed (" << load_path.size() << " steps)"
@@ -171,7 +171,7 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
     products.fine_statistics = std::move(fine_loads.statistics);
     products.fine_adhesive = std::move(fine_loads.adhesive);
     products.bytes_per_rank = std::max(products.bytes_per_rank, fine_loads.bytes_per_rank);
-    if (stage.settings.error_estimate == ErrorEstimate::gci3) {
+    if (uses_third_grid(stage.settings.error_estimate)) {
       // The third grid of the error bar (docs/theory.md section 9.2): half the first grid when that still
       // holds the scene's surface, else twice the finer one.
       const bool coarser = third_grid_is_coarser(nx, ny, surface.grid().nx, surface.grid().ny);

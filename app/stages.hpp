@@ -86,8 +86,8 @@ struct BemProducts {
   std::vector<AdhesiveLoad> fine_adhesive;
   std::map<int, std::vector<ContactStatistics>> fine_statistics;  // by connectivity
   Index fine_points = 0;
-  // With error_estimate = "gci3" as well: a third grid, half the first or twice the finer (points a side
-  // third_nx x third_ny; bem_settings.hpp third_grid_is_coarser).
+  // With error_estimate = "calibrated3" or "gci3" as well: a third grid, half the first or twice the finer
+  // (points a side third_nx x third_ny; bem_settings.hpp third_grid_is_coarser).
   std::vector<ContactSolution> third_solutions;
   std::map<int, std::vector<ContactStatistics>> third_statistics;  // by connectivity
   Index third_nx = 0, third_ny = 0;

@@ -20,6 +20,7 @@
 #include "contactbench/app/scene_run.hpp"
 #include "contactbench/app/surface_source.hpp"
 #include "contactbench/app/unconverged.hpp"
+#include "contactbench/bem/grid_convergence.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/topography_io.hpp"
 #include "small_scene.hpp"
@@ -257,7 +258,13 @@ method = "gw_mccool"
   EXPECT_EQ(bem.note, "");
   EXPECT_EQ(bem.curve.converged, (std::vector<bool>{true, true}));
   EXPECT_EQ(bem.curve.area_fraction_nodes.size(), 2u);
-  EXPECT_TRUE(bem.curve.area_fraction_error.empty());  // no extrapolation: no error estimate
+  // No extrapolation: the compared perimeter-corrected area carries its one-grid calibrated bar K' |N -
+  // A_corrected| (docs/theory.md section 9.2; the surface is periodic, no hardness or adhesion). Tolerance
+  // 1e-15: the same product of the same numbers.
+  ASSERT_EQ(bem.curve.area_fraction_error.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k)
+    EXPECT_NEAR(bem.curve.area_fraction_error[k],
+                corrected_area_error(bem.curve.area_fraction_nodes[k], bem.curve.area_fraction[k]), 1e-15);
   EXPECT_EQ(report.methods[1].note, "Hertz-consistent plateaus, this project");
   EXPECT_TRUE(report.methods[2].curve.converged.empty());  // a theory does not iterate
   EXPECT_TRUE(describe_unconverged(report).empty());

@@ -87,7 +87,12 @@ class BemMethod final : public Method {
     if (settings_.node_area)
       return "area_fraction_nodes (contact nodes / all nodes, as a node-based finite-element model reports "
              "it; area = \"nodes\")";
-    if (settings_.extrapolate && settings_.error_estimate == ErrorEstimate::gci3)
+    if (settings_.extrapolate && settings_.error_estimate == ErrorEstimate::calibrated3)
+      return "area_fraction_extrapolated (the node counts on three grids, Richardson-extrapolated at order "
+             "1; "
+             "its error bar, calibrated on the BEM's grid sequences, is area_fraction_error; docs/theory.md "
+             "section 9.2)";
+    if (settings_.extrapolate && uses_third_grid(settings_.error_estimate))
       return "area_fraction_extrapolated (the node counts on three grids, Richardson-extrapolated at the "
              "observed "
              "order; its error bar, Roache's grid convergence index, is area_fraction_error; docs/theory.md "
@@ -97,7 +102,8 @@ class BemMethod final : public Method {
              "Richardson-extrapolated at order 1; its error bar, the two-grid GCI, is area_fraction_error; "
              "docs/theory.md section 9.2)";
     return "area_fraction_corrected (contact nodes less the perimeter band of Yastrebov, Anciaux and "
-           "Molinari 2017; the node count is area_fraction_nodes)";
+           "Molinari 2017; the node count is area_fraction_nodes; on a periodic surface without hardness or "
+           "adhesion its calibrated error bar is area_fraction_error, docs/theory.md section 9.2)";
   }
 
   // Its keys are declared once, in app/methods/bem_settings.cpp; read() adds what depends on the scene.
@@ -219,7 +225,7 @@ class BemMethod final : public Method {
       const Index nx = settings_.refine > 0 ? settings_.refine : grid.nx;
       const Index ny = settings_.refine > 0 ? settings_.refine : grid.ny;
       const bool third_finer =
-          settings_.error_estimate == ErrorEstimate::gci3 && !third_grid_is_coarser(nx, ny, grid.nx, grid.ny);
+          uses_third_grid(settings_.error_estimate) && !third_grid_is_coarser(nx, ny, grid.nx, grid.ny);
       if (!grid.periodic)
         check.problem("extrapolate",
                       "the second solve, on twice the points a side, needs Fourier refinement, which needs a "
@@ -313,6 +319,12 @@ class BemMethod final : public Method {
     }
     if (settings_.extrapolate) extrapolate(products, curve);
     if (settings_.node_area) curve.area_fraction = nodes;
+    // The compared perimeter-corrected area's own bar (docs/theory.md section 9.2), where it was calibrated:
+    // periodic, without hardness or adhesion (scripts/studies/error_bar.py).
+    if (!settings_.extrapolate && !settings_.node_area && products.periodic && !products.hardness &&
+        !products.adhesion)
+      for (std::size_t k = 0; k < nodes.size(); ++k)
+        curve.area_fraction_error.push_back(corrected_area_error(nodes[k], corrected[k]));
     curve.area_fraction_nodes = nodes;
     curve.accepts_unconverged = settings_.allow_unconverged;
     BemStage stage{.settings = settings_,
@@ -330,7 +342,14 @@ class BemMethod final : public Method {
         "-connectivity";
     if (settings_.extrapolate)
       curve.parameters +=
-          settings_.error_estimate == ErrorEstimate::gci3
+          settings_.error_estimate == ErrorEstimate::calibrated3
+              ? "; area Richardson-extrapolated at order 1 from the node counts on three grids (" +
+                    std::to_string(products.third_nx * products.third_ny) + ", " +
+                    std::to_string(products.points) + " and " + std::to_string(products.fine_points) +
+                    " nodes), error bar calibrated on the BEM's grid sequences (columns observed_order, "
+                    "safety_factor; docs/theory.md section 9.2); spots and separation of the grid on " +
+                    std::to_string(products.fine_points) + " nodes"
+          : uses_third_grid(settings_.error_estimate)
               ? "; area Richardson-extrapolated at the observed order from the node counts on three grids (" +
                     std::to_string(products.third_nx * products.third_ny) + ", " +
                     std::to_string(products.points) + " and " + std::to_string(products.fine_points) +
@@ -428,7 +447,7 @@ class BemMethod final : public Method {
     const Grid& grid = check.surface.grid();
     const Index nx = settings_.refine > 0 ? settings_.refine : grid.nx;
     const Index ny = settings_.refine > 0 ? settings_.refine : grid.ny;
-    const bool third_finer = settings_.extrapolate && settings_.error_estimate == ErrorEstimate::gci3 &&
+    const bool third_finer = settings_.extrapolate && uses_third_grid(settings_.error_estimate) &&
                              !third_grid_is_coarser(nx, ny, grid.nx, grid.ny);
     const Index side = third_finer ? 4 : settings_.extrapolate || settings_.mirrored ? 2 : 1;
     const bool periodic = settings_.mirrored || settings_.periodic.value_or(grid.periodic);
@@ -489,7 +508,7 @@ class BemMethod final : public Method {
   void extrapolate(const BemProducts& products, MethodCurve& curve) const {
     const std::vector<ContactStatistics>& coarse = products.statistics.at(settings_.connectivity);
     const std::vector<ContactStatistics>& fine = products.fine_statistics.at(settings_.connectivity);
-    const bool three = settings_.error_estimate == ErrorEstimate::gci3;
+    const bool three = uses_third_grid(settings_.error_estimate);
     const bool third_coarser = three && products.third_nx * products.third_ny < products.points;
     const Real nan = std::numeric_limits<Real>::quiet_NaN();
     std::vector<Real> fine_nodes, fine_corrected, extrapolated, error, fine_iterations, order, factor,
@@ -503,8 +522,11 @@ class BemMethod final : public Method {
         g = grid_convergence_two(coarse[k].area_fraction, fine[k].area_fraction);
       } else {
         const Real third = products.third_statistics.at(settings_.connectivity)[k].area_fraction;
-        g = third_coarser ? grid_convergence_three(third, coarse[k].area_fraction, fine[k].area_fraction)
-                          : grid_convergence_three(coarse[k].area_fraction, fine[k].area_fraction, third);
+        const auto three_grids = settings_.error_estimate == ErrorEstimate::calibrated3
+                                     ? grid_convergence_calibrated
+                                     : grid_convergence_three;
+        g = third_coarser ? three_grids(third, coarse[k].area_fraction, fine[k].area_fraction)
+                          : three_grids(coarse[k].area_fraction, fine[k].area_fraction, third);
       }
       fine_nodes.push_back(fine[k].area_fraction);
       fine_corrected.push_back(fine[k].area_fraction_corrected);

@@ -13,9 +13,14 @@
 
 namespace contactbench {
 
-// With extrapolate = true, the grids behind the reference's error bar (bem/grid_convergence.hpp): two, or
-// three.
-enum class ErrorEstimate { gci2, gci3 };
+// With extrapolate = true, the reference's error bar (bem/grid_convergence.hpp): Roache's GCI on two or three
+// grids, or the bar calibrated on three (docs/theory.md section 9.2).
+enum class ErrorEstimate { gci2, gci3, calibrated3 };
+
+// The estimates that need a third grid.
+inline bool uses_third_grid(ErrorEstimate estimate) {
+  return estimate != ErrorEstimate::gci2;
+}
 
 struct BemSettings {
   Index refine = 0;              // points a side after Fourier refinement; 0: the scene's surface as it is
@@ -35,9 +40,10 @@ struct BemSettings {
 
 const SettingTable<BemSettings>& bem_settings();
 
-// error_estimate = "gci3": the third grid is half the solved grid when the scene's surface has at most that
-// many points a side (the same band-limited surface, and a quarter of the solve's cost more), else twice the
-// finer grid (16 times the single solve more). `solved_*` are the points a side of the first solve.
+// error_estimate = "calibrated3" or "gci3": the third grid is half the solved grid when the scene's surface
+// has at most that many points a side (the same band-limited surface, and a quarter of the solve's cost
+// more), else twice the finer grid (16 times the single solve more). `solved_*` are the points a side of the
+// first solve.
 inline bool third_grid_is_coarser(Index solved_nx, Index solved_ny, Index surface_nx, Index surface_ny) {
   return solved_nx % 2 == 0 && solved_ny % 2 == 0 && solved_nx / 2 >= surface_nx &&
          solved_ny / 2 >= surface_ny;
