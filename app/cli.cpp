@@ -100,7 +100,9 @@ int run_cli(int argc, char** argv) {
                                   : "'" + command + "' has no distributed stages (run, bem and sweep have)")
                 << ": each rank would run the whole command and write the same files. Run it as one "
                    "process (docs/mpi.md)\n";
-    return 1;
+    // Only rank 0 fails: a rank that exits with an error makes mpiexec kill the others, rank 0 too, at times
+    // before it has said why (seen under load); the job's status is rank 0's either way.
+    return launch.rank == 0 ? 1 : 0;
   }
   return parse_and_run();
 }
