@@ -16,6 +16,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 preset=${1:-release}
 jobs=$(nproc)
+# Every stage says when it ends and how long the whole run has taken, so a slow CI run shows where its time went.
+stage_done() { echo "test.sh: $1 done at $(date -u +%H:%M:%S), $((SECONDS / 60)) min $((SECONDS % 60)) s since the start"; }
 
 # Builds a preset and runs its suite. With "again" (CI, after the release suite): without the benchmark
 # harnesses, which no test runs, and without the source checks (formatting, layering), which do not depend on
@@ -28,6 +30,7 @@ run_suite() {
   fi
   cmake --preset "$name" "${configure[@]}"
   cmake --build --preset "$name" -j "$jobs"
+  stage_done "build of preset $name"
   case "$name" in
     asan)
       # The Python module under AddressSanitizer: the interpreter is not instrumented, so the ASan runtime
@@ -49,6 +52,7 @@ run_suite() {
       ctest --preset "$name" -j "$jobs" -E "$skip"
       ;;
   esac
+  stage_done "suite of preset $name"
 }
 
 scripts/install-deps.sh
@@ -56,6 +60,7 @@ run_suite "$preset"
 
 if [[ "${CB_CI:-}" == "1" ]]; then
   scripts/test-wheel.sh  # a wheel built from the tree, installed into a fresh venv, python/tests run against it
+  stage_done "the wheel's suite"
   if [[ "${CB_CI_ASAN:-}" == "1" && "$preset" != "asan" ]]; then
     echo "test.sh: CI: the suite under AddressSanitizer + UBSan"
     run_suite asan again
@@ -67,4 +72,5 @@ if [[ "${CB_CI:-}" == "1" ]]; then
   echo "test.sh: CI: a short fuzz run of every parser"
   scripts/install-deps.sh fuzz
   scripts/fuzz.sh "${CB_FUZZ_SECONDS:-15}"
+  stage_done "fuzz run"
 fi
