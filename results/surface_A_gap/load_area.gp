@@ -1,65 +1,272 @@
 # Made by contactbench run (app/load_area_plots.cpp): `gnuplot load_area.gp` in this folder redraws
-# the plots from curves.csv.
-set datafile separator ','
-set datafile missing ''
-set terminal pngcairo noenhanced size 1400,600 font ',11'
+# the plots; the data blocks below are the curves of curves.csv (load, A/A0, A/A0 -+ its error estimate,
+# A/A_ref - 1, the reference's relative error estimate).
+$method0 << EOD
+1e-04 0.0015926361083984375 0.0010347366333007812 0.0021505355834960938 0 0.3502994011976048
+0.00016187677556400663 0.00247955322265625 0.0016326904296875 0.003326416015625 0 0.3415384615384615
+0.00026204090466999767 0.0039501190185546875 0.0034720897674560547 0.00442814826965332 0 0.1210164171897634
+0.00042418336713854457 0.00605798736820376 0.004101792002111915 0.008014182734295605 0 0.3229117604898327
+0.000686654357202708 0.009937286376953125 0.007717132568359375 0.012157440185546875 0 0.2234165067178503
+0.0011115339327094997 0.015974044799804688 0.012526512145996094 0.01942157745361328 0 0.21582089552238806
+0.0017993152895699328 0.025804519653320312 0.02010822296142578 0.031500816345214844 0 0.22074802276591027
+0.002912673572985976 0.04141044616699219 0.033219337463378906 0.04960155487060547 0 0.19780295702639214
+0.004714942062654641 0.06608390808105469 0.05334949493408203 0.07881832122802734 0 0.19270066672439173
+0.007632396180736398 0.10508537292480469 0.0857248306274414 0.12444591522216797 0 0.18423631908521645
+0.012355076835646465 0.16579246520996094 0.1391134262084961 0.19247150421142578 0 0.1609182839984814
+0.02 0.2581920623779297 0.24257445335388184 0.27380967140197754 0 0.06048833910775891
+EOD
+$method1 << EOD
+1e-04 0.0027008056640625 NaN NaN 0.6958083832335329 0.3502994011976048
+0.00016187677556400663 0.00439453125 NaN NaN 0.7723076923076924 0.3415384615384615
+0.00026204090466999767 0.006866455078125 NaN NaN 0.7382906808305167 0.1210164171897634
+0.00042418336713854457 0.01068115234375 NaN NaN 0.7631519669076241 0.3229117604898327
+0.000686654357202708 0.016815185546875 NaN NaN 0.692130518234165 0.2234165067178503
+0.0011115339327094997 0.0271148681640625 NaN NaN 0.6974328358208954 0.21582089552238806
+0.0017993152895699328 0.0449371337890625 NaN NaN 0.7414443048266686 0.22074802276591027
+0.002912673572985976 0.072967529296875 NaN NaN 0.7620561005941688 0.19780295702639214
+0.004714942062654641 0.114898681640625 NaN NaN 0.7386786734782231 0.19270066672439173
+0.007632396180736398 0.1777496337890625 NaN NaN 0.6914783555676558 0.18423631908521645
+0.012355076835646465 0.278472900390625 NaN NaN 0.6796475041128356 0.1609182839984814
+0.02 0.4266204833984375 NaN NaN 0.6523377189418396 0.06048833910775891
+EOD
+$method2 << EOD
+1e-04 0.0029754638671875 NaN NaN 0.8682634730538923 0.3502994011976048
+0.00016187677556400663 0.0047149658203125 NaN NaN 0.9015384615384616 0.3415384615384615
+0.00026204090466999767 0.007171630859375 NaN NaN 0.8155480444229841 0.1210164171897634
+0.00042418336713854457 0.0113983154296875 NaN NaN 0.8815350275428502 0.3229117604898327
+0.000686654357202708 0.0182342529296875 NaN NaN 0.834932821497121 0.2234165067178503
+0.0011115339327094997 0.0299835205078125 NaN NaN 0.8770149253731343 0.21582089552238806
+0.0017993152895699328 0.05023193359375 NaN NaN 0.946633158400473 0.22074802276591027
+0.002912673572985976 0.0816802978515625 NaN NaN 0.9724563585279351 0.19780295702639214
+0.004714942062654641 0.1278228759765625 NaN NaN 0.934251161716743 0.19270066672439173
+0.007632396180736398 0.199951171875 NaN NaN 0.9027497958072421 0.18423631908521645
+0.012355076835646465 0.3130340576171875 NaN NaN 0.8881078655821819 0.1609182839984814
+0.02 0.482208251953125 NaN NaN 0.8676339137308207 0.06048833910775891
+EOD
+$method3 << EOD
+1e-04 0.0019683837890624996 NaN NaN 0.23592814371257465 0.3502994011976048
+0.00016187677556400663 0.0030136108398437496 NaN NaN 0.21538461538461529 0.3415384615384615
+0.00026204090466999767 0.004760742187499999 NaN NaN 0.20521487204249134 0.1210164171897634
+0.00042418336713854457 0.007316589355468748 NaN NaN 0.20775909733172226 0.3229117604898327
+0.000686654357202708 0.011909484863281248 NaN NaN 0.19846449136276378 0.2234165067178503
+0.0011115339327094997 0.019683837890624997 NaN NaN 0.232238805970149 0.21582089552238806
+0.0017993152895699328 0.03205871582031249 NaN NaN 0.2423682459900951 0.22074802276591027
+0.002912673572985976 0.05073547363281249 NaN NaN 0.2251853898945233 0.19780295702639214
+0.004714942062654641 0.07870483398437499 NaN NaN 0.19098334632147052 0.19270066672439173
+0.007632396180736398 0.12313079833984372 NaN NaN 0.17172157183047432 0.18423631908521645
+0.012355076835646465 0.19032287597656247 NaN NaN 0.14795853801640524 0.1609182839984814
+0.02 0.2807998657226562 NaN NaN 0.08756196118699511 0.06048833910775891
+EOD
+$method4 << EOD
+1e-04 0.0008208713712843679 NaN NaN -0.4845832221461812 0.3502994011976048
+0.00016187677556400663 0.0013047249096921284 NaN NaN -0.47380645119025644 0.3415384615384615
+0.00026204090466999767 0.002071245979995307 NaN NaN -0.4756497284597878 0.1210164171897634
+0.00042418336713854457 0.0032835449801165814 NaN NaN -0.45798088035793016 0.3229117604898327
+0.000686654357202708 0.005197187796880634 NaN NaN -0.47700130601709134 0.2234165067178503
+0.0011115339327094997 0.008211181305683357 NaN NaN -0.4859673045499563 0.21582089552238806
+0.0017993152895699328 0.012945809522205332 NaN NaN -0.4983123229523254 0.22074802276591027
+0.002912673572985976 0.020360271008979466 NaN NaN -0.5083300738447871 0.19780295702639214
+0.004714942062654641 0.0319281157793797 NaN NaN -0.5168549090616958 0.19270066672439173
+0.007632396180736398 0.04989415839697745 NaN NaN -0.5252035843972318 0.18423631908521645
+0.012355076835646465 0.07764109873050196 NaN NaN -0.5316970609479952 0.1609182839984814
+0.02 0.12019289411158277 NaN NaN -0.5344826134288748 0.06048833910775891
+EOD
+$method5 << EOD
+1e-04 0.000891992891303061 NaN NaN -0.43992674371796503 0.3502994011976048
+0.00016187677556400663 0.0014213417232534513 NaN NaN -0.4267750696914573 0.3415384615384615
+0.00026204090466999767 0.0022622954116904544 NaN NaN -0.4272842410408667 0.1210164171897634
+0.00042418336713854457 0.0035962442535109615 NaN NaN -0.40636319706006985 0.3229117604898327
+0.000686654357202708 0.005708480779414322 NaN NaN -0.42554933380468785 0.2234165067178503
+0.0011115339327094997 0.009046267584361157 NaN NaN -0.43368960725139793 0.21582089552238806
+0.0017993152895699328 0.014308060533682379 NaN NaN -0.44552114412866684 0.22074802276591027
+0.002912673572985976 0.022579379562401313 NaN NaN -0.4547419394771195 0.19780295702639214
+0.004714942062654641 0.035537288690641225 NaN NaN -0.4622399049545731 0.19270066672439173
+0.007632396180736398 0.05575324981747745 NaN NaN -0.469448047185668 0.18423631908521645
+0.012355076835646465 0.08713171770869527 NaN NaN -0.4744530905047407 0.1609182839984814
+0.02 0.13552470030052952 NaN NaN -0.4751012132117576 0.06048833910775891
+EOD
+$method6 << EOD
+1e-04 0.0016910987664819574 NaN NaN 0.06182370069615861 0.3502994011976048
+0.00016187677556400663 0.0027374961547836827 NaN NaN 0.1040279876917134 0.3415384615384615
+0.00026204090466999767 0.004431370506552492 NaN NaN 0.12183214878773208 0.1210164171897634
+0.00042418336713854457 0.007173359689301559 NaN NaN 0.18411598659845274 0.3229117604898327
+0.000686654357202708 0.011612003364649608 NaN NaN 0.1685286026958568 0.2234165067178503
+0.0011115339327094997 0.018797136625078738 NaN NaN 0.17672993037483953 0.21582089552238806
+0.0017993152895699328 0.03042819866703839 NaN NaN 0.17918097588470872 0.22074802276591027
+0.002912673572985976 0.04925618686441179 NaN NaN 0.18946283905710137 0.19780295702639214
+0.004714942062654641 0.07973432706189158 NaN NaN 0.20656192070381318 0.19270066672439173
+0.007632396180736398 0.12907135766544925 NaN NaN 0.22825236351217093 0.18423631908521645
+0.012355076835646465 0.2089365519655154 NaN NaN 0.26022947846825506 0.1609182839984814
+0.02 0.3382197532963915 NaN NaN 0.3099541100582748 0.06048833910775891
+EOD
+$method7 << EOD
+1e-04 0.0010765865850939197 NaN NaN -0.32402224248416645 0.3502994011976048
+0.00016187677556400663 0.0017427427932154493 NaN NaN -0.2971545126389681 0.3415384615384615
+0.00026204090466999767 0.0028210922052554705 NaN NaN -0.28582096083583775 0.1210164171897634
+0.00042418336713854457 0.0045666776795054275 NaN NaN -0.24617246587962383 0.3229117604898327
+0.000686654357202708 0.007392325177901878 NaN NaN -0.25610222977508257 0.2234165067178503
+0.0011115339327094997 0.011966180228917715 NaN NaN -0.2508985433004405 0.21582089552238806
+0.0017993152895699328 0.019369290081865737 NaN NaN -0.2493838156226459 0.22074802276591027
+0.002912673572985976 0.031349392149445134 NaN NaN -0.2429593242481558 0.19780295702639214
+0.004714942062654641 0.0507262290356189 NaN NaN -0.23239665285229416 0.19270066672439173
+0.007632396180736398 0.08202436496368924 NaN NaN -0.2194502176589036 0.18423631908521645
+0.012355076835646465 0.13239959851774272 NaN NaN -0.20141365682649826 0.1609182839984814
+0.02 0.21273228448102943 NaN NaN -0.1760696184004229 0.06048833910775891
+EOD
+set terminal pngcairo enhanced size 1400,1000 font ',11'
 set output '.load_area.png.partial'
-set multiplot layout 1,2 title "surface_A_gap: real contact area against load"
+set multiplot layout 2,2 title 'surface_A_gap: real contact area against load' noenhanced
+set key off
+set grid
+set border
+set tics
+set lmargin -1
+set rmargin -1
+set xlabel '{/:Italic P} / ({/:Italic E}^*{/:Italic A}_0)'
 unset logscale
-set key top left
-set xlabel 'P/(E* A0)'
-set ylabel 'A/A0'
-set grid
-plot 'curves.csv' using (strcol(1) eq 'bem' ? $3 : NaN):4 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title 'bem (reference)', \
-     'curves.csv' using (strcol(1) eq 'plateau_4' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_4', \
-     'curves.csv' using (strcol(1) eq 'plateau_8' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_8', \
-     'curves.csv' using (strcol(1) eq 'plateau_hertz' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_hertz (Hertz-consistent plateaus, this project)', \
-     'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
-     'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
-     'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
-     'curves.csv' using (strcol(1) eq 'persson' ? $3 : NaN):4 with linespoints lw 1.5 title 'persson'
+set format x '%g'
+set format y '%g'
+set title '(a) linear axes'
+set ylabel '{/:Italic A} / {/:Italic A}_0'
+set xrange [0:0.0206]
+set yrange [0:0.5063186645507812]
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+     $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
+     $method5 using 1:2 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' notitle, \
+     $method6 using 1:2 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' notitle, \
+     $method7 using 1:2 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' notitle
 set logscale xy
-set key bottom right
-set xlabel 'P/(E* A0)'
-set ylabel 'A/A0'
-set grid
-plot 'curves.csv' using (strcol(1) eq 'bem' ? $3 : NaN):4 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title 'bem (reference)', \
-     'curves.csv' using (strcol(1) eq 'plateau_4' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_4', \
-     'curves.csv' using (strcol(1) eq 'plateau_8' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_8', \
-     'curves.csv' using (strcol(1) eq 'plateau_hertz' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_hertz (Hertz-consistent plateaus, this project)', \
-     'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
-     'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
-     'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
-     'curves.csv' using (strcol(1) eq 'persson' ? $3 : NaN):4 with linespoints lw 1.5 title 'persson'
+set format x '10^{%L}'
+set format y '10^{%L}'
+set title '(b) logarithmic axes'
+set xrange [7.936507936507937e-05:0.0252]
+set yrange [0.0006514852153050539:0.6075823974609375]
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+     $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
+     $method5 using 1:2 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' notitle, \
+     $method6 using 1:2 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' notitle, \
+     $method7 using 1:2 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' notitle
+set logscale x
+unset logscale y
+set format y '%g'
+set yrange [*:*]
+set title '(c) relative error against the reference'
+set ylabel '{/:Italic A} / {/:Italic A}_{ref} - 1'
+plot $method0 using 1:(-$6):6 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method1 using 1:5 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:5 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:5 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:5 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
+     $method5 using 1:5 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' notitle, \
+     $method6 using 1:5 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' notitle, \
+     $method7 using 1:5 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' notitle, \
+     0 with lines lw 1 lc rgb 'black' dt 2 notitle
+unset title
+set border 0
+unset tics
+unset xlabel
+unset ylabel
+unset logscale
+unset grid
+set lmargin 0
+set rmargin 0
+set xrange [0:1]
+set yrange [0:1]
+set key inside left center vertical Left reverse noautotitle spacing 1.4 width 2
+plot 2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title "bem (reference)" noenhanced, \
+     2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' title "plateau_4" noenhanced, \
+     2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' title "plateau_8" noenhanced, \
+     2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' title "plateau_hertz (Hertz-consistent plateaus, this project)" noenhanced, \
+     2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' title "gw_mccool" noenhanced, \
+     2 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' title "bgt" noenhanced, \
+     2 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' title "bgt_linear" noenhanced, \
+     2 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' title "persson" noenhanced, \
+     2 with filledcurves y1=3 fc rgb '#b0b0b0' fs transparent solid 0.5 title 'bem: its error estimate (area_fraction_error)' noenhanced
 unset multiplot
-set terminal svg noenhanced size 1400,600 dynamic font ',11'
+set terminal svg enhanced size 1400,1000 dynamic font ',11'
 set output '.load_area.svg.partial'
-set multiplot layout 1,2 title "surface_A_gap: real contact area against load"
+set multiplot layout 2,2 title 'surface_A_gap: real contact area against load' noenhanced
+set key off
+set grid
+set border
+set tics
+set lmargin -1
+set rmargin -1
+set xlabel '{/:Italic P} / ({/:Italic E}^*{/:Italic A}_0)'
 unset logscale
-set key top left
-set xlabel 'P/(E* A0)'
-set ylabel 'A/A0'
-set grid
-plot 'curves.csv' using (strcol(1) eq 'bem' ? $3 : NaN):4 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title 'bem (reference)', \
-     'curves.csv' using (strcol(1) eq 'plateau_4' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_4', \
-     'curves.csv' using (strcol(1) eq 'plateau_8' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_8', \
-     'curves.csv' using (strcol(1) eq 'plateau_hertz' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_hertz (Hertz-consistent plateaus, this project)', \
-     'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
-     'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
-     'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
-     'curves.csv' using (strcol(1) eq 'persson' ? $3 : NaN):4 with linespoints lw 1.5 title 'persson'
+set format x '%g'
+set format y '%g'
+set title '(a) linear axes'
+set ylabel '{/:Italic A} / {/:Italic A}_0'
+set xrange [0:0.0206]
+set yrange [0:0.5063186645507812]
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+     $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
+     $method5 using 1:2 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' notitle, \
+     $method6 using 1:2 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' notitle, \
+     $method7 using 1:2 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' notitle
 set logscale xy
-set key bottom right
-set xlabel 'P/(E* A0)'
-set ylabel 'A/A0'
-set grid
-plot 'curves.csv' using (strcol(1) eq 'bem' ? $3 : NaN):4 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title 'bem (reference)', \
-     'curves.csv' using (strcol(1) eq 'plateau_4' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_4', \
-     'curves.csv' using (strcol(1) eq 'plateau_8' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_8', \
-     'curves.csv' using (strcol(1) eq 'plateau_hertz' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_hertz (Hertz-consistent plateaus, this project)', \
-     'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
-     'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
-     'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
-     'curves.csv' using (strcol(1) eq 'persson' ? $3 : NaN):4 with linespoints lw 1.5 title 'persson'
+set format x '10^{%L}'
+set format y '10^{%L}'
+set title '(b) logarithmic axes'
+set xrange [7.936507936507937e-05:0.0252]
+set yrange [0.0006514852153050539:0.6075823974609375]
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+     $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
+     $method5 using 1:2 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' notitle, \
+     $method6 using 1:2 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' notitle, \
+     $method7 using 1:2 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' notitle
+set logscale x
+unset logscale y
+set format y '%g'
+set yrange [*:*]
+set title '(c) relative error against the reference'
+set ylabel '{/:Italic A} / {/:Italic A}_{ref} - 1'
+plot $method0 using 1:(-$6):6 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method1 using 1:5 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:5 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:5 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:5 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
+     $method5 using 1:5 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' notitle, \
+     $method6 using 1:5 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' notitle, \
+     $method7 using 1:5 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' notitle, \
+     0 with lines lw 1 lc rgb 'black' dt 2 notitle
+unset title
+set border 0
+unset tics
+unset xlabel
+unset ylabel
+unset logscale
+unset grid
+set lmargin 0
+set rmargin 0
+set xrange [0:1]
+set yrange [0:1]
+set key inside left center vertical Left reverse noautotitle spacing 1.4 width 2
+plot 2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title "bem (reference)" noenhanced, \
+     2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' title "plateau_4" noenhanced, \
+     2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' title "plateau_8" noenhanced, \
+     2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' title "plateau_hertz (Hertz-consistent plateaus, this project)" noenhanced, \
+     2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' title "gw_mccool" noenhanced, \
+     2 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' title "bgt" noenhanced, \
+     2 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' title "bgt_linear" noenhanced, \
+     2 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' title "persson" noenhanced, \
+     2 with filledcurves y1=3 fc rgb '#b0b0b0' fs transparent solid 0.5 title 'bem: its error estimate (area_fraction_error)' noenhanced
 unset multiplot
 unset output

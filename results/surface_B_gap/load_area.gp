@@ -1,65 +1,272 @@
 # Made by contactbench run (app/load_area_plots.cpp): `gnuplot load_area.gp` in this folder redraws
-# the plots from curves.csv.
-set datafile separator ','
-set datafile missing ''
-set terminal pngcairo noenhanced size 1400,600 font ',11'
+# the plots; the data blocks below are the curves of curves.csv (load, A/A0, A/A0 -+ its error estimate,
+# A/A_ref - 1, the reference's relative error estimate).
+$method0 << EOD
+1e-04 0.0007556152343749999 0.0004074859619140624 0.0011037445068359374 0 0.46072294022617133
+0.00016187677556400663 0.001258067595653045 0.0011450327359713041 0.0013711024553347858 0 0.08984800186596174
+0.00026204090466999767 0.002056121826171875 0.00179290771484375 0.0023193359375 0 0.1280148423005566
+0.00042418336713854457 0.002890927948220803 0.001490049988683993 0.004291805907757613 0 0.4845772653721683
+0.000686654357202708 0.005168914794921875 0.004425048828125 0.00591278076171875 0 0.14391143911439114
+0.0011115339327094997 0.008275194459606987 0.007640011966488768 0.008910376952725207 0 0.07675740989757794
+0.0017993152895699328 0.013607025146484375 0.011747360229492188 0.015466690063476562 0 0.13666947014297728
+0.002912673572985976 0.02191162109375 0.01895904541015625 0.02486419677734375 0 0.1347493036211699
+0.004714942062654641 0.03524101349595699 0.03319762437530265 0.03728440261661133 0 0.057983267731184014
+0.007632396180736398 0.05588340759277344 0.04869365692138672 0.06307315826416016 0 0.12865626813201816
+0.012355076835646465 0.08885383605957031 0.07859134674072266 0.09911632537841797 0 0.11549855103574112
+0.02 0.1401188803205501 0.1328796518943334 0.14735810874676677 0 0.05166490347093477
+EOD
+$method1 << EOD
+1e-04 0.0014801025390625 NaN NaN 0.958804523424879 0.46072294022617133
+0.00016187677556400663 0.0024261474609375 NaN NaN 0.92847146633494 0.08984800186596174
+0.00026204090466999767 0.0039520263671875 NaN NaN 0.922077922077922 0.1280148423005566
+0.00042418336713854457 0.0061492919921875 NaN NaN 1.1270997071967948 0.4845772653721683
+0.000686654357202708 0.0100250244140625 NaN NaN 0.9394833948339483 0.14391143911439114
+0.0011115339327094997 0.015045166015625 NaN NaN 0.8181042257150217 0.07675740989757794
+0.0017993152895699328 0.0234375 NaN NaN 0.7224558452481076 0.13666947014297728
+0.002912673572985976 0.0366363525390625 NaN NaN 0.6720055710306407 0.1347493036211699
+0.004714942062654641 0.059173583984375 NaN NaN 0.6791112999960589 0.057983267731184014
+0.007632396180736398 0.093292236328125 NaN NaN 0.6694085122359126 0.12865626813201816
+0.012355076835646465 0.1467132568359375 NaN NaN 0.6511752710099818 0.11549855103574112
+0.02 0.23529052734375 NaN NaN 0.6792207217576649 0.05166490347093477
+EOD
+$method2 << EOD
+1e-04 0.0016021728515625 NaN NaN 1.1203554119547658 0.46072294022617133
+0.00016187677556400663 0.002532958984375 NaN NaN 1.0133727258591199 0.08984800186596174
+0.00026204090466999767 0.0040435791015625 NaN NaN 0.966604823747681 0.1280148423005566
+0.00042418336713854457 0.0063323974609375 NaN NaN 1.1904376637386345 0.4845772653721683
+0.000686654357202708 0.0105743408203125 NaN NaN 1.0457564575645755 0.14391143911439114
+0.0011115339327094997 0.01580810546875 NaN NaN 0.910300180365885 0.07675740989757794
+0.0017993152895699328 0.024444580078125 NaN NaN 0.7964676198486123 0.13666947014297728
+0.002912673572985976 0.0389556884765625 NaN NaN 0.7778551532033426 0.1347493036211699
+0.004714942062654641 0.0624847412109375 NaN NaN 0.7730687915120837 0.057983267731184014
+0.007632396180736398 0.0987396240234375 NaN NaN 0.7668862418512576 0.12865626813201816
+0.012355076835646465 0.1570892333984375 NaN NaN 0.7679510572072556 0.11549855103574112
+0.02 0.25543212890625 NaN NaN 0.8229672426863368 0.05166490347093477
+EOD
+$method3 << EOD
+1e-04 0.0010910034179687498 NaN NaN 0.4438610662358642 0.46072294022617133
+0.00016187677556400663 0.0016937255859374998 NaN NaN 0.34629140102627876 0.08984800186596174
+0.00026204090466999767 0.0027160644531249996 NaN NaN 0.3209647495361778 0.1280148423005566
+0.00042418336713854457 0.004318237304687499 NaN NaN 0.49372014177839385 0.4845772653721683
+0.000686654357202708 0.006759643554687499 NaN NaN 0.30774907749077474 0.14391143911439114
+0.0011115339327094997 0.010375976562499998 NaN NaN 0.253864983251739 0.07675740989757794
+0.0017993152895699328 0.016120910644531247 NaN NaN 0.1847490888701988 0.13666947014297728
+0.002912673572985976 0.025894165039062493 NaN NaN 0.18175487465181028 0.1347493036211699
+0.004714942062654641 0.04062652587890624 NaN NaN 0.15281945235675765 0.057983267731184014
+0.007632396180736398 0.06423950195312499 NaN NaN 0.14952728762073764 0.12865626813201816
+0.012355076835646465 0.10252380371093747 NaN NaN 0.1538478050874741 0.11549855103574112
+0.02 0.17306518554687497 NaN NaN 0.23513109119166242 0.05166490347093477
+EOD
+$method4 << EOD
+1e-04 0.00048209319125823213 NaN NaN -0.3619858767710117 0.46072294022617133
+0.00016187677556400663 0.0007669023468977786 NaN NaN -0.390412447194707 0.08984800186596174
+0.00026204090466999767 0.001218607996511143 NaN NaN -0.4073269487246437 0.1280148423005566
+0.00042418336713854457 0.0019339326254397791 NaN NaN -0.3310339586187191 0.4845772653721683
+0.000686654357202708 0.003064775436308358 NaN NaN -0.40707565167851056 0.14391143911439114
+0.0011115339327094997 0.004848950000093675 NaN NaN -0.41403793907654396 0.07675740989757794
+0.0017993152895699328 0.007657397441714821 NaN NaN -0.43724676339756374 0.13666947014297728
+0.002912673572985976 0.012066109185199767 NaN NaN -0.44932832063979666 0.1347493036211699
+0.004714942062654641 0.018964522158873304 NaN NaN -0.46186218052301475 0.057983267731184014
+0.007632396180736398 0.029716561365798796 NaN NaN -0.4682399902606943 0.12865626813201816
+0.012355076835646465 0.04639522987724798 NaN NaN -0.4778477561042699 0.11549855103574112
+0.02 0.07211480147613415 NaN NaN -0.48533130359622445 0.05166490347093477
+EOD
+$method5 << EOD
+1e-04 0.00051699564375162 NaN NaN -0.3157951028088415 0.46072294022617133
+0.00016187677556400663 0.0008247967070698044 NaN NaN -0.3443939658570856 0.08984800186596174
+0.00026204090466999767 0.001314521318432697 NaN NaN -0.36067926437992404 0.1280148423005566
+0.00042418336713854457 0.002092631571628561 NaN NaN -0.2761384548112126 0.4845772653721683
+0.000686654357202708 0.00332701891740118 NaN NaN -0.356340924661834 0.14391143911439114
+0.0011115339327094997 0.005281708610734051 NaN NaN -0.36174205494321465 0.07675740989757794
+0.0017993152895699328 0.008370515972360864 NaN NaN -0.38483864898834697 0.13666947014297728
+0.002912673572985976 0.013239396860461546 NaN NaN -0.39578195498105295 0.1347493036211699
+0.004714942062654641 0.020891644279789415 NaN NaN -0.40717810847902547 0.057983267731184014
+0.007632396180736398 0.03287584670545711 NaN NaN -0.4117064774391379 0.12865626813201816
+0.012355076835646465 0.05156326753297173 NaN NaN -0.4196843960861504 0.11549855103574112
+0.02 0.08054733654485718 NaN NaN -0.4251500128991256 0.05166490347093477
+EOD
+$method6 << EOD
+1e-04 0.0008968040093340991 NaN NaN 0.18685273739336683 0.46072294022617133
+0.00016187677556400663 0.0014517174134387725 NaN NaN 0.15392640145476966 0.08984800186596174
+0.00026204090466999767 0.0023499933391758834 NaN NaN 0.14292514639132237 0.1280148423005566
+0.00042418336713854457 0.0038040934434268488 NaN NaN 0.3158727964036758 0.4845772653721683
+0.000686654357202708 0.006157943805661171 NaN NaN 0.19134171290866586 0.14391143911439114
+0.0011115339327094997 0.00996828087364778 NaN NaN 0.20459777982319483 0.07675740989757794
+0.0017993152895699328 0.01613633165742461 NaN NaN 0.185882401458906 0.13666947014297728
+0.002912673572985976 0.02612097338135299 NaN NaN 0.19210592724258313 0.1347493036211699
+0.004714942062654641 0.04228378945566669 NaN NaN 0.19984601068631802 0.057983267731184014
+0.007632396180736398 0.06844763495710667 NaN NaN 0.22482929917033134 0.12865626813201816
+0.012355076835646465 0.11080082441838603 NaN NaN 0.24700102248935862 0.11549855103574112
+0.02 0.1793608018668198 NaN NaN 0.28006162664514545 0.05166490347093477
+EOD
+$method7 << EOD
+1e-04 0.0005709231155612473 NaN NaN -0.2444261449632087 0.46072294022617133
+0.00016187677556400663 0.0009241918026260441 NaN NaN -0.2653878012442493 0.08984800186596174
+0.00026204090466999767 0.001496051348036962 NaN NaN -0.2723916798148397 0.1280148423005566
+0.00042418336713854457 0.002421757383569594 NaN NaN -0.16229064613663435 0.4845772653721683
+0.000686654357202708 0.003920253010802062 NaN NaN -0.24157136142900693 0.14391143911439114
+0.0011115339327094997 0.006345937794584114 NaN NaN -0.23313732075300375 0.07675740989757794
+0.0017993152895699328 0.010272423986440217 NaN NaN -0.24506467241340502 0.13666947014297728
+0.002912673572985976 0.01662792434349479 NaN NaN -0.24113673413978098 0.1347493036211699
+0.004714942062654641 0.026913590703261853 NaN NaN -0.23629918571015274 0.057983267731184014
+0.007632396180736398 0.04355346618219216 NaN NaN -0.22063689280421972 0.12865626813201816
+0.012355076835646465 0.07044621964565556 NaN NaN -0.20716737993814616 0.11549855103574112
+0.02 0.11379607236424791 NaN NaN -0.18786053596833963 0.05166490347093477
+EOD
+set terminal pngcairo enhanced size 1400,1000 font ',11'
 set output '.load_area.png.partial'
-set multiplot layout 1,2 title "surface_B_gap: real contact area against load"
+set multiplot layout 2,2 title 'surface_B_gap: real contact area against load' noenhanced
+set key off
+set grid
+set border
+set tics
+set lmargin -1
+set rmargin -1
+set xlabel '{/:Italic P} / ({/:Italic E}^*{/:Italic A}_0)'
 unset logscale
-set key top left
-set xlabel 'P/(E* A0)'
-set ylabel 'A/A0'
-set grid
-plot 'curves.csv' using (strcol(1) eq 'bem' ? $3 : NaN):4 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title 'bem (reference)', \
-     'curves.csv' using (strcol(1) eq 'plateau_4' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_4', \
-     'curves.csv' using (strcol(1) eq 'plateau_8' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_8', \
-     'curves.csv' using (strcol(1) eq 'plateau_hertz' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_hertz (Hertz-consistent plateaus, this project)', \
-     'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
-     'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
-     'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
-     'curves.csv' using (strcol(1) eq 'persson' ? $3 : NaN):4 with linespoints lw 1.5 title 'persson'
+set format x '%g'
+set format y '%g'
+set title '(a) linear axes'
+set ylabel '{/:Italic A} / {/:Italic A}_0'
+set xrange [0:0.0206]
+set yrange [0:0.2682037353515625]
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+     $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
+     $method5 using 1:2 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' notitle, \
+     $method6 using 1:2 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' notitle, \
+     $method7 using 1:2 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' notitle
 set logscale xy
-set key bottom right
-set xlabel 'P/(E* A0)'
-set ylabel 'A/A0'
-set grid
-plot 'curves.csv' using (strcol(1) eq 'bem' ? $3 : NaN):4 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title 'bem (reference)', \
-     'curves.csv' using (strcol(1) eq 'plateau_4' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_4', \
-     'curves.csv' using (strcol(1) eq 'plateau_8' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_8', \
-     'curves.csv' using (strcol(1) eq 'plateau_hertz' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_hertz (Hertz-consistent plateaus, this project)', \
-     'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
-     'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
-     'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
-     'curves.csv' using (strcol(1) eq 'persson' ? $3 : NaN):4 with linespoints lw 1.5 title 'persson'
+set format x '10^{%L}'
+set format y '10^{%L}'
+set title '(b) logarithmic axes'
+set xrange [7.936507936507937e-05:0.0252]
+set yrange [0.0003826136438557398:0.321844482421875]
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+     $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
+     $method5 using 1:2 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' notitle, \
+     $method6 using 1:2 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' notitle, \
+     $method7 using 1:2 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' notitle
+set logscale x
+unset logscale y
+set format y '%g'
+set yrange [*:*]
+set title '(c) relative error against the reference'
+set ylabel '{/:Italic A} / {/:Italic A}_{ref} - 1'
+plot $method0 using 1:(-$6):6 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method1 using 1:5 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:5 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:5 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:5 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
+     $method5 using 1:5 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' notitle, \
+     $method6 using 1:5 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' notitle, \
+     $method7 using 1:5 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' notitle, \
+     0 with lines lw 1 lc rgb 'black' dt 2 notitle
+unset title
+set border 0
+unset tics
+unset xlabel
+unset ylabel
+unset logscale
+unset grid
+set lmargin 0
+set rmargin 0
+set xrange [0:1]
+set yrange [0:1]
+set key inside left center vertical Left reverse noautotitle spacing 1.4 width 2
+plot 2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title "bem (reference)" noenhanced, \
+     2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' title "plateau_4" noenhanced, \
+     2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' title "plateau_8" noenhanced, \
+     2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' title "plateau_hertz (Hertz-consistent plateaus, this project)" noenhanced, \
+     2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' title "gw_mccool" noenhanced, \
+     2 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' title "bgt" noenhanced, \
+     2 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' title "bgt_linear" noenhanced, \
+     2 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' title "persson" noenhanced, \
+     2 with filledcurves y1=3 fc rgb '#b0b0b0' fs transparent solid 0.5 title 'bem: its error estimate (area_fraction_error)' noenhanced
 unset multiplot
-set terminal svg noenhanced size 1400,600 dynamic font ',11'
+set terminal svg enhanced size 1400,1000 dynamic font ',11'
 set output '.load_area.svg.partial'
-set multiplot layout 1,2 title "surface_B_gap: real contact area against load"
+set multiplot layout 2,2 title 'surface_B_gap: real contact area against load' noenhanced
+set key off
+set grid
+set border
+set tics
+set lmargin -1
+set rmargin -1
+set xlabel '{/:Italic P} / ({/:Italic E}^*{/:Italic A}_0)'
 unset logscale
-set key top left
-set xlabel 'P/(E* A0)'
-set ylabel 'A/A0'
-set grid
-plot 'curves.csv' using (strcol(1) eq 'bem' ? $3 : NaN):4 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title 'bem (reference)', \
-     'curves.csv' using (strcol(1) eq 'plateau_4' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_4', \
-     'curves.csv' using (strcol(1) eq 'plateau_8' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_8', \
-     'curves.csv' using (strcol(1) eq 'plateau_hertz' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_hertz (Hertz-consistent plateaus, this project)', \
-     'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
-     'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
-     'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
-     'curves.csv' using (strcol(1) eq 'persson' ? $3 : NaN):4 with linespoints lw 1.5 title 'persson'
+set format x '%g'
+set format y '%g'
+set title '(a) linear axes'
+set ylabel '{/:Italic A} / {/:Italic A}_0'
+set xrange [0:0.0206]
+set yrange [0:0.2682037353515625]
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+     $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
+     $method5 using 1:2 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' notitle, \
+     $method6 using 1:2 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' notitle, \
+     $method7 using 1:2 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' notitle
 set logscale xy
-set key bottom right
-set xlabel 'P/(E* A0)'
-set ylabel 'A/A0'
-set grid
-plot 'curves.csv' using (strcol(1) eq 'bem' ? $3 : NaN):4 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title 'bem (reference)', \
-     'curves.csv' using (strcol(1) eq 'plateau_4' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_4', \
-     'curves.csv' using (strcol(1) eq 'plateau_8' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_8', \
-     'curves.csv' using (strcol(1) eq 'plateau_hertz' ? $3 : NaN):4 with linespoints lw 1.5 title 'plateau_hertz (Hertz-consistent plateaus, this project)', \
-     'curves.csv' using (strcol(1) eq 'gw_mccool' ? $3 : NaN):4 with linespoints lw 1.5 title 'gw_mccool', \
-     'curves.csv' using (strcol(1) eq 'bgt' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt', \
-     'curves.csv' using (strcol(1) eq 'bgt_linear' ? $3 : NaN):4 with linespoints lw 1.5 title 'bgt_linear', \
-     'curves.csv' using (strcol(1) eq 'persson' ? $3 : NaN):4 with linespoints lw 1.5 title 'persson'
+set format x '10^{%L}'
+set format y '10^{%L}'
+set title '(b) logarithmic axes'
+set xrange [7.936507936507937e-05:0.0252]
+set yrange [0.0003826136438557398:0.321844482421875]
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+     $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
+     $method5 using 1:2 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' notitle, \
+     $method6 using 1:2 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' notitle, \
+     $method7 using 1:2 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' notitle
+set logscale x
+unset logscale y
+set format y '%g'
+set yrange [*:*]
+set title '(c) relative error against the reference'
+set ylabel '{/:Italic A} / {/:Italic A}_{ref} - 1'
+plot $method0 using 1:(-$6):6 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method1 using 1:5 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+     $method2 using 1:5 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
+     $method3 using 1:5 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
+     $method4 using 1:5 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
+     $method5 using 1:5 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' notitle, \
+     $method6 using 1:5 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' notitle, \
+     $method7 using 1:5 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' notitle, \
+     0 with lines lw 1 lc rgb 'black' dt 2 notitle
+unset title
+set border 0
+unset tics
+unset xlabel
+unset ylabel
+unset logscale
+unset grid
+set lmargin 0
+set rmargin 0
+set xrange [0:1]
+set yrange [0:1]
+set key inside left center vertical Left reverse noautotitle spacing 1.4 width 2
+plot 2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title "bem (reference)" noenhanced, \
+     2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' title "plateau_4" noenhanced, \
+     2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' title "plateau_8" noenhanced, \
+     2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' title "plateau_hertz (Hertz-consistent plateaus, this project)" noenhanced, \
+     2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' title "gw_mccool" noenhanced, \
+     2 with linespoints lw 1.5 pt 6 ps 0.9 lc rgb '#56b4e9' title "bgt" noenhanced, \
+     2 with linespoints lw 1.5 pt 7 ps 0.9 lc rgb '#882255' title "bgt_linear" noenhanced, \
+     2 with linespoints lw 1.5 pt 8 ps 0.9 lc rgb '#999933' title "persson" noenhanced, \
+     2 with filledcurves y1=3 fc rgb '#b0b0b0' fs transparent solid 0.5 title 'bem: its error estimate (area_fraction_error)' noenhanced
 unset multiplot
 unset output
