@@ -1,5 +1,6 @@
 #include "contactbench/app/methods/method.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "contactbench/app/problems.hpp"
@@ -60,6 +61,22 @@ void check_hardness_above_loads(const MethodCheck& check, const std::string& con
             " Pa is at or below the mean pressure P/A0 = load E* of the loads " + join(refused) + consequence,
         "a hardness above " + exact_number(check.scene.loads.back() * check.scene.material.estar) +
             " Pa (the largest load times E*), or loads below hardness/E*");
+}
+
+void report_loads_the_theory_refuses(const MethodCheck& check,
+                                     const std::function<void(Real)>& solve_one_load) {
+  std::vector<std::string> reasons;
+  for (const Real load : check.scene.loads) {
+    try {
+      solve_one_load(load);
+    } catch (const Error& error) {
+      if (std::find(reasons.begin(), reasons.end(), error.what()) == reasons.end())
+        reasons.push_back(error.what());
+    }
+  }
+  for (const std::string& reason : reasons)
+    check.problem("", reason,
+                  "loads the theory reaches (loads.values or loads.range), or leave this method out");
 }
 
 }  // namespace contactbench

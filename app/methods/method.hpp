@@ -11,6 +11,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -162,5 +163,11 @@ class Method {
 // is at or above H, `consequence` saying what that means for the method (the BEM and every plastic theory
 // refuse it alike). Nothing without a hardness.
 void check_hardness_above_loads(const MethodCheck& check, const std::string& consequence);
+
+// A theory's own refusals, load by load: `solve_one_load` is called for each of the scene's loads and every
+// distinct reason it throws becomes one problem, so that every refused load is named and a reason that is not
+// about a load (the same for all of them) is given once.
+void report_loads_the_theory_refuses(const MethodCheck& check,
+                                     const std::function<void(Real)>& solve_one_load);
 
 }  // namespace contactbench

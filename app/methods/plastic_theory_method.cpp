@@ -40,21 +40,9 @@ void PlasticTheoryMethod::preflight(const MethodCheck& check) const {
       std::any_of(check.scene.loads.begin(), check.scene.loads.end(),
                   [&](Real load) { return load * check.scene.material.estar >= *check.interface.hardness; }))
     return;  // said once above; the theory would only repeat it
-  // Each load on its own, so that every load the theory refuses is named; a reason that is not about a load
-  // (the same for all of them) is given once.
-  std::vector<std::string> reasons;
   const PlasticTheoryInputs in = inputs(check.scene, check.surface);
-  for (const Real load : check.scene.loads) {
-    try {
-      curve_(check.moments, std::span<const Real>(&load, 1), in);
-    } catch (const Error& error) {
-      if (std::find(reasons.begin(), reasons.end(), error.what()) == reasons.end())
-        reasons.push_back(error.what());
-    }
-  }
-  for (const std::string& reason : reasons)
-    check.problem("", reason,
-                  "loads the theory reaches (loads.values or loads.range), or leave this method out");
+  report_loads_the_theory_refuses(
+      check, [&](Real load) { curve_(check.moments, std::span<const Real>(&load, 1), in); });
 }
 
 MethodCurve PlasticTheoryMethod::evaluate(const MethodInputs& in) const {

@@ -1,7 +1,5 @@
 #include "contactbench/app/methods/theory_method.hpp"
 
-#include <algorithm>
-
 #include "contactbench/app/scene_keys.hpp"
 #include "contactbench/app/section.hpp"
 #include "contactbench/theories/isotropic_moments.hpp"
@@ -63,21 +61,9 @@ void AnalyticTheoryMethod::preflight(const MethodCheck& check) const {
                   "leave this method out");
     return;
   }
-  // Each load on its own, so that every load the theory refuses is named; a reason that is not about a load
-  // (the same for all of them) is given once.
-  std::vector<std::string> reasons;
   const Real area = check.surface.grid().nominal_area();
-  for (const Real load : check.scene.loads) {
-    try {
-      curve_(moments, std::span<const Real>(&load, 1), area);
-    } catch (const Error& error) {
-      if (std::find(reasons.begin(), reasons.end(), error.what()) == reasons.end())
-        reasons.push_back(error.what());
-    }
-  }
-  for (const std::string& reason : reasons)
-    check.problem("", reason,
-                  "loads the theory reaches (loads.values or loads.range), or leave this method out");
+  report_loads_the_theory_refuses(check,
+                                  [&](Real load) { curve_(moments, std::span<const Real>(&load, 1), area); });
 }
 
 MethodCurve AnalyticTheoryMethod::evaluate(const MethodInputs& in) const {
