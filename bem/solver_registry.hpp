@@ -56,9 +56,10 @@ struct SolverEntry {
   bool hardness = false;
   bool single_precision = false;
   // How it starts a load after a previous one on a grid when the caller leaves it to the solver
-  // (BemSolverOptions::load_path = solver): scaled, extrapolated or cold, chosen by measurement
-  // (docs/solvers.md "Starts", bench/bench_load_path.cpp). Empty: scaled.
-  std::function<LoadPathStart(const Grid& grid)> load_path;
+  // (BemSolverOptions::load_path = solver), with the pressure capped at a hardness or not: scaled,
+  // extrapolated or cold, chosen by measurement (docs/solvers.md "Starts", bench/bench_load_path.cpp,
+  // bench/bench_bem_solvers.cpp plastic rows). Empty: scaled.
+  std::function<LoadPathStart(const Grid& grid, bool capped)> load_path;
   // Makes the solver for a centred surface, E* [Pa], threads, in float when single_precision.
   std::function<std::unique_ptr<ContactSolver>(const Surface& centred, Real modulus, int threads,
                                                bool single_precision)>

@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/solver_registry.hpp"
+#include "contactbench/bem/solvers/load_stepping.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "each_solver.hpp"
@@ -72,11 +74,16 @@ TEST_P(LoadPath, EveryStartGivesTheColdAnswers) {
 CB_FOR_EACH_SOLVER(LoadPath);
 
 // The total iterations of `loads` solved in order by one solver that starts each load as `start` says.
+// With a hardness, the pressure is capped at it.
 Index curve_iterations(const Surface& surface, const std::vector<Real>& loads, SolverKind solver,
-                       LoadPathStart start) {
+                       LoadPathStart start, std::optional<Real> hardness = std::nullopt) {
   constexpr int kThreads = 2;  // as the benchmark (bench/bench_load_path.cpp)
   BemSolver along(surface, kModulus,
-                  {.tolerance = 1e-8, .max_iterations = 20000, .solver = solver, .load_path = start},
+                  {.tolerance = 1e-8,
+                   .max_iterations = 20000,
+                   .hardness = hardness,
+                   .solver = solver,
+                   .load_path = start},
                   kThreads);
   Index iterations = 0;
   for (const Real load : loads) {
@@ -103,6 +110,29 @@ TEST(LoadPathDeclared, TheDefaultSolversCurveCostsNoMoreThanColdSolves) {
   EXPECT_LE(declared, cold);
   const Index old_warm = curve_iterations(surface, loads, kDefaultSolver, LoadPathStart::scaled);
   EXPECT_GT(old_warm, cold) << "the test surface no longer shows the old start's cost";
+}
+
+TEST(LoadPathDeclared, TheDefaultSolverStartsACappedCurveWarmOnEveryGrid) {
+  // From 512^2 points the default solver starts an elastic load cold (the test above), but a capped one
+  // from the last solution: its nested coarse start solves the elastic problem, far from the capped one.
+  // The rule, then its reason on the benchmark's capped curve (bench_bem_solvers plastic rows: surface A,
+  // H = 0.1 E*, ten loads 0.001 ... 0.01 E*, up to 5 % of A0 plastic), here at 256^2 to stay fast:
+  // iteration counts are deterministic for a fixed thread count, so no tolerance; the cold curve must cost
+  // more, so that this test fails if capped curves were declared cold.
+  const Grid large{.nx = 512, .ny = 512, .lx = 200e-6, .ly = 200e-6, .periodic = true};
+  BemSolverOptions options{.solver = kDefaultSolver};
+  EXPECT_EQ(load_path_start(options, large), LoadPathStart::cold);
+  options.hardness = 0.1 * kModulus;
+  EXPECT_EQ(load_path_start(options, large), LoadPathStart::scaled);
+
+  const Surface surface = surface_a(256, 1);
+  std::vector<Real> loads;
+  for (int k = 1; k <= 10; ++k)
+    loads.push_back(0.001 * k * kModulus);
+  const Index cold = curve_iterations(surface, loads, kDefaultSolver, LoadPathStart::cold, options.hardness);
+  const Index declared =
+      curve_iterations(surface, loads, kDefaultSolver, LoadPathStart::solver, options.hardness);
+  EXPECT_LT(declared, cold);
 }
 
 }  // namespace

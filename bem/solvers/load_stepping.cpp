@@ -56,7 +56,8 @@ template void PressureState<float>::end_load(double);
 LoadPathStart load_path_start(const BemSolverOptions& options, const Grid& grid) {
   if (options.load_path != LoadPathStart::solver) return options.load_path;
   const SolverEntry& entry = solver_entry(options.solver);
-  const LoadPathStart declared = entry.load_path ? entry.load_path(grid) : LoadPathStart::scaled;
+  const LoadPathStart declared =
+      entry.load_path ? entry.load_path(grid, options.hardness.has_value()) : LoadPathStart::scaled;
   return declared == LoadPathStart::solver ? LoadPathStart::scaled : declared;  // never itself
 }
 

@@ -296,7 +296,7 @@ SolverEntry polonsky_keer_entry() {
       // Warm, the last solution scaled: on the benchmark's 10-load curves (contact 1 % to 30 %,
       // bench/bench_load_path.cpp) 0.62 to 0.75 of the cold solves' iterations at 256^2 and 512^2, the
       // extrapolation 0.74 to 0.91 (docs/solvers.md "Starts").
-      .load_path = [](const Grid&) { return LoadPathStart::scaled; },
+      .load_path = [](const Grid&, bool) { return LoadPathStart::scaled; },
       .make = [](const Surface& centred, Real modulus, int threads,
                  bool single_precision) -> std::unique_ptr<ContactSolver> {
         if (single_precision) return std::make_unique<PolonskyKeerSolver<float>>(centred, modulus, threads);

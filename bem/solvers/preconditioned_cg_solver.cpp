@@ -138,7 +138,7 @@ SolverEntry preconditioned_cg_entry() {
       // bench/bench_load_path.cpp) 0.94 to 1.00 of the cold solves' iterations at 256^2 and 512^2. The
       // extrapolation took 0.92 to 0.97, but the distributed preconditioned_cg (mpi/) starts scaled and
       // must take the serial one's steps (tests/mpi): docs/solvers.md "Starts".
-      .load_path = [](const Grid&) { return LoadPathStart::scaled; },
+      .load_path = [](const Grid&, bool) { return LoadPathStart::scaled; },
       .make = [](const Surface& centred, Real modulus, int threads,
                  bool single_precision) -> std::unique_ptr<ContactSolver> {
         if (single_precision)
