@@ -13,7 +13,7 @@ project's exponential law) with the bound-constrained system (BoundedSmoothConta
 default), under displacement control along the given indentations (the apex's penetration with no
 deformation, [m]), each state starting from the last. Solved in units of um and MPa (force uN) so that
 L-BFGS-B's absolute tolerances see numbers of order one; reported in SI. Per state: net force [N], contact
-area fraction (gap 0), iterations, seconds.
+area fraction (gap 0), mean gap [m], iterations, seconds.
 plastic: ContactMechanics' PlasticSystem (make_plastic_system, PlasticTopography with the hardness) under load
 control, a fresh system per load (monotonic loading from the flat state), constrained conjugate gradients with
 the hardness cap. Per load: contact and plastic area fractions (plastic: the pressure at the cap), iterations,
@@ -57,6 +57,7 @@ def adhesion(args, heights):
         displacement = result.x.reshape(system.substrate.nb_subdomain_grid_pts)
         states.append({"indentation": indentation, "force": float(system.compute_normal_force()) * UN,
                        "contact_fraction": float(system.compute_nb_contact_pts()) / n**2,
+                       "mean_gap": float(np.mean(system.gap)) * UM,
                        "iterations": int(result.nit), "converged": bool(result.success),
                        "message": str(result.message), "seconds": seconds})
     return {"states": states}
