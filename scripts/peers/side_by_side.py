@@ -392,6 +392,10 @@ def part_adhesion(args, cb, peer_versions):
             peer_states = answer["states"]
             print(f"rep {repetition}: cb path {cb_seconds[-1]:.2f} s, peer path {peer_seconds[-1]:.2f} s",
                   file=sys.stderr)
+        # Equal states: each peer state's own mean gap is contactbench's separation on a periodic surface, so
+        # the same state is solved by both; followed along the path, each from the last (not timed).
+        at_peer_gap = cb.BemSolver(surface, modulus, adhesion=law, threads=args.threads)
+        same_gap = [at_peer_gap.solve_for_separation(state["mean_gap"]) for state in peer_states]
         # Equal load: the peer's loaded states on the approach (positive net force) solved by contactbench under
         # load control, the repulsive contact area compared.
         load_control = cb.BemSolver(surface, modulus, adhesion=law, threads=args.threads)
@@ -457,16 +461,32 @@ def part_adhesion(args, cb, peer_versions):
                   for k in range(len(peer_states))]
     force_scale = math.pi * radius * work
     worst_force = max(abs(c - p) for _, c, p, _, _ in same_state) / force_scale
+    both = [k for k in range(len(peer_states)) if peer_states[k]["converged"] and same_gap[k].converged]
+    gap_force = [same_gap[k].load * modulus * area0 for k in range(len(peer_states))]
+    gap_worst_force = max(abs(gap_force[k] - peer_force[k]) for k in both) / force_scale
+    gap_worst_area = max((abs(relative(same_gap[k].area_fraction, peer_states[k]["contact_fraction"])) for k in both
+                          if peer_states[k]["contact_fraction"] > 0), default=0.0)
+    peer_least = min(range(len(peer_states)), key=lambda k: peer_force[k] if retract[k] else math.inf)
     lines += [
         "",
-        "## The same path state by state",
+        "## The same states at the peer's own mean gap",
+        "",
+        "Each peer state's mean gap, which contactbench takes as its separation on a periodic surface, names the "
+        "same state in both; contactbench solves the 41 states at those mean gaps, each from the last. Where both "
+        f"converged ({len(both)} of {len(peer_states)} states): the net forces within {gap_worst_force:.1e} pi R w "
+        f"of each other, the repulsive areas within {gap_worst_area:.1e} relative. At the peer's least net force "
+        f"on the retract branch (state {peer_least}): peer {peer_force[peer_least]:.6e} N, contactbench at the "
+        f"same mean gap {gap_force[peer_least]:.6e} N ({relative(gap_force[peer_least], peer_force[peer_least]):+.1e}"
+        " relative).",
+        "",
+        "## The same path state by state, at the same indentation",
         "",
         f"The largest net-force difference at the same indentation over the {len(same_state)} states is "
         f"{worst_force:.2e} pi R w. The two do not place the flat alike for a given indentation (where the "
         "mean displacement of the periodic half-space is put), so the states at one indentation differ while the "
-        "states at one load agree (the table above); the pull-off, sampled at the path's states, inherits that "
-        "shift of the samples. Peer states that did not converge (L-BFGS-B's own flag): "
-        f"{sum(not s['converged'] for s in peer_states)} of {len(peer_states)}.",
+        "states at one load or one mean gap agree (the tables above); the pull-off, sampled at each one's own "
+        "path states, inherits that shift of the samples. Peer states that did not converge (L-BFGS-B's own "
+        f"flag): {sum(not s['converged'] for s in peer_states)} of {len(peer_states)}.",
         "",
         "## Time",
         "",
@@ -480,7 +500,9 @@ def part_adhesion(args, cb, peer_versions):
         rows.append({"kind": "path", "state": k, "approaching": bool(path.approaching[k]),
                      "indentation_m": lift - path.separation[k], "cb_force_N": c, "peer_force_N": p,
                      "cb_area_fraction": ca, "peer_area_fraction": pa,
-                     "peer_converged": peer_states[k]["converged"], "peer_iterations": peer_states[k]["iterations"]})
+                     "peer_converged": peer_states[k]["converged"], "peer_iterations": peer_states[k]["iterations"],
+                     "peer_mean_gap_m": peer_states[k]["mean_gap"], "cb_force_at_peer_gap_N": gap_force[k],
+                     "cb_area_at_peer_gap": same_gap[k].area_fraction})
     write_result("contactmechanics_adhesion", command, lines, rows)
 
 
