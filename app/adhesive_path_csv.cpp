@@ -15,7 +15,10 @@ void write_adhesive_path_csv(std::ostream& out, const AdhesivePath& path, Real m
       << "# separation d [m] of the flat (docs/solvers.md \"Separation control\"); load = net P/(E* A0), "
          "negative when tensile; energy U per nominal area [J/m^2] (docs/theory.md 10.7)\n";
   out << "# pull_off_load = " << number(path.pull_off_pressure / modulus)
-      << ", at separation = " << number(path.pull_off_separation) << '\n';
+      << ", at separation = " << number(path.pull_off_separation)
+      << (path.pull_off_located ? " (located between two samples of the retract branch)"
+                                : " (the least sample of the retract leg: its minimum is not bracketed)")
+      << '\n';
   out << "# cycle work -oint P/A0 dd = " << number(path.cycle_work)
       << " J/m^2; released by the jumps = " << number(path.released_energy) << " J/m^2\n";
   for (const AdhesiveJump& jump : path.jumps)

@@ -56,6 +56,7 @@ JsonObject path_json(const AdhesivePath& path, const SceneReport& report) {
   JsonObject o;
   o.add("file_suffix", "_approach_retract.csv");
   o.add("pull_off_load", path.pull_off_pressure / estar).add("pull_off_separation", path.pull_off_separation);
+  o.add("pull_off_located", path.pull_off_located);
   o.add("cycle_work", path.cycle_work).add("released_energy", path.released_energy);
   std::vector<JsonObject> jumps;
   for (const AdhesiveJump& jump : path.jumps) {
@@ -340,9 +341,11 @@ void write_table_md(std::ostream& out, const SceneReport& report, const Comparis
       out << "\nApproach-retract path of " << r.label << " (" << r.label
           << "_approach_retract.csv and its plot): " << path.states.size()
           << " states, pull-off P/(E* A0) = " << table_number(path.pull_off_pressure / estar)
-          << " at separation " << table_number(path.pull_off_separation) << " m, " << path.jumps.size()
-          << " jumps (energy they release " << table_number(path.released_energy)
-          << " J/m^2, work around the cycle " << table_number(path.cycle_work) << " J/m^2)"
+          << " at separation " << table_number(path.pull_off_separation) << " m ("
+          << (path.pull_off_located ? "located between two samples" : "the least sample: not bracketed")
+          << "), " << path.jumps.size() << " jumps (energy they release "
+          << table_number(path.released_energy) << " J/m^2, work around the cycle "
+          << table_number(path.cycle_work) << " J/m^2)"
           << (path.converged ? "" : "; NOT CONVERGED: some states did not converge") << ".\n";
     }
   out << "\nStages that ran:";

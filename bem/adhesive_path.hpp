@@ -14,6 +14,14 @@
 // the way back, can exceed the threshold).
 // Summed over a closed cycle the released energies are the hysteresis: the work the machine does around the
 // cycle, -∮ P/A0 dd (tests/test_adhesive_path.cpp checks the two agree).
+//
+// The pull-off, the least net load on the retract leg, is located, not only sampled: where the leg's least
+// sampled load has a higher one on each side on the same branch (no jump in either step), the minimum lies
+// between those two separations, and a golden-section search there (each solve warm from the last, all on
+// that branch) narrows it until the load at the bracket's ends is within kPullOffLoad of the least one found;
+// the path then goes on from its sampled state as before. Where the least sampled load is the last one
+// before a jump out (the branch ends before its minimum is bracketed), the sampled state is reported and
+// `pull_off_located` says so.
 #pragma once
 
 #include <vector>
@@ -56,11 +64,13 @@ struct AdhesivePathOptions {
 struct AdhesivePath {
   std::vector<AdhesivePathState> states;
   std::vector<AdhesiveJump> jumps;
-  Real pull_off_pressure = 0;    // the most tensile net P/A0 on the retract leg [Pa] (<= 0)
-  Real pull_off_separation = 0;  // where it occurs [m]
-  Real cycle_work = 0;           // -∮ P/A0 dd over the path [J/m^2], trapezoid rule
-  Real released_energy = 0;      // summed over the jumps [J/m^2]
-  bool converged = false;        // every state converged
+  Real pull_off_pressure = 0;     // the most tensile net P/A0 on the retract leg [Pa] (<= 0)
+  Real pull_off_separation = 0;   // where it occurs [m]
+  bool pull_off_located = false;  // located between two samples of one branch (else the least sample)
+  Index pull_off_solves = 0;      // the solves the location took (not among the states)
+  Real cycle_work = 0;            // -∮ P/A0 dd over the path [J/m^2], trapezoid rule
+  Real released_energy = 0;       // summed over the jumps [J/m^2]
+  bool converged = false;         // every state converged
 };
 
 // Runs the path from a fresh approach (the solver forgets its state first). Throws Error on bad options.

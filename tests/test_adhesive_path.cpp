@@ -10,6 +10,7 @@
 // released.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "contact_shapes.hpp"
@@ -72,6 +73,50 @@ TEST(AdhesivePath, SphereJumpsInAndOutAndBalancesTheEnergy) {
   // Under separation control the pull-off is passed before the snap out, and after the deepest state.
   EXPECT_LT(path.pull_off_separation, path.jumps[1].separation_after);
   EXPECT_GT(path.pull_off_separation, path.states[14].separation);
+}
+
+TEST(AdhesivePath, LocatesThePullOffBetweenItsSamples) {
+  // The sphere of results/peers/contactmechanics_adhesion.md (R = 1 mm, E* = 1 MPa, w = 50 mJ/m^2, its pixel
+  // of 2 um, here on 128^2 over 0.25 mm to stay fast) with the exponential law at the peak stress of Maugis'
+  // λ = 0.3, its range 2.6 pixels: a smooth law
+  // (the Dugdale law's load along a path on a grid has kinks where zone nodes join or leave, and its least
+  // load can sit on one). Its path from 2 ranges above the apex to 1.2 into contact and back, sampled with 8
+  // steps a leg and with 32. Located, the pull-off no longer depends on the step: the two paths' located
+  // pull-offs agree within 1e-3 (the tolerance on forces; measured 3e-5), each at least as tensile as
+  // every sample of its own path and of the other (up to the location's stopping tolerance, 1e-4 of the
+  // load), while the coarse path's least sample is 13 % short of it.
+  const Real size = 0.25e-3, lambda = 0.3;
+  const Real stress = lambda / 2 / std::cbrt(9 * kRadius / (16 * M_PI * kWork * kModulus * kModulus));
+  const Real range = kWork / stress;
+  const Surface s = sphere(128, size / 128, kRadius);
+  const AdhesionLaw law = AdhesionLaw::exponential(kWork, range);
+  auto path_of = [&](Index steps) {
+    AdhesiveBemSolver solver(s, kModulus, law, AdhesiveSolverOptions{}, 2);
+    const Real top = solver.surface().heights().maxCoeff();
+    return approach_retract(
+        solver, {.start = top + 2 * range, .turn = top - 1.2 * range, .steps = steps, .jump_fraction = 0.02});
+  };
+  const AdhesivePath coarse = path_of(8), fine = path_of(32);
+  ASSERT_TRUE(coarse.converged && fine.converged);
+  ASSERT_TRUE(coarse.pull_off_located);
+  EXPECT_GT(coarse.pull_off_solves, 0);
+  Real fine_least = 0, coarse_least = 0;
+  for (const AdhesivePathState& state : fine.states)
+    if (!state.approaching) fine_least = std::min(fine_least, state.mean_pressure);
+  for (const AdhesivePathState& state : coarse.states)
+    if (!state.approaching) coarse_least = std::min(coarse_least, state.mean_pressure);
+  const Real located = coarse.pull_off_pressure;
+  ASSERT_TRUE(fine.pull_off_located);
+  EXPECT_NEAR(located, fine.pull_off_pressure, 1e-3 * std::abs(located));
+  const Real slack = 1e-4 * std::abs(located);
+  for (const Real pull_off : {located, fine.pull_off_pressure}) {
+    EXPECT_LE(pull_off, fine_least + slack);
+    EXPECT_LE(pull_off, coarse_least + slack);
+  }
+  EXPECT_GT(std::abs(coarse_least - located), 1e-2 * std::abs(located))
+      << "the coarse samples already hold the minimum: the test no longer shows the location";
+  // The states of the path are the samples alone, as before (the location's solves are not among them).
+  EXPECT_EQ(coarse.states.size(), 17u);
 }
 
 TEST(AdhesivePath, RefusesBadOptions) {
