@@ -542,11 +542,42 @@ def contact_stiffness(data):
     return lines
 
 
+def iteration_cost(data):
+    """bench_bem_solvers iteration_cost/: one iteration of each solver, per n, in one run (issue 42)."""
+    rows = counter_medians(data)
+    lines = header(data, "What one iteration costs: active_set against polonsky_keer",
+                   "scripts/bench.sh bem_solvers")
+    lines.append("Surface A refined to n x n, periodic, nominal 10 % contact, cold start, tolerance 1e-6 "
+                 "(polonsky_keer stopped at 150 iterations: its iterations all cost the same); the solve's time "
+                 "over its iterations (active_set's coarse levels at a quarter), the median of three solves "
+                 "(bench/bench_bem_solvers.cpp iteration_cost). FFT pairs: over one r2c + c2r pair of n x n in "
+                 "double measured in the same binary. ratio: active_set's ms per iteration over polonsky_keer's "
+                 "at the same n, in the same run (issue 42's target: at most 1.5).")
+    lines.append("")
+    lines.append("| n | solver | iterations | solve [s] | ms / iteration | FFT pairs / iteration | ratio to plain PK |")
+    lines.append("|---:|---|---:|---:|---:|---:|---:|")
+    cost = {}
+    for name, b in rows.items():
+        parts = name.split("/")
+        if parts[0] != "iteration_cost":
+            continue
+        cost[(int(parts[2].split(":")[1]), parts[1])] = b
+    for n, solver in sorted(cost, key=lambda key: (key[0], key[1] != "polonsky_keer")):
+        b = cost[(n, solver)]
+        plain = cost.get((n, "polonsky_keer"))
+        ratio = b["ms_per_iteration"] / plain["ms_per_iteration"] if plain else None
+        lines.append(f"| {n} | {solver} | {b['iterations']:.0f} | {b['seconds']:.3f} | {fmt(b['ms_per_iteration'])} "
+                     f"| {fmt(b['fft_pairs_per_iteration'])} | {fmt(ratio)} |")
+    return lines
+
+
 def main():
     with open(sys.argv[1]) as f:
         data = json.load(f)
     names = [b["name"] for b in data["benchmarks"]]
-    if names and names[0].startswith("load_path/"):
+    if names and names[0].startswith("iteration_cost/"):
+        lines = iteration_cost(data)
+    elif names and names[0].startswith("load_path/"):
         lines = load_path(data)
     elif names and names[0].startswith("contact_stiffness/"):
         lines = contact_stiffness(data)
