@@ -28,25 +28,6 @@ void ActiveSet<T>::reseat(std::vector<T>& p, double total) {
   displacement_current_ = displacement_fresh_ = false;
 }
 
-// Holds p at node k to the sets: H on the plastic set, 0 off both. Adds to `part` what the load's rescaling
-// needs, a: the sum of p on the elastic set, b: its nodes, g: the sum of p on the plastic set; and c: 1
-// when p changed.
-template <class T>
-void ActiveSet<T>::keep_to_sets(std::vector<T>& p, std::size_t k, Sums& part) {
-  const T before = p[k];
-  const T held = plastic_[k] ? cap_ : (in_[k] ? before : T(0));
-  if (held != before) {  // stored only when changed: most nodes keep p = 0, their memory untouched
-    p[k] = held;
-    part.c += 1;
-    if (part.c <= kFewChanges)  // the first few of each thread, for add_columns
-      changes_[static_cast<std::size_t>(omp_get_thread_num())][static_cast<std::size_t>(part.c) - 1] = {
-          k, static_cast<double>(held) - static_cast<double>(before)};
-  }
-  part.a += in_[k] ? static_cast<double>(held) : 0.0;
-  part.b += in_[k];
-  part.g += plastic_[k] ? static_cast<double>(cap_) : 0.0;
-}
-
 // u += G dp for the changes of p that the last pass recorded with keep_to_sets (at most kFewChanges in
 // all; each thread's first ones, in sums_[thread].c): dp_k times G's column k, the response to a unit
 // pressure at node 0 (response_) shifted to node k (wrapped when periodic; mirrored otherwise: the
@@ -182,8 +163,6 @@ template typename ActiveSet<float>::Sums ActiveSet<float>::update_sets(std::vect
                                                                        double, bool);
 template void ActiveSet<double>::reseat(std::vector<double>& p, double total);
 template void ActiveSet<float>::reseat(std::vector<float>& p, double total);
-template void ActiveSet<double>::keep_to_sets(std::vector<double>& p, std::size_t k, Sums& part);
-template void ActiveSet<float>::keep_to_sets(std::vector<float>& p, std::size_t k, Sums& part);
 template void ActiveSet<double>::add_columns();
 template void ActiveSet<float>::add_columns();
 template void ActiveSet<double>::note_flips();
