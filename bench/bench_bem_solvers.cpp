@@ -362,13 +362,14 @@ void separation(benchmark::State& state, SolverKind solver_kind, SurfaceKind kin
 // What one iteration costs (issue 42): iteration_cost/n:<n> solves surface A refined to n x n, periodic, at
 // the nominal 10 % contact from a cold start at the tolerance 1e-6, by polonsky_keer (stopped after
 // kIterationCostBudget iterations: its iterations all cost the same; unconverged it only warns) and by
-// active_set (to convergence), interleaved, three rounds, each solve by a new solver (its plans from the
-// wisdom of the first). Per solver: its iterations (active_set's coarse levels counted as in
+// active_set (to convergence), interleaved, kIterationCostRounds rounds, each solve by a new solver (its
+// plans from the wisdom of the first). Per solver: its iterations (active_set's coarse levels counted as in
 // equal_accuracy, a quarter each), the median of its solves' time over its iterations (ms_per_iteration)
 // and that over one r2c + c2r pair of n x n in double measured in this binary (fft_pairs_per_iteration);
 // ratio: active_set's ms_per_iteration over polonsky_keer's, the issue's measure (target at most 1.5).
 // Interleaved so that a neighbour's load on the shared machine falls on both solvers alike.
 constexpr Index kIterationCostBudget = 60;
+constexpr int kIterationCostRounds = 5;
 
 void iteration_cost(benchmark::State& state, Index n) {
   const Surface surface = case_surface(SurfaceKind::surface_a, n).with_periodic(true);
@@ -379,7 +380,7 @@ void iteration_cost(benchmark::State& state, Index n) {
   std::array<std::vector<double>, 2> per_iteration_ms;
   for (auto _ : state) {
     double seconds = 0;
-    for (int round = 0; round < 3; ++round)
+    for (int round = 0; round < kIterationCostRounds; ++round)
       for (std::size_t i = 0; i < solvers.size(); ++i) {
         const bool plain = solvers[i] == SolverKind::polonsky_keer;
         const BemSolverOptions options{

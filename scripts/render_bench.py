@@ -549,7 +549,7 @@ def iteration_cost(data):
                    "scripts/bench.sh bem_solvers")
     lines.append("Surface A refined to n x n, periodic, nominal 10 % contact, cold start, tolerance 1e-6; polonsky_keer "
                  "stopped after 60 iterations (its iterations all cost the same), active_set to convergence; the two "
-                 "solvers interleaved, three rounds, in one benchmark (bench/bench_bem_solvers.cpp iteration_cost). "
+                 "solvers interleaved, five rounds, in one benchmark (bench/bench_bem_solvers.cpp iteration_cost). "
                  "ms / iteration: the median over the rounds of a solve's time over its iterations (active_set's "
                  "coarse levels at a quarter). FFT pairs: over one r2c + c2r pair of n x n in double measured in "
                  "the same binary. ratio: active_set's ms per iteration over polonsky_keer's (issue 42's target: "
