@@ -303,8 +303,8 @@ class ActiveSet {
     double dp = 0;
   };
   std::vector<std::array<Change, active_set_tuning::kFewChanges>>
-      changes_;                              // per thread, recorded by keep_to_sets
-  std::vector<T> response_;                  // G e_0: the displacement of a unit pressure at node 0
+      changes_;              // per thread, recorded by keep_to_sets
+  std::vector<T> response_;  // G e_0, the displacement of a unit pressure at node 0 (or empty)
   std::vector<std::uint16_t> window_count_;  // per node: the set nodes in its window (with the weights)
   bool weights_current_ = false;             // the weights are those of the set before pending_flips_
   std::vector<std::vector<Flip>> flips_;     // per thread: the last set update's flips

@@ -34,6 +34,12 @@ void ActiveSet<T>::reseat(std::vector<T>& p, double total) {
 // half-space's response depends on |dx| and |dy| only). u stays current, not fresh.
 template <class T>
 void ActiveSet<T>::add_columns() {
+  if (response_.empty()) {  // made on first use (the constructor's comment says why)
+    response_.assign(n_, T(0));
+    std::vector<T> unit(n_, T(0));
+    unit[0] = T(1);
+    operator_->apply(unit.data(), response_.data());
+  }
   std::vector<Change> all;
   for (std::size_t thread = 0; thread < sums_.size(); ++thread)
     for (std::size_t i = 0; i < static_cast<std::size_t>(sums_[thread].c); ++i)
