@@ -32,6 +32,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -358,6 +359,55 @@ void separation(benchmark::State& state, SolverKind solver_kind, SurfaceKind kin
       static_cast<double>(ref.contact_points) / static_cast<double>(surface.grid().points());
 }
 
+// What one iteration costs (issue 42): iteration_cost/n:<n> solves surface A refined to n x n, periodic, at
+// the nominal 10 % contact from a cold start at the tolerance 1e-6, by polonsky_keer (stopped after
+// kIterationCostBudget iterations: its iterations all cost the same; unconverged it only warns) and by
+// active_set (to convergence), interleaved, kIterationCostRounds rounds, each solve by a new solver (its
+// plans from the wisdom of the first). Per solver: its iterations (active_set's coarse levels counted as in
+// equal_accuracy, a quarter each), the median of its solves' time over its iterations (ms_per_iteration)
+// and that over one r2c + c2r pair of n x n in double measured in this binary (fft_pairs_per_iteration);
+// ratio: active_set's ms_per_iteration over polonsky_keer's, the issue's measure (target at most 1.5).
+// Interleaved so that a neighbour's load on the shared machine falls on both solvers alike.
+constexpr Index kIterationCostBudget = 60;
+constexpr int kIterationCostRounds = 5;
+
+void iteration_cost(benchmark::State& state, Index n) {
+  const Surface surface = case_surface(SurfaceKind::surface_a, n).with_periodic(true);
+  const Real load = nominal_pressure(surface, 10);
+  const double pair_ms = fft_pair_ms(n, false);
+  const std::array<SolverKind, 2> solvers{SolverKind::polonsky_keer, SolverKind::active_set};
+  std::array<Index, 2> iterations{};
+  std::array<std::vector<double>, 2> per_iteration_ms;
+  for (auto _ : state) {
+    double seconds = 0;
+    for (int round = 0; round < kIterationCostRounds; ++round)
+      for (std::size_t i = 0; i < solvers.size(); ++i) {
+        const bool plain = solvers[i] == SolverKind::polonsky_keer;
+        const BemSolverOptions options{
+            .tolerance = 1e-6, .max_iterations = plain ? kIterationCostBudget : 100000, .solver = solvers[i]};
+        BemSolver solver(surface, kModulus, options, kThreads);
+        const ContactSolution& s = solver.solve(load);
+        iterations[i] = s.iterations + (s.coarse_iterations + 3) / 4;
+        per_iteration_ms[i].push_back(1e3 * s.seconds /
+                                      static_cast<double>(std::max<Index>(iterations[i], 1)));
+        seconds += s.seconds;
+      }
+    state.SetIterationTime(seconds);
+  }
+  std::array<double, 2> median{};
+  for (std::size_t i = 0; i < solvers.size(); ++i) {
+    std::vector<double>& runs = per_iteration_ms[i];
+    std::sort(runs.begin(), runs.end());
+    median[i] = runs[runs.size() / 2];
+    const std::string name(solver_name(solvers[i]));
+    state.counters[name + "_iterations"] = static_cast<double>(iterations[i]);
+    state.counters[name + "_ms_per_iteration"] = median[i];
+    state.counters[name + "_fft_pairs_per_iteration"] = median[i] / pair_ms;
+  }
+  state.counters["fft_pair_ms"] = pair_ms;
+  state.counters["ratio"] = median[1] / median[0];
+}
+
 // Every solver from a cold start, and the preconditioned one from a coarse start too (<solver>_coarse;
 // BemSolverOptions::coarse_start): its `iterations` are the fine ones plus a quarter of the coarse
 // levels'.
@@ -370,6 +420,12 @@ std::vector<std::pair<std::string, bool>> variants() {
 }
 
 void register_all() {
+  for (const Index n : {512, 1024, 2048})
+    benchmark::RegisterBenchmark(("iteration_cost/n:" + std::to_string(n)).c_str(), iteration_cost, n)
+        ->Unit(benchmark::kMillisecond)
+        ->UseManualTime()
+        ->Iterations(1)
+        ->Repetitions(1);
   for (const Index n : {256, 512, 1024})
     for (const bool periodic : {true, false})
       for (const std::string& name : solver_names())

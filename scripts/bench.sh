@@ -6,7 +6,8 @@
 #   (default: labelling sweep bem).
 # BENCH_FILTER=REGEX runs only the matching benchmarks (recorded in the files' command); BENCH_REPETITIONS=N
 # repeats each N times instead of 3 (recorded too: for iteration counts, which do not vary); BENCH_APPEND=1 adds
-# them to the recorded JSON instead of replacing it (a long run made in parts). bem_solvers compares the BEM
+# them to the recorded JSON instead of replacing it (a long run made in parts); BENCH_RECORD=NAME records
+# under results/bench/NAME.{json,md} instead of the harness's name (one family of a harness on its own). bem_solvers compares the BEM
 # solvers at equal accuracy (bench/bench_bem_solvers.cpp); its full matrix takes hours on two cores, so it is
 # run in parts with BENCH_FILTER (results/bench/bem_solvers.md records which). Takes about 15 minutes for
 # labelling and sweep, and as long again for bem; command (the whole bem command beside its solve) a few
@@ -37,11 +38,11 @@ machine="$(lscpu | sed -n 's/^Model name: *//p' | head -n 1 | tr ',' ' ') with $
 mkdir -p results/bench
 for name in "${@:-labelling sweep bem}"; do
   for bench in $name; do
-    out=results/bench/$bench.json
+    out=results/bench/${BENCH_RECORD:-$bench}.json
     filter=${BENCH_FILTER:+--benchmark_filter=$BENCH_FILTER}
     build/release/bench/bench_$bench --benchmark_repetitions="${BENCH_REPETITIONS:-3}" \
       --benchmark_report_aggregates_only=true $filter --benchmark_out="$out.tmp" --benchmark_out_format=json \
-      --benchmark_context="commit=$commit,machine=$machine,command=scripts/bench.sh $bench${BENCH_REPETITIONS:+ with BENCH_REPETITIONS set to $BENCH_REPETITIONS}${BENCH_FILTER:+ with BENCH_FILTER set to $BENCH_FILTER}"
+      --benchmark_context="commit=$commit,machine=$machine,command=scripts/bench.sh $bench${BENCH_RECORD:+ with BENCH_RECORD set to $BENCH_RECORD}${BENCH_REPETITIONS:+ with BENCH_REPETITIONS set to $BENCH_REPETITIONS}${BENCH_FILTER:+ with BENCH_FILTER set to $BENCH_FILTER}"
     if [[ -n ${BENCH_APPEND:-} && -f $out ]]; then
       # Adds this run's benchmarks to the recorded ones (replacing any of the same name); the context keeps
       # every run's command, commit and date, one entry each, so that render_bench.py can list the runs.

@@ -542,11 +542,42 @@ def contact_stiffness(data):
     return lines
 
 
+def iteration_cost(data):
+    """bench_bem_solvers iteration_cost/n:<n>: one iteration of active_set against polonsky_keer (issue 42)."""
+    rows = counter_medians(data)
+    lines = header(data, "What one iteration costs: active_set against polonsky_keer",
+                   "scripts/bench.sh bem_solvers")
+    lines.append("Surface A refined to n x n, periodic, nominal 10 % contact, cold start, tolerance 1e-6; polonsky_keer "
+                 "stopped after 60 iterations (its iterations all cost the same), active_set to convergence; the two "
+                 "solvers interleaved, five rounds, in one benchmark (bench/bench_bem_solvers.cpp iteration_cost). "
+                 "ms / iteration: the median over the rounds of a solve's time over its iterations (active_set's "
+                 "coarse levels at a quarter). FFT pairs: over one r2c + c2r pair of n x n in double measured in "
+                 "the same binary. ratio: active_set's ms per iteration over polonsky_keer's (issue 42's target: "
+                 "at most 1.5).")
+    lines.append("")
+    lines.append("| n | PK iterations | PK ms / iteration | PK FFT pairs / it. | active_set iterations "
+                 "| active_set ms / iteration | active_set FFT pairs / it. | ratio |")
+    lines.append("|---:|---:|---:|---:|---:|---:|---:|---:|")
+    found = []
+    for name, b in rows.items():
+        parts = name.split("/")
+        if parts[0] == "iteration_cost":
+            found.append((int(parts[1].split(":")[1]), b))
+    for n, b in sorted(found, key=lambda item: item[0]):
+        lines.append(f"| {n} | {b['polonsky_keer_iterations']:.0f} | {fmt(b['polonsky_keer_ms_per_iteration'])} "
+                     f"| {fmt(b['polonsky_keer_fft_pairs_per_iteration'])} | {b['active_set_iterations']:.0f} "
+                     f"| {fmt(b['active_set_ms_per_iteration'])} | {fmt(b['active_set_fft_pairs_per_iteration'])} "
+                     f"| {b['ratio']:.2f} |")
+    return lines
+
+
 def main():
     with open(sys.argv[1]) as f:
         data = json.load(f)
     names = [b["name"] for b in data["benchmarks"]]
-    if names and names[0].startswith("load_path/"):
+    if names and names[0].startswith("iteration_cost/"):
+        lines = iteration_cost(data)
+    elif names and names[0].startswith("load_path/"):
         lines = load_path(data)
     elif names and names[0].startswith("contact_stiffness/"):
         lines = contact_stiffness(data)

@@ -31,10 +31,9 @@ ActiveSet<T>::ActiveSet(const Grid& grid, std::vector<T> heights, Real modulus, 
   changes_.resize(sums_.size());
   flips_.resize(sums_.size());
   window_count_.resize(n_);
-  response_.assign(n_, T(0));
-  std::vector<T> unit(n_, T(0));
-  unit[0] = T(1);
-  operator_->apply(unit.data(), response_.data());
+  // response_ (G's column of node 0) is made by add_columns on its first use: a solve whose set updates
+  // never change a few pressures only (and a coarse level often) never needs it, and it costs an
+  // application of G (issue 42).
 }
 
 template <class T>

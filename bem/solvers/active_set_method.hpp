@@ -303,8 +303,8 @@ class ActiveSet {
     double dp = 0;
   };
   std::vector<std::array<Change, active_set_tuning::kFewChanges>>
-      changes_;                              // per thread, recorded by keep_to_sets
-  std::vector<T> response_;                  // G e_0: the displacement of a unit pressure at node 0
+      changes_;              // per thread, recorded by keep_to_sets
+  std::vector<T> response_;  // G e_0, the displacement of a unit pressure at node 0 (or empty)
   std::vector<std::uint16_t> window_count_;  // per node: the set nodes in its window (with the weights)
   bool weights_current_ = false;             // the weights are those of the set before pending_flips_
   std::vector<std::vector<Flip>> flips_;     // per thread: the last set update's flips
@@ -314,5 +314,25 @@ class ActiveSet {
   double contact_fraction_ = 0;              // of the nodes, in contact (p > 0) in the last solution
   std::unique_ptr<ActiveSet<T>> coarse_;     // the next coarser level of the nested start, once made
 };
+
+// Holds p at node k to the sets: H on the plastic set, 0 off both. Adds to `part` what the load's rescaling
+// needs, a: the sum of p on the elastic set, b: its nodes, g: the sum of p on the plastic set; and c: 1
+// when p changed. In this header so that the set update's pass and the start's inline it (out of line it
+// was a call per node of the grid in every set update: issue 42).
+template <class T>
+inline void ActiveSet<T>::keep_to_sets(std::vector<T>& p, std::size_t k, Sums& part) {
+  const T before = p[k];
+  const T held = plastic_[k] ? cap_ : (in_[k] ? before : T(0));
+  if (held != before) {  // stored only when changed: most nodes keep p = 0, their memory untouched
+    p[k] = held;
+    part.c += 1;
+    if (part.c <= active_set_tuning::kFewChanges)  // the first few of each thread, for add_columns
+      changes_[static_cast<std::size_t>(omp_get_thread_num())][static_cast<std::size_t>(part.c) - 1] = {
+          k, static_cast<double>(held) - static_cast<double>(before)};
+  }
+  part.a += in_[k] ? static_cast<double>(held) : 0.0;
+  part.b += in_[k];
+  part.g += plastic_[k] ? static_cast<double>(cap_) : 0.0;
+}
 
 }  // namespace contactbench
