@@ -11,13 +11,7 @@ namespace {
 // header).
 Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> filter_multiplier(const Grid& grid,
                                                                                         Real modulus) {
-  Grid lattice_grid = grid;
-  if (!grid.periodic) {
-    lattice_grid.nx *= 2;
-    lattice_grid.ny *= 2;
-    lattice_grid.lx *= 2;
-    lattice_grid.ly *= 2;
-  }
+  const Grid lattice_grid = filter_lattice(grid);
   const HalfLattice lattice(lattice_grid);
   const Eigen::Array<Real, 1, Eigen::Dynamic> qx2 = lattice.qx_row().square();
   const Eigen::Array<Real, Eigen::Dynamic, 1> qy2 = lattice.qy_column().square();
@@ -38,6 +32,17 @@ std::unique_ptr<Convolution<T>> make_filter(
 }
 
 }  // namespace
+
+Grid filter_lattice(const Grid& grid) {
+  Grid lattice = grid;
+  if (!grid.periodic) {
+    lattice.nx *= 2;
+    lattice.ny *= 2;
+    lattice.lx *= 2;
+    lattice.ly *= 2;
+  }
+  return lattice;
+}
 
 template <class T>
 std::unique_ptr<Convolution<T>> make_fourier_preconditioner(const Grid& grid, Real modulus, int threads) {

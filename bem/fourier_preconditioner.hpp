@@ -23,6 +23,10 @@
 
 namespace contactbench {
 
+// The lattice the filter's wavevectors live on: the grid itself when it is periodic, else its zero-padded
+// double (2 nx x 2 ny over 2 lx x 2 ly). The distributed filter (mpi/distributed_half_space.cpp) uses it too.
+Grid filter_lattice(const Grid& grid);
+
 // The filter (E*/2)|q|: circular on the grid's own lattice when the grid is periodic, else on the doubled,
 // zero-padded lattice; in double or single precision; modulus is E* [Pa].
 template <class T>

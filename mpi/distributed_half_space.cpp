@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "contactbench/bem/fourier_preconditioner.hpp"
 #include "contactbench/bem/love_kernel.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/spectrum.hpp"
@@ -60,19 +61,6 @@ std::vector<double> love_multiplier(DistributedConvolution& convolution, const G
   return multiplier;
 }
 
-// The lattice the filter's wavevectors live on: the grid itself, or its zero-padded double when it is not
-// periodic (as the serial filter's, bem/fourier_preconditioner.cpp).
-Grid lattice_of(const Grid& grid) {
-  Grid lattice = grid;
-  if (!grid.periodic) {
-    lattice.nx *= 2;
-    lattice.ny *= 2;
-    lattice.lx *= 2;
-    lattice.ly *= 2;
-  }
-  return lattice;
-}
-
 }  // namespace
 
 DistributedHalfSpace::DistributedHalfSpace(const Grid& grid, Real modulus, MPI_Comm comm, int threads)
@@ -90,7 +78,7 @@ std::unique_ptr<DistributedConvolution> make_distributed_preconditioner(const Gr
                                                                         MPI_Comm comm, int threads) {
   check_operator(grid, modulus);
   const bool padded = !grid.periodic;
-  const Grid lattice_grid = lattice_of(grid);
+  const Grid lattice_grid = filter_lattice(grid);
   auto convolution = std::make_unique<DistributedConvolution>(grid, padded, comm, threads);
   // (E*/2)|q| with the pair's 1/(lx ly) folded in (bem/fourier_preconditioner.cpp).
   convolution->set_multiplier(radial_multiplier(*convolution, lattice_grid,
@@ -102,7 +90,7 @@ std::unique_ptr<DistributedConvolution> make_distributed_unit_preconditioner(con
                                                                              int threads) {
   validate(grid, "distributed filter grid");
   const bool padded = !grid.periodic;
-  const Grid lattice_grid = lattice_of(grid);
+  const Grid lattice_grid = filter_lattice(grid);
   auto convolution = std::make_unique<DistributedConvolution>(grid, padded, comm, threads);
   // |q| / max |q| with the pair's normalisation: the serial filter's arithmetic
   // (bem/fourier_preconditioner.cpp, (1/2)|q| / (points) first, then divided by its peak times the lattice's
