@@ -595,6 +595,13 @@ void register_bem(py::module_& m) {
           "pull_off_separation", [](const Path& p) { return p.path.pull_off_separation; },
           "where it occurs [m]")
       .def_property_readonly(
+          "pull_off_located", [](const Path& p) { return p.path.pull_off_located; },
+          "True when the pull-off was located between two samples of the retract branch (a golden-section "
+          "search on the separation, docs/theory.md 10.7), False when it is the least sample (not bracketed)")
+      .def_property_readonly(
+          "pull_off_solves", [](const Path& p) { return p.path.pull_off_solves; },
+          "the solves the location took (not among the states)")
+      .def_property_readonly(
           "cycle_work", [](const Path& p) { return p.path.cycle_work; },
           "-oint P/A0 dd over the path [J/m^2] (trapezoid rule)")
       .def_property_readonly(
