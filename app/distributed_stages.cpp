@@ -11,6 +11,7 @@
 #include "contactbench/app/run_observer.hpp"
 #include "contactbench/app/stages.hpp"
 #include "contactbench/core/error.hpp"
+#include "contactbench/core/memory_budget.hpp"
 #include "contactbench/core/topography_io.hpp"
 #include "contactbench/mpi/distributed_bem_solver.hpp"
 #include "contactbench/mpi/distributed_contact_statistics.hpp"
@@ -232,7 +233,26 @@ void serve() {
 // Rank 0's side of the stages: each job announced to the other ranks, which serve it (serve() above).
 class DistributedRunner final : public StageRunner {
  public:
+  // ranks_here: the ranks on rank 0's machine (they share its memory).
+  explicit DistributedRunner(int ranks_here) : ranks_here_(ranks_here) {}
+
   int ranks() const override { return mpi::size_of(kWorld); }
+
+  // Every rank on this machine holds at most rank 0's slab (FFTW's split gives the first ranks the full
+  // blocks) and what DistributedBemSolver::estimated_bytes says of it; rank 0 also the whole surface: its
+  // heights as read and centred, and with fields the gathered pressure and gap (8 B a point each).
+  std::optional<SpreadMemory> bem_memory(const BemSolverOptions& solver, const Grid& grid) const override {
+    const mpi::Slab largest = mpi::slab_of(grid, kWorld);
+    const std::uintmax_t per_rank =
+        mpi::DistributedBemSolver::estimated_bytes(grid, largest.points(), solver);
+    const std::uintmax_t root_extra = saturating_product(static_cast<std::uintmax_t>(grid.points()), 32);
+    return SpreadMemory{
+        .bytes = saturating_sum(saturating_product(per_rank, static_cast<std::uintmax_t>(ranks_here_)),
+                                root_extra),
+        .how = std::to_string(ranks()) + " ranks, " + std::to_string(ranks_here_) +
+               " on this machine, about " + format_bytes(per_rank) + " each and " + format_bytes(root_extra) +
+               " more on rank 0, which holds the whole surface"};
+  }
 
   std::string bem_refusal(const BemStage& stage) const override {
     // What the distributed solver lacks: the interface's effects, and the settings the declaration says
@@ -288,17 +308,30 @@ class DistributedRunner final : public StageRunner {
     announce(Job::sweep);
     return sweep_job(surface.grid(), &surface.heights(), levels, topology);
   }
+
+ private:
+  int ranks_here_ = 1;
 };
+
+// The ranks that share this rank's machine (its memory). Collective.
+int ranks_on_this_machine() {
+  MPI_Comm machine = MPI_COMM_NULL;
+  MPI_Comm_split_type(kWorld, MPI_COMM_TYPE_SHARED, mpi::rank_of(kWorld), MPI_INFO_NULL, &machine);
+  const int size = mpi::size_of(machine);
+  MPI_Comm_free(&machine);
+  return size;
+}
 
 }  // namespace
 
 int run_as_mpi_ranks(int& argc, char**& argv, const std::function<int(const StageRunner&)>& command) {
   mpi::Environment environment(argc, argv);
+  const int ranks_here = ranks_on_this_machine();
   if (!is_root()) {
     serve();
     return 0;
   }
-  const DistributedRunner runner;
+  const DistributedRunner runner(ranks_here);
   int status = 1;
   try {
     status = command(runner);

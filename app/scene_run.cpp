@@ -95,6 +95,7 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
     });
 
   // Every preflight, before any stage: one SceneError lists every problem of every method.
+  const StageRunner& runner = options.runner ? *options.runner : serial_runner();
   Problems problems(origin_of(scene));
   check_effects(scene, problems);
   for (const MethodSpec& m : scene.methods) {
@@ -115,11 +116,11 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
                                     .key = "methods." + m.label,
                                     .problems = problems,
                                     .fields_folder = options.fields_folder,
-                                    .line_scan = line_scan ? &line_scan->statistics : nullptr});
+                                    .line_scan = line_scan ? &line_scan->statistics : nullptr,
+                                    .runner = &runner});
   }
   // A BEM stage the runner cannot do (e.g. an option the distributed solver lacks) is refused here, before
   // any work, with the reason: never run with another solver than the scene says.
-  const StageRunner& runner = options.runner ? *options.runner : serial_runner();
   report.ranks = runner.ranks();
   for (std::size_t m = 0; m < scene.methods.size(); ++m)
     if (const int b = plan.of_method[m].bem; b >= 0)

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <set>
@@ -45,6 +46,17 @@ class StageRunner {
   virtual int ranks() const = 0;
   // Why this BEM stage cannot run here (an option with no version on this runner), or empty.
   virtual std::string bem_refusal(const BemStage& stage) const = 0;
+  // The memory this machine needs for one solve of `solver` on `grid` when the runner spreads it over
+  // several processes (every rank on this machine counted), with a few words on how it is spread for the
+  // preflight's message; nothing when the solve is this process's alone (the method's own estimate,
+  // app/methods/bem_method.cpp).
+  struct SpreadMemory {
+    std::uintmax_t bytes = 0;
+    std::string how;  // e.g. "2 ranks on this machine, about 1.2 GiB each"
+  };
+  virtual std::optional<SpreadMemory> bem_memory(const BemSolverOptions&, const Grid&) const {
+    return std::nullopt;
+  }
   // Every load of `mean_pressures` [Pa] (ascending) on the grid of `solved`, warm-started in order; with a
   // non-empty `fields` prefix the pressure and gap of each load written as it is solved (app/stages.hpp).
   virtual SolvedLoads solve_loads(const BemStage& stage, const Surface& solved, Real estar,

@@ -60,6 +60,10 @@ class DistributedBemSolver {
   // Bytes this rank holds for the solve (fields, operator, preconditioner; not the solution's copies): the
   // memory per rank of docs/mpi.md.
   std::size_t bytes() const;
+  // What bytes() will be, at most, for a rank holding `slab_points` of `grid`, before anything is allocated
+  // (the preflight's memory check, app/distributed_stages.cpp). An upper bound: tests/mpi check bytes() <=
+  // estimate <= 2 bytes() on 1-3 ranks.
+  static std::size_t estimated_bytes(const Grid& grid, Index slab_points, const BemSolverOptions& options);
 
  private:
   void apply(const std::vector<double>& in, std::vector<double>& out);

@@ -15,6 +15,7 @@
 #include "contactbench/app/scene_text.hpp"
 #include "contactbench/app/scene_toml.hpp"
 #include "contactbench/app/section.hpp"
+#include "contactbench/app/stage_runner.hpp"
 #include "contactbench/app/stages.hpp"
 #include "contactbench/bem/grid_convergence.hpp"
 #include "contactbench/bem/solver_registry.hpp"
@@ -457,15 +458,25 @@ class BemMethod final : public Method {
       per_point += settings_.solver.single_precision ? (periodic ? 56 : 66) : (periodic ? 94 : 119);
     const std::uintmax_t points =
         saturating_product(static_cast<std::uintmax_t>(side * nx), static_cast<std::uintmax_t>(side * ny));
+    std::string what =
+        "the BEM solve on " + std::to_string(side * nx) + " x " + std::to_string(side * ny) + " points";
+    std::uintmax_t bytes = saturating_product(points, per_point);
+    std::string accepted =
+        "a solve that fits: fewer points (refine), extrapolate = false, boundary = \"as_is\" or precision = "
+        "\"single\"";
+    // Spread over MPI ranks, the runner says what the ranks on this machine hold together.
+    if (check.runner)
+      if (const auto spread = check.runner->bem_memory(
+              settings_.solver,
+              Grid{.nx = side * nx, .ny = side * ny, .lx = grid.lx, .ly = grid.ly, .periodic = periodic})) {
+        bytes = spread->bytes;
+        what += " (" + spread->how + ")";
+        accepted = "a solve that fits: fewer points (refine), or the ranks spread over more machines";
+      }
     try {
-      check_fits_in_memory(
-          saturating_product(points, per_point),
-          "the BEM solve on " + std::to_string(side * nx) + " x " + std::to_string(side * ny) + " points");
+      check_fits_in_memory(bytes, what);
     } catch (const Error& e) {
-      check.problem(settings_.refine > 0 ? "refine" : "", e.what(),
-                    "a solve that fits: fewer points (refine), extrapolate = false, boundary = \"as_is\" or "
-                    "precision = "
-                    "\"single\"");
+      check.problem(settings_.refine > 0 ? "refine" : "", e.what(), accepted);
     }
   }
 

@@ -29,6 +29,7 @@
 namespace contactbench {
 
 class Problems;
+class StageRunner;  // app/stage_runner.hpp
 class Section;
 struct SceneKeys;
 
@@ -70,6 +71,8 @@ struct MethodCheck {
   // The scene's surface is a line scan: `surface` is its profile as one row and `moments` those of the
   // isotropic surface it is a profile of (app/surface_source.hpp). Null: heights over an area.
   const ProfileStatistics* line_scan = nullptr;
+  // Where the heavy stages will run (app/stage_runner.hpp); null: this process.
+  const StageRunner* runner = nullptr;
   void problem(std::string_view key_suffix, std::string_view reason, std::string_view accepted = {}) const;
 };
 

@@ -160,6 +160,20 @@ with tempfile.TemporaryDirectory() as work:
         if reason not in done.stderr:
             failures.append(f"{' '.join(arguments)} on {ranks} ranks: '{reason}' not in: {done.stderr}")
 
+    # Larger than this machine even spread over its ranks: refused in preflight with the memory of every rank
+    # here (DistributedBemSolver::estimated_bytes), before any work (no output folder).
+    big_scene = os.path.join(work, "big.toml")
+    with open(big_scene, "w") as f:
+        f.write(f'name = "mpi_big"\n[surface]\nfile = "{surface}"\n[material]\nE = 100e9\nnu = 0.3\n'
+                '[loads]\nvalues = [1e-3]\n[methods.bem]\nrefine = 65536\n')
+    done = run(["run", big_scene, "--out", os.path.join(work, "big")], distributed=True, expect_status=1)
+    for phrase in ("the BEM solve on 65536 x 65536 points", f"{ranks} ranks, {ranks} on this machine, about",
+                   "more on rank 0", "GiB available"):
+        if phrase not in done.stderr:
+            failures.append(f"run {big_scene} on {ranks} ranks: '{phrase}' not in: {done.stderr}")
+    if os.path.exists(os.path.join(work, "big")):
+        failures.append(f"run {big_scene} on {ranks} ranks: wrote its output folder before the refusal")
+
 for failure in failures:
     print("FAILED:", failure)
 print(f"test_mpi_cli on {ranks} ranks: {len(failures)} failures")

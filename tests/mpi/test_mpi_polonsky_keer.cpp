@@ -150,6 +150,31 @@ TEST(DistributedBemSolver, ZeroLoadTouchesNothing) {
   EXPECT_NEAR(s.separation, surface.centred().heights().maxCoeff(), 1e-15);
 }
 
+// The preflight's estimate (DistributedBemSolver::estimated_bytes) bounds what each rank then holds, and not
+// by more than twice (plus the MiB it adds for plans): an estimate that lost a field would fail the first,
+// one that refused solves that fit the second. On grids whose coarse levels are gathered (256^2) and on slabs
+// (640 x 512, its first coarse level 320 x 256 above the gather bound).
+TEST(DistributedBemSolver, EstimatesItsMemoryBeforeAllocating) {
+  for (const bool periodic : {true, false})
+    for (const Index nx : {256, 640}) {
+      const Grid grid{.nx = nx, .ny = nx == 256 ? 256 : 512, .lx = 1e-4, .ly = 1e-4, .periodic = periodic};
+      const Slab slab = slab_of(grid, MPI_COMM_WORLD);
+      const HeightMap local = testing::rows_of(testing::test_field(grid.nx, grid.ny, 3), slab);
+      for (const SolverKind kind :
+           {SolverKind::polonsky_keer, SolverKind::preconditioned_cg, SolverKind::active_set}) {
+        const BemSolverOptions options = options_for(kind);
+        const DistributedBemSolver solver(grid, local, kModulus, MPI_COMM_WORLD, options);
+        const std::size_t held = solver.bytes();
+        const std::size_t estimate = DistributedBemSolver::estimated_bytes(grid, slab.points(), options);
+        EXPECT_GE(estimate, held) << grid.nx << " x " << grid.ny << (periodic ? " periodic" : "")
+                                  << " solver " << static_cast<int>(kind);
+        EXPECT_LE(estimate, 2 * held + (1u << 20))
+            << grid.nx << " x " << grid.ny << (periodic ? " periodic" : "") << " solver "
+            << static_cast<int>(kind);
+      }
+    }
+}
+
 TEST(DistributedBemSolver, RefusesWhatIsNotDistributedYetNamingIt) {
   const Grid grid{.nx = 16, .ny = 16, .lx = 1e-4, .ly = 1e-4, .periodic = true};
   const HeightMap local = HeightMap::Zero(slab_of(grid, MPI_COMM_WORLD).count, grid.nx);
