@@ -37,6 +37,8 @@ DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MP
     const Index kx = fft_->spectrum_start() + c;
     column_weight_.push_back((kx == 0 || (lx_ % 2 == 0 && kx == lx_ / 2)) ? 1.0 : 2.0);
   }
+  if (size_of(comm) == 1 && threads <= 1)
+    alone_ = std::make_unique<Convolution<double>>(grid.nx, grid.ny, padded, 1);
   if (!padded) return;
   padded_rows_.resize(static_cast<std::size_t>(std::max<Index>(slab_.points(), 1)));
   // The exchange plan: this rank's grid rows to the transform slabs that hold them. Both layouts are in rank
@@ -75,10 +77,23 @@ void DistributedConvolution::set_multiplier(std::vector<double> multiplier) {
       sum += weight * multiplier_[static_cast<std::size_t>(c * ly_ + row)];
   }
   self_response_ = sum_over_ranks(sum, comm_);
+  if (alone_) {
+    // The serial engine's layout: ly rows (ky) by lx / 2 + 1 columns (kx); here column-major by kx.
+    const Index columns = fft_->spectrum_count();
+    Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> m(ly_, columns);
+    for (Index c = 0; c < columns; ++c)
+      for (Index row = 0; row < ly_; ++row)
+        m(row, c) = multiplier_[static_cast<std::size_t>(c * ly_ + row)];
+    alone_->set_multiplier(m);
+  }
 }
 
 void DistributedConvolution::apply(const Real* in, Real* out) {
   const Index nx = slab_.nx;
+  if (alone_) {
+    alone_->apply(in, out);
+    return;
+  }
   if (!padded_) {
     apply([&](Index r, Real* row) { std::copy_n(in + r * nx, nx, row); },
           [&](Index r, const Real* row) { std::copy_n(row, nx, out + r * nx); });
@@ -107,6 +122,22 @@ void DistributedConvolution::apply(const Real* in, Real* out) {
 
 void DistributedConvolution::apply(const RowProducer& produce, const RowConsumer& consume,
                                    const std::function<void(double)>& multiplied) {
+  if (alone_) {
+    auto rows_in = [&](Index first, Index rows, double* buffer, Index ld, int) {
+      for (Index i = 0; i < rows; ++i)
+        produce(first + i, buffer + i * ld);
+    };
+    auto rows_out = [&](Index first, Index rows, const double* buffer, Index ld, int) {
+      for (Index i = 0; i < rows; ++i)
+        consume(first + i, buffer + i * ld);
+    };
+    auto product = [&](double energy) { multiplied(energy); };
+    if (multiplied)
+      alone_->apply(rows_in, rows_out, {}, true, product);
+    else
+      alone_->apply(rows_in, rows_out);
+    return;
+  }
   const Slab& transform_slab = fft_->slab();
   const Index nx = slab_.nx, ny = slab_.ny;
   if (!padded_) {

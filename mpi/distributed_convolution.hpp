@@ -12,6 +12,7 @@
 
 #include <mpi.h>
 
+#include "contactbench/bem/convolution.hpp"
 #include "contactbench/core/grid.hpp"
 #include "contactbench/core/types.hpp"
 #include "contactbench/mpi/distributed_fft.hpp"
@@ -70,7 +71,11 @@ class DistributedConvolution {
   std::vector<int> send_counts_, send_offsets_, receive_counts_, receive_offsets_;
   std::vector<double> receive_buffer_;
   std::vector<double> column_weight_;  // per spectral column: 1 or 2 (its Hermitian partner counted)
-  std::vector<double> padded_rows_;    // padded only: this rank's grid rows, produced or to be consumed
+  // One rank on one thread: the serial engine (bem/convolution.hpp: rows, then columns a block at a time in
+  // cache with the multiply between, no transpose), the same multiplier; FFTW-MPI's plan with its local
+  // transposes then only makes the multiplier.
+  std::unique_ptr<Convolution<double>> alone_;
+  std::vector<double> padded_rows_;  // padded only: this rank's grid rows, produced or to be consumed
 };
 
 }  // namespace contactbench::mpi
