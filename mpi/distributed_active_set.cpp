@@ -560,20 +560,41 @@ DistributedActiveSet::Sums DistributedActiveSet::update_sets(std::vector<double>
 // The inner CG (bem/solvers/active_set_inner_cg.cpp), its passes apart: the window sums over the halo, then
 // the transform, then the element-wise work (the serial method rides them in the transform's callbacks).
 
-template <class Emit>
-void DistributedActiveSet::window_sums(const std::vector<double>& values, Emit emit) {
-  start_window_sums(values);
+template <class Value, class Emit>
+void DistributedActiveSet::window_sums(Value value, Emit emit) {
+  start_window_sums(value);
   for (Index r = 0; r < slab_.count; ++r)
-    emit(r, window_sums_of(r));
+    emit(r, window_sums_of(r, value));
 }
 
-void DistributedActiveSet::start_window_sums(const std::vector<double>& values) {
-  halo_->exchange(values.data());
+// Only the rows other ranks read (those within the window's radius of the slab's edges) are written to
+// window_inputs_ and sent; the slab's own rows are made from `value` as the window reaches them.
+template <class Value>
+void DistributedActiveSet::start_window_sums(Value value) {
+  const Index nx = grid_.nx, radius = extension_radius();
+  for (Index r = 0; r < slab_.count; ++r) {
+    if (r >= radius && r < slab_.count - radius) r = slab_.count - radius;
+    for (Index x = 0; x < nx; ++x) {
+      const std::size_t k = static_cast<std::size_t>(r * nx + x);
+      window_inputs_[k] = value(k);
+    }
+  }
+  halo_->exchange(window_inputs_.data());
   window_.restart();
 }
 
-const double* DistributedActiveSet::window_sums_of(Index r) {
-  auto value_row = [&](Index y, double* out) { std::copy_n(halo_->row(y), grid_.nx, out); };
+template <class Value>
+const double* DistributedActiveSet::window_sums_of(Index r, Value value) {
+  const Index nx = grid_.nx;
+  auto value_row = [&](Index y, double* out) {
+    const Index local = y - slab_.start;
+    if (local >= 0 && local < slab_.count) {
+      for (Index x = 0; x < nx; ++x)
+        out[x] = value(static_cast<std::size_t>(local * nx + x));
+    } else {
+      std::copy_n(halo_->row(y), nx, out);
+    }
+  };
   return window_.sums(slab_.start + r, value_row);
 }
 
@@ -665,16 +686,15 @@ DistributedActiveSet::Sums DistributedActiveSet::count_on_set(std::vector<double
 // by the flips when few changed: the same integer counts and weights either way).
 void DistributedActiveSet::make_extension_weights(Index radius) {
   const double floor = kExtensionFloor * static_cast<double>((2 * radius + 1) * (2 * radius + 1));
-  for (std::size_t k = 0; k < n_; ++k)
-    window_inputs_[k] = in_[k] ? 1.0 : 0.0;
   const Index nx = grid_.nx;
-  window_sums(window_inputs_, [&](Index r, const double* sums) {
-    for (Index x = 0; x < nx; ++x) {
-      const std::size_t k = static_cast<std::size_t>(r * nx + x);
-      window_count_[k] = static_cast<std::uint16_t>(sums[x]);
-      extension_weight_[k] = in_[k] ? 0.0f : static_cast<float>(1 / std::max(sums[x], floor));
-    }
-  });
+  window_sums([&](std::size_t k) { return in_[k] ? 1.0 : 0.0; },
+              [&](Index r, const double* sums) {
+                for (Index x = 0; x < nx; ++x) {
+                  const std::size_t k = static_cast<std::size_t>(r * nx + x);
+                  window_count_[k] = static_cast<std::uint16_t>(sums[x]);
+                  extension_weight_[k] = in_[k] ? 0.0f : static_cast<float>(1 / std::max(sums[x], floor));
+                }
+              });
 }
 
 // Filter: E r into the filter (rounded to float, as the serial single-precision filter's input), F E r out
@@ -685,14 +705,11 @@ void DistributedActiveSet::make_extension_weights(Index radius) {
 double DistributedActiveSet::filter_pass(const CgStep& step, double& z_sum) {
   const Index nx = grid_.nx, radius = step.radius;
   const double cc = step.shift_c;
-  if (radius > 0) {
-    for (std::size_t k = 0; k < n_; ++k)
-      window_inputs_[k] = (in_[k] ? r_[k] : cc) - cc;
-    start_window_sums(window_inputs_);
-  }
+  auto window_input = [&](std::size_t k) { return (in_[k] ? r_[k] : cc) - cc; };
+  if (radius > 0) start_window_sums(window_input);
   double sums[2] = {0, 0};  // <E r, F E r> in the filter's scale, the sum on the set after E^T
   auto produce = [&](Index r, double* row) {
-    const double* window = radius > 0 ? window_sums_of(r) : nullptr;
+    const double* window = radius > 0 ? window_sums_of(r, window_input) : nullptr;
     for (Index x = 0; x < nx; ++x) {
       const std::size_t k = static_cast<std::size_t>(r * nx + x);
       const double off_set = radius > 0 ? window[x] * static_cast<double>(extension_weight_[k]) : 0.0;
@@ -729,13 +746,10 @@ double DistributedActiveSet::filter_pass(const CgStep& step, double& z_sum) {
 // G t> from the spectrum before the inverse transform, and the steps in its consumer.
 DistributedActiveSet::Sums DistributedActiveSet::operator_pass(std::vector<double>& p, CgStep& step) {
   const Index nx = grid_.nx, radius = step.radius;
-  if (radius > 0) {
-    for (std::size_t k = 0; k < n_; ++k)
-      window_inputs_[k] = in_[k] ? 0.0 : z_[k];
-    start_window_sums(window_inputs_);
-  }
+  auto window_input = [&](std::size_t k) { return in_[k] ? 0.0 : z_[k]; };
+  if (radius > 0) start_window_sums(window_input);
   auto produce = [&](Index r, double* row) {
-    const double* window = radius > 0 ? window_sums_of(r) : nullptr;
+    const double* window = radius > 0 ? window_sums_of(r, window_input) : nullptr;
     for (Index x = 0; x < nx; ++x) {
       const std::size_t k = static_cast<std::size_t>(r * nx + x);
       if (in_[k]) {

@@ -109,12 +109,15 @@ class DistributedActiveSet {
                   Index budget, const std::function<void()>& between);
   Sums count_on_set(std::vector<double>& p, double scale);
   void make_extension_weights(Index radius);
-  // The window sums of `values` (this rank's slab) for each of its rows: emit(local_row, sums).
-  template <class Emit>
-  void window_sums(const std::vector<double>& values, Emit emit);
-  // The halo of `values` fetched and the window restarted; then window_sums_of(r) for r = 0, 1, ... in order.
-  void start_window_sums(const std::vector<double>& values);
-  const double* window_sums_of(Index r);
+  // The window sums of the values value(k) of this rank's slab for each of its rows: emit(local_row, sums).
+  template <class Value, class Emit>
+  void window_sums(Value value, Emit emit);
+  // The halo of the values fetched and the window restarted; then window_sums_of(r, value) for r = 0, 1, ...
+  // in order, with the same values.
+  template <class Value>
+  void start_window_sums(Value value);
+  template <class Value>
+  const double* window_sums_of(Index r, Value value);
   const std::vector<double>& gathered(const double* mine, int count) const;
   double filter_pass(const CgStep& step, double& z_sum);
   Sums operator_pass(std::vector<double>& p, CgStep& step);
