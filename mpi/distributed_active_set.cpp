@@ -277,8 +277,8 @@ void DistributedActiveSet::measure_heights() {
 }
 
 // G e_0, the response to a unit pressure at node 0, on the whole grid on every rank: the rows a column
-// update touches can be any (periodic), and 8 B a point of the grid is below the ~100 B a point of a slab
-// only while the ranks are few (docs/mpi.md).
+// update touches can be any (periodic), and 8 B a point of the grid is below what a slab holds a point (56 B
+// of fields, bytes(), and the transforms) only while the ranks are few (docs/mpi.md).
 void DistributedActiveSet::make_response() {
   std::vector<double> unit(n_, 0.0), local(n_, 0.0);
   if (slab_.start == 0 && slab_.count > 0) unit[0] = 1;
