@@ -159,8 +159,7 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
                     "distributed active_set: the local heights have " + std::to_string(h_.size()) +
                         " values, this rank's slab " + std::to_string(n_),
                     comm);
-  for (auto* field : {&u_, &r_, &z_, &t_, &into_filter_, &from_filter_, &direction_, &response_of_direction_,
-                      &window_inputs_})
+  for (auto* field : {&u_, &r_, &z_, &t_, &window_inputs_})
     field->assign(n_, 0.0);
   extension_weight_.assign(n_, 0.0f);
   window_count_.assign(n_, 0);
@@ -168,9 +167,11 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
   plastic_.assign(n_, 0);
   changes_.reserve(kFewChanges);
   measure_heights();
-  if (extension_radius() > 0)
+  if (extension_radius() > 0) {
     halo_ = std::make_unique<RowExchange>(
         RowExchange::halo(layout_, rank_of(comm), extension_radius(), grid.periodic, comm));
+    window_ = WindowRows(grid.nx, grid.ny, extension_radius(), grid.periodic);
+  }
   make_response();
   const Index nx = grid.nx, ny = grid.ny;
   if (nx % 2 == 0 && ny % 2 == 0 && nx / 2 >= kCoarsest && ny / 2 >= kCoarsest)
@@ -180,10 +181,9 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
 DistributedActiveSet::~DistributedActiveSet() = default;
 
 std::size_t DistributedActiveSet::bytes() const {
-  // h, u, r, z, t, the filter's input and output, the direction and its image, the window inputs; the weights
-  // (float), the window counts (16 bits) and the two sets (8 bits each): 88 B a point of the slab; the whole
-  // response: 8 B a point of the grid.
-  const std::size_t doubles = 10 * n_ + response_.size();
+  // h, u, r, z, t, the window inputs; the weights (float), the window counts (16 bits) and the two sets (8
+  // bits each): 56 B a point of the slab; the whole response: 8 B a point of the grid.
+  const std::size_t doubles = 6 * n_ + response_.size();
   return sizeof(double) * doubles + sizeof(float) * n_ + 4 * n_ + operator_.bytes() + filter_->bytes() +
          (coarse_ ? coarse_->bytes() : 0);
 }
@@ -199,8 +199,7 @@ Index DistributedActiveSet::extension_radius() const {
 DistributedActiveSet::Sums DistributedActiveSet::reduced(const Sums& mine) const {
   const int ranks = size_of(comm_);
   const double values[8] = {mine.a, mine.b, mine.c, mine.d, mine.g, mine.h, mine.e, mine.f};
-  std::vector<double> all(static_cast<std::size_t>(8 * ranks));
-  MPI_Allgather(values, 8, MPI_DOUBLE, all.data(), 8, MPI_DOUBLE, comm_);
+  const std::vector<double>& all = gathered(values, 8);
   Sums total;
   total.e = total.f = -kInfinity;
   for (int r = 0; r < ranks; ++r) {
@@ -220,12 +219,24 @@ DistributedActiveSet::Sums DistributedActiveSet::over_points(Body body) {
 template <class Input, class Output>
 DistributedActiveSet::Sums DistributedActiveSet::fresh_displacement(std::vector<double>& p, Input on_input,
                                                                     Output on_output) {
-  for (std::size_t k = 0; k < n_; ++k)
-    on_input(k);
-  operator_.apply(p.data(), u_.data());
+  // p's rescaling on its way into the transform, u and the sums on their way out (the serial count_on_set).
+  const Index nx = grid_.nx;
   Sums part;
-  for (std::size_t k = 0; k < n_; ++k)
-    on_output(k, part);
+  operator_.apply(
+      [&](Index r, double* row) {
+        for (Index x = 0; x < nx; ++x) {
+          const std::size_t k = static_cast<std::size_t>(r * nx + x);
+          on_input(k);
+          row[x] = p[k];
+        }
+      },
+      [&](Index r, const double* row) {
+        for (Index x = 0; x < nx; ++x) {
+          const std::size_t k = static_cast<std::size_t>(r * nx + x);
+          u_[k] = row[x];
+          on_output(k, part);
+        }
+      });
   displacement_current_ = displacement_fresh_ = true;
   return reduced(part);
 }
@@ -266,8 +277,8 @@ void DistributedActiveSet::measure_heights() {
 }
 
 // G e_0, the response to a unit pressure at node 0, on the whole grid on every rank: the rows a column
-// update touches can be any (periodic), and 8 B a point of the grid is below the ~100 B a point of a slab
-// only while the ranks are few (docs/mpi.md).
+// update touches can be any (periodic), and 8 B a point of the grid is below what a slab holds a point (56 B
+// of fields, bytes(), and the transforms) only while the ranks are few (docs/mpi.md).
 void DistributedActiveSet::make_response() {
   std::vector<double> unit(n_, 0.0), local(n_, 0.0);
   if (slab_.start == 0 && slab_.count > 0) unit[0] = 1;
@@ -549,14 +560,49 @@ DistributedActiveSet::Sums DistributedActiveSet::update_sets(std::vector<double>
 // The inner CG (bem/solvers/active_set_inner_cg.cpp), its passes apart: the window sums over the halo, then
 // the transform, then the element-wise work (the serial method rides them in the transform's callbacks).
 
-template <class Emit>
-void DistributedActiveSet::window_sums(const std::vector<double>& values, Index radius, Emit emit) {
-  halo_->exchange(values.data());
-  if (slab_.count == 0) return;
-  WindowRows window(grid_.nx, grid_.ny, radius, grid_.periodic);
-  auto value_row = [&](Index y, double* out) { std::copy_n(halo_->row(y), grid_.nx, out); };
+template <class Value, class Emit>
+void DistributedActiveSet::window_sums(Value value, Emit emit) {
+  start_window_sums(value);
   for (Index r = 0; r < slab_.count; ++r)
-    emit(r, window.sums(slab_.start + r, value_row));
+    emit(r, window_sums_of(r, value));
+}
+
+// Only the rows other ranks read (those within the window's radius of the slab's edges) are written to
+// window_inputs_ and sent; the slab's own rows are made from `value` as the window reaches them.
+template <class Value>
+void DistributedActiveSet::start_window_sums(Value value) {
+  const Index nx = grid_.nx, radius = extension_radius();
+  for (Index r = 0; r < slab_.count; ++r) {
+    if (r >= radius && r < slab_.count - radius) r = slab_.count - radius;
+    for (Index x = 0; x < nx; ++x) {
+      const std::size_t k = static_cast<std::size_t>(r * nx + x);
+      window_inputs_[k] = value(k);
+    }
+  }
+  halo_->exchange(window_inputs_.data());
+  window_.restart();
+}
+
+template <class Value>
+const double* DistributedActiveSet::window_sums_of(Index r, Value value) {
+  const Index nx = grid_.nx;
+  auto value_row = [&](Index y, double* out) {
+    const Index local = y - slab_.start;
+    if (local >= 0 && local < slab_.count) {
+      for (Index x = 0; x < nx; ++x)
+        out[x] = value(static_cast<std::size_t>(local * nx + x));
+    } else {
+      std::copy_n(halo_->row(y), nx, out);
+    }
+  };
+  return window_.sums(slab_.start + r, value_row);
+}
+
+// The gathered values of every rank, `count` each, in rank order (a buffer kept between calls).
+const std::vector<double>& DistributedActiveSet::gathered(const double* mine, int count) const {
+  gathered_.resize(static_cast<std::size_t>(count * size_of(comm_)));
+  MPI_Allgather(mine, count, MPI_DOUBLE, gathered_.data(), count, MPI_DOUBLE, comm_);
+  return gathered_;
 }
 
 Index DistributedActiveSet::cg_on_set(std::vector<double>& p, double scale, double reduction, double absolute,
@@ -640,62 +686,54 @@ DistributedActiveSet::Sums DistributedActiveSet::count_on_set(std::vector<double
 // by the flips when few changed: the same integer counts and weights either way).
 void DistributedActiveSet::make_extension_weights(Index radius) {
   const double floor = kExtensionFloor * static_cast<double>((2 * radius + 1) * (2 * radius + 1));
-  for (std::size_t k = 0; k < n_; ++k)
-    window_inputs_[k] = in_[k] ? 1.0 : 0.0;
   const Index nx = grid_.nx;
-  window_sums(window_inputs_, radius, [&](Index r, const double* sums) {
-    for (Index x = 0; x < nx; ++x) {
-      const std::size_t k = static_cast<std::size_t>(r * nx + x);
-      window_count_[k] = static_cast<std::uint16_t>(sums[x]);
-      extension_weight_[k] = in_[k] ? 0.0f : static_cast<float>(1 / std::max(sums[x], floor));
-    }
-  });
+  window_sums([&](std::size_t k) { return in_[k] ? 1.0 : 0.0; },
+              [&](Index r, const double* sums) {
+                for (Index x = 0; x < nx; ++x) {
+                  const std::size_t k = static_cast<std::size_t>(r * nx + x);
+                  window_count_[k] = static_cast<std::uint16_t>(sums[x]);
+                  extension_weight_[k] = in_[k] ? 0.0f : static_cast<float>(1 / std::max(sums[x], floor));
+                }
+              });
 }
 
 // Filter: E r into the filter (rounded to float, as the serial single-precision filter's input), F E r out
 // (rounded to float, as its output), z kept on the set and weighted off it. Returns <E r, F E r> scaled
-// back; z_sum: the sum on the set that E^T will leave.
+// back; z_sum: the sum on the set that E^T will leave. As the serial filter pass: the window sums and the
+// input ride in the transform's producer, <E r, F E r> is the transform's spectral product, z is made in its
+// consumer.
 double DistributedActiveSet::filter_pass(const CgStep& step, double& z_sum) {
   const Index nx = grid_.nx, radius = step.radius;
   const double cc = step.shift_c;
-  auto filter_input = [&](std::size_t k, double off_set) {
-    const double on_set = r_[k] - cc;
-    into_filter_[k] = static_cast<float>((in_[k] ? on_set : off_set) * step.to_filter);
-  };
-  if (radius > 0) {
-    for (std::size_t k = 0; k < n_; ++k)
-      window_inputs_[k] = (in_[k] ? r_[k] : cc) - cc;
-    window_sums(window_inputs_, radius, [&](Index r, const double* sums) {
-      for (Index x = 0; x < nx; ++x) {
-        const std::size_t k = static_cast<std::size_t>(r * nx + x);
-        filter_input(k, sums[x] * static_cast<double>(extension_weight_[k]));
-      }
-    });
-  } else {
-    for (std::size_t k = 0; k < n_; ++k)
-      filter_input(k, 0.0);
-  }
-  filter_->apply(into_filter_.data(), from_filter_.data());
+  auto window_input = [&](std::size_t k) { return (in_[k] ? r_[k] : cc) - cc; };
+  if (radius > 0) start_window_sums(window_input);
   double sums[2] = {0, 0};  // <E r, F E r> in the filter's scale, the sum on the set after E^T
-  for (Index r = 0; r < slab_.count; ++r) {
+  auto produce = [&](Index r, double* row) {
+    const double* window = radius > 0 ? window_sums_of(r, window_input) : nullptr;
+    for (Index x = 0; x < nx; ++x) {
+      const std::size_t k = static_cast<std::size_t>(r * nx + x);
+      const double off_set = radius > 0 ? window[x] * static_cast<double>(extension_weight_[k]) : 0.0;
+      const double on_set = r_[k] - cc;
+      row[x] = static_cast<float>((in_[k] ? on_set : off_set) * step.to_filter);
+    }
+  };
+  auto consume = [&](Index r, const double* row) {
     double row_sum = 0;
     for (Index x = 0; x < nx; ++x) {
       const std::size_t k = static_cast<std::size_t>(r * nx + x);
-      sums[0] += into_filter_[k] * from_filter_[k];
-      const double filtered = static_cast<double>(static_cast<float>(from_filter_[k])) * step.from_filter;
+      const double filtered = static_cast<double>(static_cast<float>(row[x])) * step.from_filter;
       const double w = static_cast<double>(extension_weight_[k]);
       z_[k] = in_[k] ? filtered : (radius > 0 ? filtered * w : 0.0);
       const double times = radius > 0 ? static_cast<double>(window_count_[k]) : 0.0;
       row_sum += z_[k] * (in_[k] ? 1.0 : times);
     }
     sums[1] += row_sum;
-  }
-  const int ranks = size_of(comm_);
-  std::vector<double> all(static_cast<std::size_t>(2 * ranks));
-  MPI_Allgather(sums, 2, MPI_DOUBLE, all.data(), 2, MPI_DOUBLE, comm_);
+  };
+  filter_->apply(produce, consume, [&](double energy) { sums[0] = energy; });
+  const std::vector<double>& all = gathered(sums, 2);
   double rz = 0;
   z_sum = 0;
-  for (int r = 0; r < ranks; ++r) {
+  for (int r = 0; r < size_of(comm_); ++r) {
     rz += all[static_cast<std::size_t>(2 * r)];
     z_sum += all[static_cast<std::size_t>(2 * r + 1)];
   }
@@ -704,47 +742,40 @@ double DistributedActiveSet::filter_pass(const CgStep& step, double& z_sum) {
 
 // Operator: the direction t = (E^T z - zbar) + beta t on the set, G t, the step tau = <r, z> / <t, G t>,
 // then p -= tau t, u -= tau G t, r -= tau G t and the sums of the new residual and the pressure's change.
+// As the serial operator pass: t is made in the transform's producer (E^T's window sums riding there), <t,
+// G t> from the spectrum before the inverse transform, and the steps in its consumer.
 DistributedActiveSet::Sums DistributedActiveSet::operator_pass(std::vector<double>& p, CgStep& step) {
   const Index nx = grid_.nx, radius = step.radius;
-  auto direction = [&](std::size_t k, double transpose_sum) {
-    if (in_[k]) {
-      const double zk = z_[k] + transpose_sum;
-      t_[k] = (zk - step.zbar) + step.beta * t_[k];
-      direction_[k] = t_[k];
-    } else {
-      direction_[k] = 0;
+  auto window_input = [&](std::size_t k) { return in_[k] ? 0.0 : z_[k]; };
+  if (radius > 0) start_window_sums(window_input);
+  auto produce = [&](Index r, double* row) {
+    const double* window = radius > 0 ? window_sums_of(r, window_input) : nullptr;
+    for (Index x = 0; x < nx; ++x) {
+      const std::size_t k = static_cast<std::size_t>(r * nx + x);
+      if (in_[k]) {
+        const double zk = z_[k] + (radius > 0 ? window[x] : 0.0);
+        t_[k] = (zk - step.zbar) + step.beta * t_[k];
+        row[x] = t_[k];
+      } else {
+        row[x] = 0;
+      }
     }
   };
-  if (radius > 0) {
-    for (std::size_t k = 0; k < n_; ++k)
-      window_inputs_[k] = in_[k] ? 0.0 : z_[k];
-    window_sums(window_inputs_, radius, [&](Index r, const double* sums) {
-      for (Index x = 0; x < nx; ++x)
-        direction(static_cast<std::size_t>(r * nx + x), sums[x]);
-    });
-  } else {
-    for (std::size_t k = 0; k < n_; ++k)
-      direction(k, 0.0);
-  }
-  operator_.apply(direction_.data(), response_of_direction_.data());
-  double product = 0;
-  for (std::size_t k = 0; k < n_; ++k)
-    product += direction_[k] * response_of_direction_[k];
-  const int ranks = size_of(comm_);
-  std::vector<double> all(static_cast<std::size_t>(ranks));
-  MPI_Allgather(&product, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, comm_);
-  step.t_gt = 0;
-  for (const double v : all)
-    step.t_gt += v;
-  step.tau = step.t_gt > 0 ? step.rz / step.t_gt : 0.0;
+  auto multiplied = [&](double energy) {
+    const std::vector<double>& all = gathered(&energy, 1);
+    step.t_gt = 0;
+    for (const double v : all)
+      step.t_gt += v;
+    step.tau = step.t_gt > 0 ? step.rz / step.t_gt : 0.0;
+  };
   Sums s;
   s.e = s.f = -kInfinity;
-  const double tau = step.tau, shift = step.c;
-  for (Index r = 0; r < slab_.count; ++r) {
+  auto consume = [&](Index r, const double* row) {
+    const double tau = step.tau, shift = step.c;
     double moved = 0, sum = 0;
     for (Index x = 0; x < nx; ++x) {
       const std::size_t k = static_cast<std::size_t>(r * nx + x);
-      const double w = response_of_direction_[k];
+      const double w = row[x];
       u_[k] -= tau * w;
       if (in_[k]) {
         const double change = tau * t_[k];
@@ -757,7 +788,8 @@ DistributedActiveSet::Sums DistributedActiveSet::operator_pass(std::vector<doubl
     }
     s.c += moved;
     s.d += sum;
-  }
+  };
+  operator_.apply(produce, consume, multiplied);
   return reduced(s);
 }
 

@@ -26,6 +26,7 @@
 #include <mpi.h>
 
 #include "contactbench/bem/active_set.hpp"
+#include "contactbench/bem/box_sum.hpp"
 #include "contactbench/core/grid.hpp"
 #include "contactbench/mpi/distributed_convolution.hpp"
 #include "contactbench/mpi/distributed_half_space.hpp"
@@ -108,9 +109,16 @@ class DistributedActiveSet {
                   Index budget, const std::function<void()>& between);
   Sums count_on_set(std::vector<double>& p, double scale);
   void make_extension_weights(Index radius);
-  // The window sums of `values` (this rank's slab) for each of its rows: emit(local_row, sums).
-  template <class Emit>
-  void window_sums(const std::vector<double>& values, Index radius, Emit emit);
+  // The window sums of the values value(k) of this rank's slab for each of its rows: emit(local_row, sums).
+  template <class Value, class Emit>
+  void window_sums(Value value, Emit emit);
+  // The halo of the values fetched and the window restarted; then window_sums_of(r, value) for r = 0, 1, ...
+  // in order, with the same values.
+  template <class Value>
+  void start_window_sums(Value value);
+  template <class Value>
+  const double* window_sums_of(Index r, Value value);
+  const std::vector<double>& gathered(const double* mine, int count) const;
   double filter_pass(const CgStep& step, double& z_sum);
   Sums operator_pass(std::vector<double>& p, CgStep& step);
   Sums start_sets(std::vector<double>& p, bool warm, double total, double& d);
@@ -131,7 +139,9 @@ class DistributedActiveSet {
   std::size_t n_;  // this rank's points
   double points_;  // all ranks' points
   std::vector<double> h_, u_, r_, z_, t_;
-  std::vector<double> into_filter_, from_filter_, direction_, response_of_direction_, window_inputs_;
+  std::vector<double> window_inputs_;
+  WindowRows window_;  // the window sums' rows, made once (start_window_sums restarts them)
+  mutable std::vector<double> gathered_;  // gathered()'s buffer
   std::vector<float> extension_weight_;
   std::vector<std::uint16_t> window_count_;
   std::vector<std::uint8_t> in_, plastic_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <complex>
 #include <string>
 
 #include "contactbench/core/error.hpp"
@@ -31,7 +32,15 @@ DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MP
       ly_(padded ? 2 * grid.ny : grid.ny),
       fft_(std::make_unique<DistributedRealFft2d>(lx_, ly_, comm, threads)),
       multiplier_(static_cast<std::size_t>(fft_->spectrum_count() * ly_), 0.0) {
+  // Each stored column kx stands for +kx and -kx, except kx = 0 and the Nyquist column (even lx).
+  for (Index c = 0; c < fft_->spectrum_count(); ++c) {
+    const Index kx = fft_->spectrum_start() + c;
+    column_weight_.push_back((kx == 0 || (lx_ % 2 == 0 && kx == lx_ / 2)) ? 1.0 : 2.0);
+  }
+  if (size_of(comm) == 1 && threads <= 1)
+    alone_ = std::make_unique<Convolution<double>>(grid.nx, grid.ny, padded, 1);
   if (!padded) return;
+  padded_rows_.resize(static_cast<std::size_t>(std::max<Index>(slab_.points(), 1)));
   // The exchange plan: this rank's grid rows to the transform slabs that hold them. Both layouts are in rank
   // order, so what a rank sends (receives) is contiguous and in row order.
   const Index nx = grid.nx, ny = grid.ny;
@@ -61,47 +70,125 @@ void DistributedConvolution::set_multiplier(std::vector<double> multiplier) {
                 std::to_string(fft_->spectrum_count()) + " spectral columns need " +
                 std::to_string(multiplier_.size()));
   multiplier_ = std::move(multiplier);
-  // Each stored column kx stands for +kx and -kx, except kx = 0 and the Nyquist column (even lx).
   double sum = 0;
   for (Index c = 0; c < fft_->spectrum_count(); ++c) {
-    const Index kx = fft_->spectrum_start() + c;
-    const double weight = (kx == 0 || (lx_ % 2 == 0 && kx == lx_ / 2)) ? 1.0 : 2.0;
+    const double weight = column_weight_[static_cast<std::size_t>(c)];
     for (Index row = 0; row < ly_; ++row)
       sum += weight * multiplier_[static_cast<std::size_t>(c * ly_ + row)];
   }
   self_response_ = sum_over_ranks(sum, comm_);
+  if (alone_) {
+    // The serial engine's layout: ly rows (ky) by lx / 2 + 1 columns (kx); here column-major by kx.
+    const Index columns = fft_->spectrum_count();
+    Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> m(ly_, columns);
+    for (Index c = 0; c < columns; ++c)
+      for (Index row = 0; row < ly_; ++row)
+        m(row, c) = multiplier_[static_cast<std::size_t>(c * ly_ + row)];
+    alone_->set_multiplier(m);
+  }
 }
 
 void DistributedConvolution::apply(const Real* in, Real* out) {
+  const Index nx = slab_.nx;
+  if (alone_) {
+    alone_->apply(in, out);
+    return;
+  }
+  if (!padded_) {
+    apply([&](Index r, Real* row) { std::copy_n(in + r * nx, nx, row); },
+          [&](Index r, const Real* row) { std::copy_n(row, nx, out + r * nx); });
+    return;
+  }
+  // Padded: the exchange straight from `in` and back into `out` (no copy through padded_rows_).
+  const Slab& transform_slab = fft_->slab();
+  const Index ny = slab_.ny;
+  for (Index r = 0; r < transform_slab.count; ++r)
+    std::fill_n(fft_->real_row(r), lx_, 0.0);
+  MPI_Alltoallv(in, send_counts_.data(), send_offsets_.data(), MPI_DOUBLE, receive_buffer_.data(),
+                receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, comm_);
+  const Index rows = shared_rows(0, ny, transform_slab.start, transform_slab.count, ny);
+  for (Index r = 0; r < rows; ++r)
+    std::copy_n(receive_buffer_.data() + r * nx, nx, fft_->real_row(r));
+  fft_->forward();
+  Complex* spectrum = fft_->spectrum();
+  for (std::size_t i = 0; i < multiplier_.size(); ++i)
+    spectrum[i] *= multiplier_[i];
+  fft_->backward();
+  for (Index r = 0; r < rows; ++r)
+    std::copy_n(fft_->real_row(r), nx, receive_buffer_.data() + r * nx);
+  MPI_Alltoallv(receive_buffer_.data(), receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, out,
+                send_counts_.data(), send_offsets_.data(), MPI_DOUBLE, comm_);
+}
+
+void DistributedConvolution::apply(const RowProducer& produce, const RowConsumer& consume,
+                                   const std::function<void(double)>& multiplied) {
+  if (alone_) {
+    auto rows_in = [&](Index first, Index rows, double* buffer, Index ld, int) {
+      for (Index i = 0; i < rows; ++i)
+        produce(first + i, buffer + i * ld);
+    };
+    auto rows_out = [&](Index first, Index rows, const double* buffer, Index ld, int) {
+      for (Index i = 0; i < rows; ++i)
+        consume(first + i, buffer + i * ld);
+    };
+    auto product = [&](double energy) { multiplied(energy); };
+    if (multiplied)
+      alone_->apply(rows_in, rows_out, {}, true, product);
+    else
+      alone_->apply(rows_in, rows_out);
+    return;
+  }
   const Slab& transform_slab = fft_->slab();
   const Index nx = slab_.nx, ny = slab_.ny;
   if (!padded_) {
-    fft_->load(in);
+    for (Index r = 0; r < slab_.count; ++r)
+      produce(r, fft_->real_row(r));
   } else {
     // The transform's slab cleared (the last inverse wrote all of it: that is the zero padding), then the
     // grid rows it owns arrive from their ranks.
+    for (Index r = 0; r < slab_.count; ++r)
+      produce(r, padded_rows_.data() + r * nx);
     for (Index r = 0; r < transform_slab.count; ++r)
       std::fill_n(fft_->real_row(r), lx_, 0.0);
-    MPI_Alltoallv(in, send_counts_.data(), send_offsets_.data(), MPI_DOUBLE, receive_buffer_.data(),
-                  receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, comm_);
+    MPI_Alltoallv(padded_rows_.data(), send_counts_.data(), send_offsets_.data(), MPI_DOUBLE,
+                  receive_buffer_.data(), receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, comm_);
     const Index rows = shared_rows(0, ny, transform_slab.start, transform_slab.count, ny);
     for (Index r = 0; r < rows; ++r)
       std::copy_n(receive_buffer_.data() + r * nx, nx, fft_->real_row(r));
   }
   fft_->forward();
   Complex* spectrum = fft_->spectrum();
-  for (std::size_t i = 0; i < multiplier_.size(); ++i)
-    spectrum[i] *= multiplier_[i];
+  if (multiplied) {
+    // The product from the spectrum (Parseval; M carries the pair's 1/(lx ly)), made in the multiply's pass.
+    double energy = 0;
+    for (Index c = 0; c < fft_->spectrum_count(); ++c) {
+      double column = 0;
+      Complex* values = spectrum + c * ly_;
+      const double* m = multiplier_.data() + c * ly_;
+      for (Index row = 0; row < ly_; ++row) {
+        column += m[row] * std::norm(values[row]);
+        values[row] *= m[row];
+      }
+      energy += column_weight_[static_cast<std::size_t>(c)] * column;
+    }
+    multiplied(energy);
+  } else {
+    for (std::size_t i = 0; i < multiplier_.size(); ++i)
+      spectrum[i] *= multiplier_[i];
+  }
   fft_->backward();
   if (!padded_) {
-    fft_->store(out);
+    for (Index r = 0; r < slab_.count; ++r)
+      consume(r, fft_->real_row(r));
   } else {
     const Index rows = shared_rows(0, ny, transform_slab.start, transform_slab.count, ny);
     for (Index r = 0; r < rows; ++r)
       std::copy_n(fft_->real_row(r), nx, receive_buffer_.data() + r * nx);
     // The reverse exchange: what was received goes back where it came from.
-    MPI_Alltoallv(receive_buffer_.data(), receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, out,
-                  send_counts_.data(), send_offsets_.data(), MPI_DOUBLE, comm_);
+    MPI_Alltoallv(receive_buffer_.data(), receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE,
+                  padded_rows_.data(), send_counts_.data(), send_offsets_.data(), MPI_DOUBLE, comm_);
+    for (Index r = 0; r < slab_.count; ++r)
+      consume(r, padded_rows_.data() + r * nx);
   }
 }
 

@@ -6,11 +6,13 @@
 // such convolutions.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
 #include <mpi.h>
 
+#include "contactbench/bem/convolution.hpp"
 #include "contactbench/core/grid.hpp"
 #include "contactbench/core/types.hpp"
 #include "contactbench/mpi/distributed_fft.hpp"
@@ -39,11 +41,22 @@ class DistributedConvolution {
 
   // Bytes this rank holds for the convolution: the transform's slab, the multiplier, the exchange buffer.
   std::size_t bytes() const {
-    return fft_->bytes() + sizeof(double) * (multiplier_.capacity() + receive_buffer_.capacity());
+    return fft_->bytes() + sizeof(double) * (multiplier_.capacity() + receive_buffer_.capacity() +
+                                             padded_rows_.capacity() + column_weight_.capacity());
   }
 
   // out = conv(in) on this rank's slab (count x nx, row-major); in and out may be the same array. Collective.
   void apply(const Real* in, Real* out);
+
+  // The same through callbacks, so that a caller's element-wise work rides in the transform's own passes
+  // (as bem/convolution.hpp's producers and consumers): produce(r, row) writes the nx inputs of slab row r,
+  // rows in order; multiplied(energy), when given, receives this rank's part of in . out = sum_q M |in_q|^2
+  // (the spectral product, each stored column counted with its Hermitian partner) before the inverse
+  // transform; consume(r, row) reads the nx outputs of slab row r, rows in order. Collective.
+  using RowProducer = std::function<void(Index, Real*)>;
+  using RowConsumer = std::function<void(Index, const Real*)>;
+  void apply(const RowProducer& produce, const RowConsumer& consume,
+             const std::function<void(double)>& multiplied = {});
 
  private:
   Slab slab_;
@@ -57,6 +70,12 @@ class DistributedConvolution {
   // transform slab's grid rows in row order.
   std::vector<int> send_counts_, send_offsets_, receive_counts_, receive_offsets_;
   std::vector<double> receive_buffer_;
+  std::vector<double> column_weight_;  // per spectral column: 1 or 2 (its Hermitian partner counted)
+  // One rank on one thread: the serial engine (bem/convolution.hpp: rows, then columns a block at a time in
+  // cache with the multiply between, no transpose), the same multiplier; FFTW-MPI's plan with its local
+  // transposes then only makes the multiplier.
+  std::unique_ptr<Convolution<double>> alone_;
+  std::vector<double> padded_rows_;  // padded only: this rank's grid rows, produced or to be consumed
 };
 
 }  // namespace contactbench::mpi

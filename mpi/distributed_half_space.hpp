@@ -31,6 +31,12 @@ class DistributedHalfSpace {
   // displacement = G pressure on this rank's slab (slab().count x nx, row-major); the arrays may be the same.
   // Collective.
   void apply(const Real* pressure, Real* displacement) { convolution_->apply(pressure, displacement); }
+  // The same through the convolution's row callbacks and spectral product (DistributedConvolution::apply).
+  void apply(const DistributedConvolution::RowProducer& produce,
+             const DistributedConvolution::RowConsumer& consume,
+             const std::function<void(double)>& multiplied = {}) {
+    convolution_->apply(produce, consume, multiplied);
+  }
 
  private:
   Grid grid_;

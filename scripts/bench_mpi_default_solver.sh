@@ -41,8 +41,8 @@ done
   echo "scenes' tolerance 1e-8 (bench/bench_mpi.cpp --tolerance). The distributed solver runs on 'ranks' ranks x"
   echo "'threads' FFTW threads; the reference is the serial default solver, active_set, on 'ref threads' threads,"
   echo "timed in the same run (rank 0, the other rank asleep). 'ratio' is the distributed time of a load over the"
-  echo "reference's: what running a scene under mpiexec costs (docs/mpi.md). The distributed active_set makes"
-  echo "separate passes where the serial one fuses them into its transforms: not yet made fast."
+  echo "reference's: what running a scene under mpiexec costs (docs/mpi.md, \"What a distributed iteration costs\":"
+  echo "the passes of an iteration counted, fused as the serial method's since issue 39's second item)."
   echo
   echo "| ranks | threads | n | solver | iterations | s/load | reference | ref threads | ref iterations | ref s/load | ratio |"
   echo "|---|---|---|---|---|---|---|---|---|---|---|"

@@ -137,8 +137,9 @@ TEST(DistributedActiveSet, EqualsTheSerialMethodUnderSeparationControl) {
 // With plastic nodes one branch is decided by round-off: whether the elastic nodes' sum of p, rescaled to
 // the load less the plastic nodes' share, comes out at a factor of exactly 1 (then G p is kept, else made
 // afresh: ActiveSet::solve, `scale != 1 && kept.g > 0`). Measured at this hardness (4 x the mean pressure):
-// the same 15 outer steps and 965 nodes in contact on 1 to 3 ranks, 47 iterations on 1 and 2 ranks and 46 on
-// 3 (the serial method: 47), the pressures 1.5e-13..2e-13 of the peak apart; a per-step trace of such a case
+// the same 15 outer steps and 965 nodes in contact on 1 to 3 ranks, 47 iterations on 1 and 3 ranks and 46 on
+// 2 (the serial method: 47; before the CG's products came from the spectrum, docs/mpi.md, 46 was on 3 ranks),
+// the pressures 1.6e-13..2e-13 of the peak apart; a per-step trace of such a case
 // (hardness 2e9 Pa) showed the same inner steps and one fresh G p fewer in the last outer step. So one
 // iteration of slack, here only.
 TEST(DistributedActiveSet, EqualsTheSerialMethodWithAHardness) {
