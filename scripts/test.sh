@@ -4,12 +4,11 @@
 # command; .ci/run calls it verbatim.
 # Usage: scripts/test.sh [preset: release|debug|asan]
 # With CB_CI=1 (set by .ci/run) it also runs what only CI runs:
-#   - CB_CI_ASAN=1: the suite under AddressSanitizer + UBSan (preset asan), the Python module's tests and the
-#     MPI tests included (see run_suite below for how);
-#   - CB_CI_DEBUG=1: the whole suite of the debug preset, the only build with assertions on (Eigen's bounds
-#     checks, assert()): measured 3 minutes of tests on 2 cores (FFTW does the heavy work, optimised either
-#     way; the slowest test, 72 s, is the active-set solver's 20000 iterations at E* = 1e300), after a build
-#     of about 6 minutes;
+#   - CB_CI_ASAN=1: the suite under AddressSanitizer + UBSan with assertions on (preset asan: -O2 without
+#     NDEBUG, so assert() and Eigen's bounds checks run, and _GLIBCXX_ASSERTIONS for the C++ library's), the
+#     Python module's tests and the MPI tests included (see run_suite below for how);
+#   - CB_CI_DEBUG=1 (off in .ci/run since the asan preset has the assertions): the whole suite of the debug
+#     preset (no optimisation): 2-3 minutes of tests on 2 cores after a build of 5-6 minutes;
 #   - a short fuzz run of each parser (preset fuzz, scripts/fuzz.sh; seeded, CB_FUZZ_SEED).
 # `scripts/test.sh asan` or `scripts/test.sh debug` runs one of them by hand.
 set -euo pipefail
