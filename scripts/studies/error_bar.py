@@ -28,8 +28,14 @@ calibration set (in sample), and by halves of the calibration set (the factor ch
 the other). Writes results/studies/error_bar/{table.md, cases.csv, estimate.gp, estimate.png, estimate.svg}
 and, when it solves, raw.csv and holdout.csv.
 
+Round two (this round's sets): seeds 101 ... 110 calibrate (raw.csv, holdout.csv, and --more-seeds 6 in
+more.csv; the former hold-out, seeds 103 and 104, was looked at, so it only calibrates now), and --fresh-seeds 10
+in fresh.csv (seeds 111 ... 120, all eight families) is the hold-out, solved after the choice was fixed
+(scripts/studies/error_bar_candidates.py) and used once.
+
 Usage: OMP_WAIT_POLICY=PASSIVE PYTHONPATH=build/release/python /usr/bin/python3 scripts/studies/error_bar.py
-       [--threads 2] [--base 64] [--truth 1024] [--seeds 2] [--holdout-seeds 2] [--reuse]
+       [--threads 2] [--base 64] [--truth 1024] [--seeds 2] [--holdout-seeds 2] [--more-seeds 6]
+       [--fresh-seeds 10] [--reuse]
 (--reuse reads the solves back from raw.csv and holdout.csv where they exist and solves only the missing set,
 to redo the analysis without solving.)
 """
@@ -247,6 +253,8 @@ def main():
     parser.add_argument("--truth", type=int, default=1024)
     parser.add_argument("--seeds", type=int, default=2)
     parser.add_argument("--holdout-seeds", type=int, default=2)
+    parser.add_argument("--more-seeds", type=int, default=0)
+    parser.add_argument("--fresh-seeds", type=int, default=0)
     parser.add_argument("--reuse", action="store_true")
     args = parser.parse_args()
     os.chdir(ROOT)
@@ -254,7 +262,12 @@ def main():
     # Two sets of surfaces, each in its own file of raw solves: the calibration set (seeds 101 ...) on which
     # factors are chosen, and the hold-out set (the seeds after those) that only checks them.
     sets = [("raw.csv", FAMILIES, range(1, args.seeds + 1)),
-            ("holdout.csv", FAMILIES + HOLDOUT_FAMILIES, range(args.seeds + 1, args.seeds + args.holdout_seeds + 1))]
+            ("holdout.csv", FAMILIES + HOLDOUT_FAMILIES, range(args.seeds + 1, args.seeds + args.holdout_seeds + 1)),
+            ("more.csv", FAMILIES + HOLDOUT_FAMILIES,
+             range(args.seeds + args.holdout_seeds + 1, args.seeds + args.holdout_seeds + args.more_seeds + 1)),
+            ("fresh.csv", FAMILIES + HOLDOUT_FAMILIES,
+             range(args.seeds + args.holdout_seeds + args.more_seeds + 1,
+                   args.seeds + args.holdout_seeds + args.more_seeds + args.fresh_seeds + 1))]
     cases = {}  # (family name, seed) -> {n: [(nodes, corrected, converged) per load]}
     started = time.time()
     for file_name, families, seeds in sets:
