@@ -25,9 +25,11 @@ load) the estimates made from the grids base, 2 base, 4 base are compared with t
 
 Coverage = fraction of cases whose true error |value - truth| is inside the bar; over-estimation = bar / true
 error (median and 10 % / 90 % quantiles per load band), on the hold-out set with the shipped factors, on the
-calibration set (in sample), and by halves of the calibration set (the factor chosen on one seed, checked on
-the other). Writes results/studies/error_bar/{table.md, cases.csv, estimate.gp, estimate.png, estimate.svg}
-and, when it solves, raw.csv and holdout.csv.
+calibration set (in sample), and, for corrected1, by halves of the calibration set (the factor chosen on the odd
+seeds, checked on the even ones, and the reverse). Beside the coverage, the judgeable coverage counts a case as
+missed only when |value - truth| - u > bar, u the truth's own uncertainty. Writes
+results/studies/error_bar/{table.md, cases.csv, estimate.gp, estimate.png, estimate.svg} and, when it solves,
+raw.csv, holdout.csv, more.csv and fresh.csv.
 
 Round two (this round's sets): seeds 101 ... 110 calibrate (raw.csv, holdout.csv, and --more-seeds 6 in
 more.csv; the former hold-out, seeds 103 and 104, was looked at, so it only calibrates now), and --fresh-seeds 10
@@ -37,8 +39,8 @@ in fresh.csv (seeds 111 ... 120, all eight families) is the hold-out, solved aft
 Usage: OMP_WAIT_POLICY=PASSIVE PYTHONPATH=build/release/python /usr/bin/python3 scripts/studies/error_bar.py
        [--threads 2] [--base 64] [--truth 1024] [--seeds 2] [--holdout-seeds 2] [--more-seeds 6]
        [--fresh-seeds 10] [--reuse]
-(--reuse reads the solves back from raw.csv and holdout.csv where they exist and solves only the missing set,
-to redo the analysis without solving.)
+(--reuse reads the solves back from raw.csv, holdout.csv, more.csv and fresh.csv where they exist and solves
+only the missing sets, to redo the analysis without solving.)
 """
 import argparse
 import math
