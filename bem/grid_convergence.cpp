@@ -36,12 +36,19 @@ GridConvergence grid_convergence_three(Real coarse, Real medium, Real fine) {
   return g;
 }
 
-GridConvergence grid_convergence_calibrated(Real coarse, Real medium, Real fine) {
+GridConvergence grid_convergence_calibrated(Real coarse, Real medium, Real fine, Real fine_points,
+                                            Real load) {
   const Real d21 = medium - coarse, d32 = fine - medium;
   GridConvergence g;
   g.grids = 3;
   g.order = d21 * d32 > 0 ? std::log2(d21 / d32) : std::numeric_limits<Real>::quiet_NaN();
-  g.factor = kCalibratedThreeGridFactor;
+  // The band's factors (calibrated per band: the extrapolate's error relative to the grids' changes differs
+  // between a few spots of a few pixels at small loads and many larger ones at high loads).
+  const bool low = load<kCalibratedLowLoadLimit, high = load> kCalibratedHighLoadLimit;
+  g.factor = low    ? kCalibratedScaleFactorLow
+             : high ? kCalibratedScaleFactorHigh
+                    : kCalibratedScaleFactorMiddle;
+  const Real lattice_factor = low || high ? 0 : kCalibratedLatticeFactorMiddle;
   // The formal order 1 (section 9.1): the coarse grids' apparent order is not kept by finer ones, and the
   // order-1 extrapolate was the more accurate in the calibration study (docs/studies.md section 7).
   g.value = 2 * fine - medium;
@@ -49,7 +56,10 @@ GridConvergence grid_convergence_calibrated(Real coarse, Real medium, Real fine)
   // last (so that an anomalously small last step does not shrink the bar), and how much the order-1
   // extrapolate itself moved between the two pairs (how far the grids are from the asymptotic range).
   const Real scale = std::max({std::abs(d32), std::abs(d21) / 2, std::abs(2 * d32 - d21)});
-  g.error = g.factor * scale;
+  // The lattice scatter of the finest grid's count, fine / sqrt(N) with N = fine x fine_points nodes in
+  // contact: what three grids do not see converge when the spots are a few pixels.
+  const Real lattice = fine > 0 && fine_points > 0 ? std::sqrt(fine / fine_points) : 0;
+  g.error = std::max(g.factor * scale, lattice_factor * lattice);
   // The spread over plausible orders: the extrapolate at the observed one, when that is trusted.
   if (g.order >= kSmallestTrustedOrder && g.order <= kLargestTrustedOrder)
     g.error = std::max(g.error, std::abs(fine + d32 / (std::exp2(g.order) - 1) - g.value));

@@ -318,7 +318,7 @@ class BemMethod final : public Method {
       curve.columns.emplace_back("edge_contact_share", edge_contact);
       curve.columns.emplace_back("edge_load_share", edge_load);
     }
-    if (settings_.extrapolate) extrapolate(products, curve);
+    if (settings_.extrapolate) extrapolate(products, in.scene.loads, curve);
     if (settings_.node_area) curve.area_fraction = nodes;
     // The compared perimeter-corrected area's own bar (docs/theory.md section 9.2), where it was calibrated:
     // periodic, without hardness or adhesion (scripts/studies/error_bar.py).
@@ -516,7 +516,7 @@ class BemMethod final : public Method {
   // pixel wide: an error of order 1 in the pixel size (measured: scripts/studies/bem_area_order.py). The
   // counts on the grids are extrapolated to the zero pixel, and the error bar is Roache's grid convergence
   // index (bem/grid_convergence.hpp, section 9.2), calibrated by scripts/studies/error_bar.py.
-  void extrapolate(const BemProducts& products, MethodCurve& curve) const {
+  void extrapolate(const BemProducts& products, const std::vector<Real>& loads, MethodCurve& curve) const {
     const std::vector<ContactStatistics>& coarse = products.statistics.at(settings_.connectivity);
     const std::vector<ContactStatistics>& fine = products.fine_statistics.at(settings_.connectivity);
     const bool three = uses_third_grid(settings_.error_estimate);
@@ -533,11 +533,16 @@ class BemMethod final : public Method {
         g = grid_convergence_two(coarse[k].area_fraction, fine[k].area_fraction);
       } else {
         const Real third = products.third_statistics.at(settings_.connectivity)[k].area_fraction;
-        const auto three_grids = settings_.error_estimate == ErrorEstimate::calibrated3
-                                     ? grid_convergence_calibrated
-                                     : grid_convergence_three;
-        g = third_coarser ? three_grids(third, coarse[k].area_fraction, fine[k].area_fraction)
-                          : three_grids(coarse[k].area_fraction, fine[k].area_fraction, third);
+        const Real a = third_coarser ? third : coarse[k].area_fraction;
+        const Real b = third_coarser ? coarse[k].area_fraction : fine[k].area_fraction;
+        const Real c = third_coarser ? fine[k].area_fraction : third;
+        // The finest grid's nodes (the calibrated bar's lattice term) and the load (its band): extrapolate is
+        // refused along a load path, so the k-th solve is the k-th scene load.
+        const Real finest_points =
+            static_cast<Real>(third_coarser ? products.fine_points : products.third_nx * products.third_ny);
+        g = settings_.error_estimate == ErrorEstimate::calibrated3
+                ? grid_convergence_calibrated(a, b, c, finest_points, loads.at(k))
+                : grid_convergence_three(a, b, c);
       }
       fine_nodes.push_back(fine[k].area_fraction);
       fine_corrected.push_back(fine[k].area_fraction_corrected);
