@@ -45,7 +45,12 @@ std::string read_file_bounded(const fs::path& path, std::uintmax_t max_bytes, co
                          " accepted for " + what);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot open the file for reading");
-  std::string content;
+  // Straight into a string of the file's size (one read, no copies of a growing string), then in chunks for
+  // whatever follows: a file that grows while it is read, or one whose size is reported as 0 (as /proc's
+  // are).
+  std::string content(code ? 0 : static_cast<std::size_t>(size), '\0');
+  in.read(content.data(), static_cast<std::streamsize>(content.size()));
+  content.resize(static_cast<std::size_t>(in.gcount()));
   std::vector<char> buffer(1 << 16);
   while (in) {
     in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));

@@ -2,9 +2,15 @@
 // plain matrices, and one test per kind of bad input.
 #include "contactbench/core/topography_io.hpp"
 
+#include <bit>
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
+#include <random>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -206,6 +212,97 @@ TEST_F(TopographyIoFiles, AcceptsCrlfTabsBlankLinesAndScientificNotation) {
   EXPECT_EQ(surface.heights()(0, 0), 3.69862e-7);
   EXPECT_EQ(surface.heights()(0, 1), 2.5);
   EXPECT_EQ(surface.heights()(1, 0), -1.0);
+}
+
+// The reader's values against the C library's strtod, bit for bit, on every token strtod parses to a finite
+// double without a range error: the awkward decimals (signs, exponents in every spelling, denormals, halfway
+// cases, long mantissas) and seeded random ones, in rows ended by LF, CRLF and lone CRs with tabs, blank
+// lines and trailing blanks between them (the line splitting and the number parsing read a whole-file
+// buffer).
+TEST_F(TopographyIoFiles, ValuesAreStrtodsBitForBitWhateverTheLineEnds) {
+  std::vector<std::string> tokens = {"1",
+                                     "-0",
+                                     "0.0",
+                                     "+2.5E+00",
+                                     ".5",
+                                     "5.",
+                                     "-.5e-3",
+                                     "+.25",
+                                     "0000123.4500",
+                                     "1E5",
+                                     "1e+005",
+                                     "3.69862e-007",
+                                     "123456789012345678901234567890",
+                                     "0.1000000000000000055511151231257827021181583404541015625",
+                                     "9007199254740993",
+                                     "2.4703282292062327e-324",
+                                     "4.9406564584124654e-324",
+                                     "1e-320",
+                                     "2.2250738585072011e-308",
+                                     "2.2250738585072014e-308",
+                                     "1.7976931348623157e308",
+                                     "1.7976931348623158e308",
+                                     "-6.02214076E23"};
+  std::mt19937_64 random(42);
+  std::uniform_int_distribution<int> exponent(-330, 310), digits(1, 40), format(0, 2);
+  while (tokens.size() < 4096) {
+    char text[64];
+    if (format(random) == 0) {  // a random bit pattern at full precision
+      const double value = std::bit_cast<double>(random());
+      if (!std::isfinite(value)) continue;
+      std::snprintf(text, sizeof text, "%.17g", value);
+    } else {  // a random decimal mantissa of 1-40 digits and a random exponent
+      std::string mantissa = random() % 2 ? "-" : "";
+      const int count = digits(random);
+      for (int k = 0; k < count; ++k)
+        mantissa += static_cast<char>('0' + random() % 10);
+      if (count > 1) mantissa.insert(mantissa.size() - static_cast<std::size_t>(random() % count), ".");
+      std::snprintf(text, sizeof text, "%s%c%d", mantissa.c_str(), format(random) == 1 ? 'e' : 'E',
+                    exponent(random));
+    }
+    tokens.emplace_back(text);
+  }
+  // The tokens strtod reads whole, to a finite value, without ERANGE: the reader must give its bits.
+  std::vector<std::string> kept;
+  std::vector<double> expected;
+  for (const std::string& token : tokens) {
+    errno = 0;
+    char* end = nullptr;
+    const double value = std::strtod(token.c_str(), &end);
+    if (errno == 0 && *end == '\0' && std::isfinite(value)) {
+      kept.push_back(token);
+      expected.push_back(value);
+    }
+  }
+  ASSERT_GT(kept.size(), 3000u);  // the random decimals mostly land in range
+  const Index columns = 8, rows = static_cast<Index>(kept.size()) / columns;
+  const std::vector<std::string> row_ends = {"\n",    "\r\n",     "\r",   " \t\r\n",
+                                             "\t \n", "\r\n\r\n", "\r\r", "\n \t\n"};
+  std::string text = "# contactbench surface v1\r\n# nx=" + std::to_string(columns) +
+                     " ny=" + std::to_string(rows) + " lx=1e-6 ly=1e-6 periodic=false unit=m\r";
+  for (Index row = 0; row < rows; ++row) {
+    text += row % 3 ? "\t" : "";
+    for (Index column = 0; column < columns; ++column)
+      text += kept[static_cast<std::size_t>(row * columns + column)] + (column % 2 ? "\t" : "  ");
+    text += row_ends[static_cast<std::size_t>(row) % row_ends.size()];
+  }
+  const Surface surface = read_topography(write("tricky.txt", text));
+  ASSERT_EQ(surface.nx(), columns);
+  ASSERT_EQ(surface.ny(), rows);
+  for (Index row = 0; row < rows; ++row)
+    for (Index column = 0; column < columns; ++column) {
+      const std::size_t k = static_cast<std::size_t>(row * columns + column);
+      // Exact: bit patterns, so that -0 and +0 differ too.
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(surface.heights()(row, column)),
+                std::bit_cast<std::uint64_t>(expected[k]))
+          << kept[k];
+    }
+  // Lone CRs end lines as LF does: a bad token is named on its own line.
+  TopographyReadOptions options;
+  options.lx = 1e-6;
+  expect_input_error(write("lone_cr.txt", "1 2\r\r3 x\r"), 3, "'x' is not a number", options);
+  // Hexadecimal floats, which strtod also reads, stay refused as before: the readers take decimals only.
+  expect_input_error(write("hex.txt", "1 0x1p3\n"), 1, "'0x1p3' is not a number", options);
 }
 
 TEST_F(TopographyIoFiles, GwyddionAcceptsBothMicroSignsAndUm) {

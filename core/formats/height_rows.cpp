@@ -86,6 +86,16 @@ DataBlock parse_data(const fs::path& path, std::span<const Line> lines, Real sca
                      const RowSyntax& syntax) {
   if (lines.empty()) throw InputError(path, 0, "no data rows" + std::string(context));
   DataBlock block;
+  // Room for every value at once, so that a large block is not copied as it grows: the header's counts, else
+  // the first row's count times the rows, never more than the text can hold (a line of L characters holds at
+  // most (L + 1) / 2 values), so that a header's wrong promise costs no memory.
+  std::size_t most_values = 0;
+  for (const Line& line : lines)
+    most_values += (line.text.size() + 1) / 2;
+  const auto reserve = [&](std::size_t rows, std::size_t cols) {
+    if (cols > 0) block.values.reserve(rows > most_values / cols ? most_values : rows * cols);
+  };
+  if (promised) reserve(static_cast<std::size_t>(promised->rows), static_cast<std::size_t>(promised->cols));
   long first_row_line = 0;
   for (const Line& line : lines) {
     if (promised && block.rows == promised->rows)
@@ -102,6 +112,7 @@ DataBlock parse_data(const fs::path& path, std::span<const Line> lines, Real sca
     if (block.rows == 0) {
       block.cols = count;
       first_row_line = line.number;
+      if (!promised && count > 0) reserve(lines.size(), static_cast<std::size_t>(count));
     } else if (count != block.cols) {
       throw InputError(path, line.number,
                        "ragged row: " + std::to_string(count) + " values, but the first data row (line " +
