@@ -305,6 +305,39 @@ TEST_F(TopographyIoFiles, ValuesAreStrtodsBitForBitWhateverTheLineEnds) {
   expect_input_error(write("hex.txt", "1 0x1p3\n"), 1, "'0x1p3' is not a number", options);
 }
 
+// Files beyond the 64 KiB that detection reads first: a format named by the first line is detected from it,
+// every other from the whole file, as a small file is.
+TEST_F(TopographyIoFiles, LargeFilesAreDetectedAsSmallOnesAre) {
+  std::string matrix, points;
+  for (int row = 0; row < 200; ++row) {
+    for (int column = 0; column < 200; ++column) {
+      matrix += std::to_string(row * 200 + column) + "e-9 ";
+      points +=
+          std::to_string(column) + " " + std::to_string(row) + " " + std::to_string(row + column) + "\n";
+    }
+    matrix += "\n";
+  }
+  ASSERT_GT(matrix.size(), std::size_t{1} << 16);
+  ASSERT_GT(points.size(), std::size_t{1} << 16);
+  const std::string one_long_row(70000, '1');  // a first line longer than the head: read whole
+  EXPECT_EQ(detect_topography_format(write("matrix.txt", matrix)), TopographyFormat::plain_matrix);
+  EXPECT_EQ(detect_topography_format(write("points.txt", points)), TopographyFormat::xyz_points);
+  EXPECT_EQ(detect_topography_format(write("long_row.txt", one_long_row + "\n" + one_long_row + "\n")),
+            TopographyFormat::plain_matrix);
+  EXPECT_EQ(detect_topography_format(write("gwyddion.txt", "# Width: 1 um\n# Height: 1 um\n" + matrix)),
+            TopographyFormat::gwyddion);
+  EXPECT_EQ(detect_topography_format(write("interferometer.txt", "h=200 w=200\n" + matrix)),
+            TopographyFormat::interferometer);
+  EXPECT_EQ(detect_topography_format(write("project.txt",
+                                           "\r\n# contactbench surface v1\r\n# nx=200 ny=200 lx=1 ly=1 "
+                                           "periodic=false unit=m\r\n" +
+                                               matrix)),
+            TopographyFormat::project);
+  // A project file's reading agrees with its detection; a binary magic decides whatever follows it.
+  EXPECT_EQ(read_topography(folder_ / "project.txt").heights()(199, 199), 39999e-9);
+  EXPECT_EQ(detect_topography_format(write("npy_magic.txt", "\x93NUMPY" + matrix)), TopographyFormat::npy);
+}
+
 TEST_F(TopographyIoFiles, GwyddionAcceptsBothMicroSignsAndUm) {
   for (const std::string unit : {"\u00b5m", "\u03bcm", "um"}) {
     const fs::path file =
