@@ -122,7 +122,8 @@ def main():
     lines = [
         "# What a whole command costs: FFTW planning with and without wisdom kept between runs",
         "",
-        f"Made by `scripts/command_cost.py --repetitions {args.repetitions} --threads {args.threads}` at commit "
+        f"Made by `scripts/command_cost.py --repetitions {args.repetitions} --threads {args.threads}"
+        f"{' --baseline OLD/contactbench' if args.baseline else ''}` at commit "
         f"{commit} on {date}; {args.threads} threads, machine: {machine}. Load average (1 min) while it ran: "
         f"{min(loads):.1f} to {max(loads):.1f} on {os.cpu_count()} cores: the machine is shared and the times "
         "are noisy; medians of the repetitions, each repetition's value listed.",
