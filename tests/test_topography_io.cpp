@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -303,6 +304,34 @@ TEST_F(TopographyIoFiles, ValuesAreStrtodsBitForBitWhateverTheLineEnds) {
   expect_input_error(write("lone_cr.txt", "1 2\r\r3 x\r"), 3, "'x' is not a number", options);
   // Hexadecimal floats, which strtod also reads, stay refused as before: the readers take decimals only.
   expect_input_error(write("hex.txt", "1 0x1p3\n"), 1, "'0x1p3' is not a number", options);
+}
+
+// Rows parsed on two threads (a header that states the size, TopographyReadOptions::threads): the same bits,
+// and for a defective file the same first defect named, as on one thread.
+TEST_F(TopographyIoFiles, RowsParsedOnTwoThreadsGiveTheSameValuesAndMessages) {
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> height(-1e-6, 1e-6);
+  HeightMap heights(37, 29);
+  for (Index row = 0; row < heights.rows(); ++row)
+    for (Index column = 0; column < heights.cols(); ++column)
+      heights(row, column) = height(random);
+  const fs::path file = folder_ / "surface.txt";
+  write_surface(file, Surface(Grid{29, 37, 1e-6, 1e-6, false}, heights));
+  TopographyReadOptions two_threads;
+  two_threads.threads = 2;
+  // Exact: each token is parsed by the same function, only on another thread.
+  EXPECT_EQ(bits_of(read_topography(file, two_threads).heights()), bits_of(heights));
+  const std::string header = "# contactbench surface v1\n# nx=3 ny=4 lx=1e-6 ly=1e-6 periodic=false unit=m\n";
+  const std::string good = "1 2 3\n";
+  for (const auto& [name, rows, line, reason] :
+       {std::tuple{"token.txt", good + "1 2 3\n1 x 3\n1 2 y\n", 5, "'x' is not a number"},
+        std::tuple{"short_row.txt", good + good + "1 2\n1 2 z\n", 5, "row has 2 values"},
+        std::tuple{"long_row.txt", good + good + good + "1 2 3 4\n", 6, "row has 4 values"},
+        std::tuple{"nan.txt", good + good + "nan 2 3\n" + good, 0, "1 of 12 points"}}) {
+    SCOPED_TRACE(name);
+    expect_input_error(write(name, header + rows), line, reason, two_threads);
+    expect_input_error(write(name, header + rows), line, reason);
+  }
 }
 
 // Files beyond the 64 KiB that detection reads first: a format named by the first line is detected from it,
