@@ -242,6 +242,7 @@ Surface make_surface(const SurfaceSpec& spec, int threads) {
   options.unit = file.unit;
   options.crop = file.crop;
   options.align_rows = file.align_rows;
+  options.threads = threads;
   // Levelling "plane" removes the tilt as well; the mean is removed in any case.
   Surface surface = read_topography(file.path, options).centred();
   // The moments stage and every method would refuse heights beyond what sums hold; that is the file's fault,

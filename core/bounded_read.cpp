@@ -1,6 +1,8 @@
 #include "contactbench/core/bounded_read.hpp"
 
+#include <algorithm>
 #include <fstream>
+#include <limits>
 #include <system_error>
 #include <vector>
 
@@ -19,7 +21,11 @@ std::string describe_bytes(std::uintmax_t bytes) {
 
 }  // namespace
 
-std::string read_file_bounded(const fs::path& path, std::uintmax_t max_bytes, const std::string& what) {
+namespace {
+
+// The checks of read_file_bounded, then at most `head` of the file's bytes.
+std::string read_bounded(const fs::path& path, std::uintmax_t max_bytes, const std::string& what,
+                         std::uintmax_t head) {
   std::error_code code;
   const fs::file_status status = fs::status(path, code);  // follows links: a link to a file is fine
   switch (status.type()) {
@@ -45,10 +51,16 @@ std::string read_file_bounded(const fs::path& path, std::uintmax_t max_bytes, co
                          " accepted for " + what);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot open the file for reading");
-  std::string content;
+  // Straight into a string of the file's size (one read, no copies of a growing string), then in chunks for
+  // whatever follows: a file that grows while it is read, or one whose size is reported as 0 (as /proc's
+  // are).
+  std::string content(code ? 0 : static_cast<std::size_t>(std::min(size, head)), '\0');
+  in.read(content.data(), static_cast<std::streamsize>(content.size()));
+  content.resize(static_cast<std::size_t>(in.gcount()));
   std::vector<char> buffer(1 << 16);
-  while (in) {
-    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+  while (in && content.size() < head) {
+    in.read(buffer.data(),
+            static_cast<std::streamsize>(std::min<std::uintmax_t>(buffer.size(), head - content.size())));
     content.append(buffer.data(), static_cast<std::size_t>(in.gcount()));
     // A file that grows while it is read (or reports a wrong size, as /proc does) is still bounded.
     if (content.size() > max_bytes)
@@ -56,6 +68,17 @@ std::string read_file_bounded(const fs::path& path, std::uintmax_t max_bytes, co
   }
   if (in.bad()) throw InputError(path, 0, "reading the file failed");
   return content;
+}
+
+}  // namespace
+
+std::string read_file_bounded(const fs::path& path, std::uintmax_t max_bytes, const std::string& what) {
+  return read_bounded(path, max_bytes, what, std::numeric_limits<std::uintmax_t>::max());
+}
+
+std::string read_file_head(const fs::path& path, std::uintmax_t max_bytes, const std::string& what,
+                           std::uintmax_t head_bytes) {
+  return read_bounded(path, max_bytes, what, head_bytes);
 }
 
 }  // namespace contactbench

@@ -17,4 +17,9 @@ inline constexpr std::uintmax_t kMaxTopographyFileBytes = std::uintmax_t{16} << 
 std::string read_file_bounded(const std::filesystem::path& path, std::uintmax_t max_bytes,
                               const std::string& what);
 
+// The same checks (the whole file's size included), then only the first head_bytes bytes (all of a smaller
+// file): for what a file's beginning decides, such as its format.
+std::string read_file_head(const std::filesystem::path& path, std::uintmax_t max_bytes,
+                           const std::string& what, std::uintmax_t head_bytes);
+
 }  // namespace contactbench

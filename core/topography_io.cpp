@@ -80,7 +80,25 @@ bool format_carries_unit(TopographyFormat format) {
 }
 
 TopographyFormat detect_topography_format(const std::filesystem::path& path) {
-  const std::string content = read_whole_file(path);
+  // The file's beginning decides most formats, so a large file is not read whole here and again by its
+  // reader (a scene's checks detect its file's format twice before it is read): the binary formats' magic and
+  // header checks look at their first 508 bytes only (and at whether the file has that many), and a text
+  // format with a header is named by its first non-blank line. Only a file without either (a plain matrix, a
+  // line scan, a point list) is read whole, for its lines.
+  constexpr std::uintmax_t head_bytes = 1 << 16;
+  const std::string head = read_file_head(path, kMaxTopographyFileBytes, "topographies", head_bytes);
+  if (head.size() == head_bytes) {
+    if (const formats::BinaryFormat* binary = formats::binary_format_of(path, head)) return binary->format;
+    // Two lines in the head: the first is whole.
+    const std::vector<formats::Line> lines = formats::non_blank_lines(head);
+    if (lines.size() >= 2) {
+      const TopographyFormat format = formats::text_format_of(path, std::span(lines).first(1));
+      if (format == TopographyFormat::project || format == TopographyFormat::interferometer ||
+          format == TopographyFormat::gwyddion)
+        return format;
+    }
+  }
+  const std::string content = head.size() < head_bytes ? head : read_whole_file(path);
   if (const formats::BinaryFormat* binary = formats::binary_format_of(path, content)) return binary->format;
   return formats::text_format_of(path, formats::non_blank_lines(content));
 }

@@ -71,6 +71,8 @@ struct TopographyReadOptions {
   std::optional<CropSpec> crop;
   // Per scan line (row), after filling and before `level`.
   RowAlignment align_rows = RowAlignment::none;
+  // Threads that parse the rows of a text file whose header states its size (the values do not depend on it).
+  int threads = 1;
 };
 
 // A surface with what was done to get it, for reports.

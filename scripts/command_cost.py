@@ -3,6 +3,7 @@
 results/bench/command_cost.md.
 
 Usage: scripts/command_cost.py [--repetitions 3] [--threads 2] [--build build/release] [--out FILE]
+                               [--baseline CONTACTBENCH]
 
 Measures, interleaved (cold, warm, off, cold, warm, off, ...) so that the machine's load falls on each alike:
   1. `contactbench bem S --periodic --loads 0.000478 --threads T` on a 1024^2 periodic surface S (surface A's
@@ -16,6 +17,8 @@ Measures, interleaved (cold, warm, off, cold, warm, off, ...) so that the machin
   2. `contactbench run scenes/paper/surface_A.toml --threads T --no-plots`, the BEM stage's seconds and the
      planning line of "Stages that ran" (summary.json), cold / warm / none as above.
 Medians of the repetitions; the machine is shared, so the load average is recorded beside them.
+--baseline: another contactbench program (an older commit's build, say) measured the same way, interleaved
+with this build's runs, so that the tables give the ratio of the two in the same run, under the same load.
 """
 import argparse
 import json
@@ -49,6 +52,8 @@ def main():
     parser.add_argument("--threads", type=int, default=2)
     parser.add_argument("--build", default="build/release")
     parser.add_argument("--out", default="results/bench/command_cost.md")
+    parser.add_argument("--baseline", help="another contactbench program, measured interleaved (its commit is "
+                        "what `contactbench --version` says)")
     args = parser.parse_args()
     cli = ROOT / args.build / "app" / "contactbench"
     threads = str(args.threads)
@@ -69,28 +74,38 @@ def main():
         surface = work / "s1024.txt"
         run([cli, "generate", "--sigma", "0.5e-6", "--hurst", "0.5", "--qr", "3.14e4", "--size", "200e-6",
              "--grid", "1024", "--seed", "1", "--out", surface, "--threads", threads], env)
-        bem = [cli, "bem", surface, "--periodic", "--loads", "0.000478", "--threads", threads]
+        programs = {"this": cli}
+        if args.baseline:
+            programs["baseline"] = Path(args.baseline).resolve()
+        cases = [(program, case) for program in programs for case in ("cold", "warm", "none")]
         scene = ROOT / "scenes" / "paper" / "surface_A.toml"
-        scene_run = [cli, "run", scene, "--threads", threads, "--no-plots", "--quiet"]
-        bem_wall = {"cold": [], "warm": [], "none": []}
-        scene_bem = {"cold": [], "warm": [], "none": []}
-        scene_planning = {"cold": [], "warm": [], "none": []}
-        scene_wall = {"cold": [], "warm": [], "none": []}
+        bem_wall = {key: [] for key in cases}
+        scene_bem = {key: [] for key in cases}
+        scene_planning = {key: [] for key in cases}
+        scene_wall = {key: [] for key in cases}
         for repetition in range(args.repetitions):
-            wisdom = work / f"bem_wisdom_{repetition}.txt"
-            for case, flag in (("cold", str(wisdom)), ("warm", str(wisdom)), ("none", "none")):
-                loads.append(os.getloadavg()[0])
-                wall, _ = run(bem + ["--fftw-wisdom", flag], env)
-                bem_wall[case].append(wall)
-            wisdom = work / f"scene_wisdom_{repetition}.txt"
-            for case, flag in (("cold", str(wisdom)), ("warm", str(wisdom)), ("none", "none")):
-                out = work / f"run_{case}_{repetition}"
-                loads.append(os.getloadavg()[0])
-                wall, _ = run(scene_run + ["--out", out, "--fftw-wisdom", flag], env)
-                summary = json.loads((out / "summary.json").read_text())
-                scene_wall[case].append(wall)
-                scene_bem[case].append(stage_seconds(summary, "bem"))
-                scene_planning[case].append(stage_seconds(summary, "fftw planning"))
+            for program, binary in programs.items():
+                bem = [binary, "bem", surface, "--periodic", "--loads", "0.000478", "--threads", threads]
+                wisdom = work / f"bem_wisdom_{program}_{repetition}.txt"
+                for case, flag in (("cold", str(wisdom)), ("warm", str(wisdom)), ("none", "none")):
+                    loads.append(os.getloadavg()[0])
+                    wall, _ = run(bem + ["--fftw-wisdom", flag], env)
+                    bem_wall[program, case].append(wall)
+            for program, binary in programs.items():
+                scene_run = [binary, "run", scene, "--threads", threads, "--no-plots", "--quiet"]
+                wisdom = work / f"scene_wisdom_{program}_{repetition}.txt"
+                for case, flag in (("cold", str(wisdom)), ("warm", str(wisdom)), ("none", "none")):
+                    out = work / f"run_{program}_{case}_{repetition}"
+                    loads.append(os.getloadavg()[0])
+                    wall, _ = run(scene_run + ["--out", out, "--fftw-wisdom", flag], env)
+                    summary = json.loads((out / "summary.json").read_text())
+                    scene_wall[program, case].append(wall)
+                    scene_bem[program, case].append(stage_seconds(summary, "bem"))
+                    scene_planning[program, case].append(stage_seconds(summary, "fftw planning"))
+        baseline_version = ""
+        if args.baseline:
+            baseline_version = subprocess.run([programs["baseline"], "--version"], capture_output=True,
+                                              text=True).stdout.strip()
 
     def median(values):
         return f"{statistics.median(values):.2f}"
@@ -98,10 +113,17 @@ def main():
     def spread(values):
         return " / ".join(f"{v:.2f}" for v in values)
 
+    def ratio(series, case):
+        return f"{statistics.median(series['this', case]) / statistics.median(series['baseline', case]):.2f}"
+
+    baseline_note = (f" Baseline (--baseline, interleaved with this build's runs): `{baseline_version}`; "
+                     "the ratio is this build's median over the baseline's." if args.baseline else "")
+
     lines = [
         "# What a whole command costs: FFTW planning with and without wisdom kept between runs",
         "",
-        f"Made by `scripts/command_cost.py --repetitions {args.repetitions} --threads {args.threads}` at commit "
+        f"Made by `scripts/command_cost.py --repetitions {args.repetitions} --threads {args.threads}"
+        f"{' --baseline OLD/contactbench' if args.baseline else ''}` at commit "
         f"{commit} on {date}; {args.threads} threads, machine: {machine}. Load average (1 min) while it ran: "
         f"{min(loads):.1f} to {max(loads):.1f} on {os.cpu_count()} cores: the machine is shared and the times "
         "are noisy; medians of the repetitions, each repetition's value listed.",
@@ -111,7 +133,7 @@ def main():
         "level's plans measured, FFTW_MEASURE, and the file is written: a machine's first run); warm: the file "
         "the cold run wrote (plans read, not measured: every later run); none: `--fftw-wisdom none` (nothing "
         "kept: measured only where the run's own expected work pays back, which one load or one scene does "
-        "not, so estimated). The cases run interleaved.",
+        "not, so estimated). The cases run interleaved." + baseline_note,
         "",
         "## One load on a 1024^2 periodic surface, the whole `contactbench bem` process",
         "",
@@ -120,11 +142,16 @@ def main():
         f"Command: `contactbench bem s1024.txt --periodic --loads 0.000478 --threads {args.threads} "
         "--fftw-wisdom FILE|none`.",
         "",
-        "| case | wall [s], median | each run [s] |",
-        "|---|---:|---|",
+        "| case | wall [s], median | each run [s] |" + (" baseline [s], median | each run [s] | ratio |"
+                                                        if args.baseline else ""),
+        "|---|---:|---|" + ("---:|---|---:|" if args.baseline else ""),
     ]
     for case in ("cold", "warm", "none"):
-        lines.append(f"| {case} | {median(bem_wall[case])} | {spread(bem_wall[case])} |")
+        row = f"| {case} | {median(bem_wall['this', case])} | {spread(bem_wall['this', case])} |"
+        if args.baseline:
+            row += (f" {median(bem_wall['baseline', case])} | {spread(bem_wall['baseline', case])} | "
+                    f"{ratio(bem_wall, case)} |")
+        lines.append(row)
     lines += [
         "",
         "## The paper's surface A scene, `contactbench run`",
@@ -135,13 +162,18 @@ def main():
         "\"Stages that ran\" (part of the BEM stage's seconds).",
         "",
         "| case | BEM stage [s], median | each run [s] | of which planning [s], median | each run [s] | whole "
-        "command [s], median |",
-        "|---|---:|---|---:|---|---:|",
+        "command [s], median |" + (" baseline BEM stage [s], median | each run [s] | ratio |"
+                                   if args.baseline else ""),
+        "|---|---:|---|---:|---|---:|" + ("---:|---|---:|" if args.baseline else ""),
     ]
     for case in ("cold", "warm", "none"):
-        lines.append(f"| {case} | {median(scene_bem[case])} | {spread(scene_bem[case])} | "
-                     f"{median(scene_planning[case])} | {spread(scene_planning[case])} | "
-                     f"{median(scene_wall[case])} |")
+        row = (f"| {case} | {median(scene_bem['this', case])} | {spread(scene_bem['this', case])} | "
+               f"{median(scene_planning['this', case])} | {spread(scene_planning['this', case])} | "
+               f"{median(scene_wall['this', case])} |")
+        if args.baseline:
+            row += (f" {median(scene_bem['baseline', case])} | {spread(scene_bem['baseline', case])} | "
+                    f"{ratio(scene_bem, case)} |")
+        lines.append(row)
     lines.append("")
     out = ROOT / args.out
     temporary = out.with_suffix(".md.tmp")

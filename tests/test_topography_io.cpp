@@ -2,12 +2,19 @@
 // plain matrices, and one test per kind of bad input.
 #include "contactbench/core/topography_io.hpp"
 
+#include <bit>
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
+#include <random>
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -206,6 +213,158 @@ TEST_F(TopographyIoFiles, AcceptsCrlfTabsBlankLinesAndScientificNotation) {
   EXPECT_EQ(surface.heights()(0, 0), 3.69862e-7);
   EXPECT_EQ(surface.heights()(0, 1), 2.5);
   EXPECT_EQ(surface.heights()(1, 0), -1.0);
+}
+
+// The reader's values against the C library's strtod, bit for bit, on every token strtod parses to a finite
+// double without a range error: the awkward decimals (signs, exponents in every spelling, denormals, halfway
+// cases, long mantissas) and seeded random ones, in rows ended by LF, CRLF and lone CRs with tabs, blank
+// lines and trailing blanks between them (the line splitting and the number parsing read a whole-file
+// buffer).
+TEST_F(TopographyIoFiles, ValuesAreStrtodsBitForBitWhateverTheLineEnds) {
+  std::vector<std::string> tokens = {"1",
+                                     "-0",
+                                     "0.0",
+                                     "+2.5E+00",
+                                     ".5",
+                                     "5.",
+                                     "-.5e-3",
+                                     "+.25",
+                                     "0000123.4500",
+                                     "1E5",
+                                     "1e+005",
+                                     "3.69862e-007",
+                                     "123456789012345678901234567890",
+                                     "0.1000000000000000055511151231257827021181583404541015625",
+                                     "9007199254740993",
+                                     "2.4703282292062327e-324",
+                                     "4.9406564584124654e-324",
+                                     "1e-320",
+                                     "2.2250738585072011e-308",
+                                     "2.2250738585072014e-308",
+                                     "1.7976931348623157e308",
+                                     "1.7976931348623158e308",
+                                     "-6.02214076E23"};
+  std::mt19937_64 random(42);
+  std::uniform_int_distribution<int> exponent(-330, 310), digits(1, 40), format(0, 2);
+  while (tokens.size() < 4096) {
+    char text[64];
+    if (format(random) == 0) {  // a random bit pattern at full precision
+      const double value = std::bit_cast<double>(random());
+      if (!std::isfinite(value)) continue;
+      std::snprintf(text, sizeof text, "%.17g", value);
+    } else {  // a random decimal mantissa of 1-40 digits and a random exponent
+      std::string mantissa = random() % 2 ? "-" : "";
+      const int count = digits(random);
+      for (int k = 0; k < count; ++k)
+        mantissa += static_cast<char>('0' + random() % 10);
+      if (count > 1) mantissa.insert(mantissa.size() - static_cast<std::size_t>(random() % count), ".");
+      std::snprintf(text, sizeof text, "%s%c%d", mantissa.c_str(), format(random) == 1 ? 'e' : 'E',
+                    exponent(random));
+    }
+    tokens.emplace_back(text);
+  }
+  // The tokens strtod reads whole, to a finite value, without ERANGE: the reader must give its bits.
+  std::vector<std::string> kept;
+  std::vector<double> expected;
+  for (const std::string& token : tokens) {
+    errno = 0;
+    char* end = nullptr;
+    const double value = std::strtod(token.c_str(), &end);
+    if (errno == 0 && *end == '\0' && std::isfinite(value)) {
+      kept.push_back(token);
+      expected.push_back(value);
+    }
+  }
+  ASSERT_GT(kept.size(), 3000u);  // the random decimals mostly land in range
+  const Index columns = 8, rows = static_cast<Index>(kept.size()) / columns;
+  const std::vector<std::string> row_ends = {"\n",    "\r\n",     "\r",   " \t\r\n",
+                                             "\t \n", "\r\n\r\n", "\r\r", "\n \t\n"};
+  std::string text = "# contactbench surface v1\r\n# nx=" + std::to_string(columns) +
+                     " ny=" + std::to_string(rows) + " lx=1e-6 ly=1e-6 periodic=false unit=m\r";
+  for (Index row = 0; row < rows; ++row) {
+    text += row % 3 ? "\t" : "";
+    for (Index column = 0; column < columns; ++column)
+      text += kept[static_cast<std::size_t>(row * columns + column)] + (column % 2 ? "\t" : "  ");
+    text += row_ends[static_cast<std::size_t>(row) % row_ends.size()];
+  }
+  const Surface surface = read_topography(write("tricky.txt", text));
+  ASSERT_EQ(surface.nx(), columns);
+  ASSERT_EQ(surface.ny(), rows);
+  for (Index row = 0; row < rows; ++row)
+    for (Index column = 0; column < columns; ++column) {
+      const std::size_t k = static_cast<std::size_t>(row * columns + column);
+      // Exact: bit patterns, so that -0 and +0 differ too.
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(surface.heights()(row, column)),
+                std::bit_cast<std::uint64_t>(expected[k]))
+          << kept[k];
+    }
+  // Lone CRs end lines as LF does: a bad token is named on its own line.
+  TopographyReadOptions options;
+  options.lx = 1e-6;
+  expect_input_error(write("lone_cr.txt", "1 2\r\r3 x\r"), 3, "'x' is not a number", options);
+  // Hexadecimal floats, which strtod also reads, stay refused as before: the readers take decimals only.
+  expect_input_error(write("hex.txt", "1 0x1p3\n"), 1, "'0x1p3' is not a number", options);
+}
+
+// Rows parsed on two threads (a header that states the size, TopographyReadOptions::threads): the same bits,
+// and for a defective file the same first defect named, as on one thread.
+TEST_F(TopographyIoFiles, RowsParsedOnTwoThreadsGiveTheSameValuesAndMessages) {
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> height(-1e-6, 1e-6);
+  HeightMap heights(37, 29);
+  for (Index row = 0; row < heights.rows(); ++row)
+    for (Index column = 0; column < heights.cols(); ++column)
+      heights(row, column) = height(random);
+  const fs::path file = folder_ / "surface.txt";
+  write_surface(file, Surface(Grid{29, 37, 1e-6, 1e-6, false}, heights));
+  TopographyReadOptions two_threads;
+  two_threads.threads = 2;
+  // Exact: each token is parsed by the same function, only on another thread.
+  EXPECT_EQ(bits_of(read_topography(file, two_threads).heights()), bits_of(heights));
+  const std::string header = "# contactbench surface v1\n# nx=3 ny=4 lx=1e-6 ly=1e-6 periodic=false unit=m\n";
+  const std::string good = "1 2 3\n";
+  for (const auto& [name, rows, line, reason] :
+       {std::tuple{"token.txt", good + "1 2 3\n1 x 3\n1 2 y\n", 5, "'x' is not a number"},
+        std::tuple{"short_row.txt", good + good + "1 2\n1 2 z\n", 5, "row has 2 values"},
+        std::tuple{"long_row.txt", good + good + good + "1 2 3 4\n", 6, "row has 4 values"},
+        std::tuple{"nan.txt", good + good + "nan 2 3\n" + good, 0, "1 of 12 points"}}) {
+    SCOPED_TRACE(name);
+    expect_input_error(write(name, header + rows), line, reason, two_threads);
+    expect_input_error(write(name, header + rows), line, reason);
+  }
+}
+
+// Files beyond the 64 KiB that detection reads first: a format named by the first line is detected from it,
+// every other from the whole file, as a small file is.
+TEST_F(TopographyIoFiles, LargeFilesAreDetectedAsSmallOnesAre) {
+  std::string matrix, points;
+  for (int row = 0; row < 200; ++row) {
+    for (int column = 0; column < 200; ++column) {
+      matrix += std::to_string(row * 200 + column) + "e-9 ";
+      points +=
+          std::to_string(column) + " " + std::to_string(row) + " " + std::to_string(row + column) + "\n";
+    }
+    matrix += "\n";
+  }
+  ASSERT_GT(matrix.size(), std::size_t{1} << 16);
+  ASSERT_GT(points.size(), std::size_t{1} << 16);
+  const std::string one_long_row(70000, '1');  // a first line longer than the head: read whole
+  EXPECT_EQ(detect_topography_format(write("matrix.txt", matrix)), TopographyFormat::plain_matrix);
+  EXPECT_EQ(detect_topography_format(write("points.txt", points)), TopographyFormat::xyz_points);
+  EXPECT_EQ(detect_topography_format(write("long_row.txt", one_long_row + "\n" + one_long_row + "\n")),
+            TopographyFormat::plain_matrix);
+  EXPECT_EQ(detect_topography_format(write("gwyddion.txt", "# Width: 1 um\n# Height: 1 um\n" + matrix)),
+            TopographyFormat::gwyddion);
+  EXPECT_EQ(detect_topography_format(write("interferometer.txt", "h=200 w=200\n" + matrix)),
+            TopographyFormat::interferometer);
+  EXPECT_EQ(detect_topography_format(write("project.txt",
+                                           "\r\n# contactbench surface v1\r\n# nx=200 ny=200 lx=1 ly=1 "
+                                           "periodic=false unit=m\r\n" +
+                                               matrix)),
+            TopographyFormat::project);
+  // A project file's reading agrees with its detection; a binary magic decides whatever follows it.
+  EXPECT_EQ(read_topography(folder_ / "project.txt").heights()(199, 199), 39999e-9);
+  EXPECT_EQ(detect_topography_format(write("npy_magic.txt", "\x93NUMPY" + matrix)), TopographyFormat::npy);
 }
 
 TEST_F(TopographyIoFiles, GwyddionAcceptsBothMicroSignsAndUm) {

@@ -48,10 +48,11 @@ RowSyntax header_text_syntax();
 RowSyntax matrix_syntax(std::string_view first_line);
 
 // Parses every line as a row of heights times `scale`: same count on every row, and the header's counts if it
-// gave any. `context` ends the message for an empty block (" after the header").
+// gave any. `context` ends the message for an empty block (" after the header"). With the header's counts and
+// threads > 1 the rows are parsed on that many threads; the values and any message are the same.
 DataBlock parse_data(const std::filesystem::path& path, std::span<const Line> lines, Real scale,
                      const std::optional<PromisedShape>& promised, std::string_view context,
-                     const RowSyntax& syntax = {});
+                     const RowSyntax& syntax = {}, int threads = 1);
 
 Surface make_surface(DataBlock block, Real lx, Real ly, bool periodic);
 

@@ -88,7 +88,8 @@ ProjectValues read_project_values(const fs::path& path, std::span<const Line> li
   const PromisedShape promised{rows, columns, "ny=" + std::to_string(rows) + where,
                                "nx=" + std::to_string(columns) + where, header.number};
   // Scale 1: multiplying by 1.0 is exact, so the heights stay bit for bit what was written.
-  DataBlock block = parse_data(path, lines.subspan(2), 1.0, promised, " after the header", syntax);
+  DataBlock block =
+      parse_data(path, lines.subspan(2), 1.0, promised, " after the header", syntax, options.threads);
   return {std::move(block),       *size_x, *size_y, periodic.value == "true", std::string(quantity.value),
           std::string(unit.value)};
 }

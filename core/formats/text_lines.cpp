@@ -1,5 +1,8 @@
 #include "contactbench/core/formats/text_lines.hpp"
 
+#include <algorithm>
+#include <cstring>
+
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/formats/text_tokens.hpp"
 
@@ -13,9 +16,20 @@ std::vector<Line> non_blank_lines(std::string_view content) {
   std::vector<Line> lines;
   long number = 0;
   std::size_t start = 0;
+  // The next LF and the next CR at or after `start`, each found by one memchr over the bytes it passes and
+  // kept until `start` passes it: linear in the file whatever its line ends (find_first_of("\r\n") calls
+  // memchr once a byte, and a whole-file search per line would be quadratic in a file of lone CRs).
+  const auto next = [&](char end_of_line, std::size_t from) {
+    if (from >= content.size()) return content.size();  // memchr must not see the null of an empty view
+    const void* found = std::memchr(content.data() + from, end_of_line, content.size() - from);
+    return found ? static_cast<std::size_t>(static_cast<const char*>(found) - content.data())
+                 : content.size();
+  };
+  std::size_t next_lf = next('\n', 0), next_cr = next('\r', 0);
   while (start < content.size()) {
-    std::size_t end = content.find_first_of("\r\n", start);
-    if (end == std::string_view::npos) end = content.size();
+    if (next_lf < start) next_lf = next('\n', start);
+    if (next_cr < start) next_cr = next('\r', start);
+    const std::size_t end = std::min(next_lf, next_cr);
     ++number;
     const std::string_view text = trim(content.substr(start, end - start), is_blank);
     if (!text.empty()) lines.push_back({text, number});
