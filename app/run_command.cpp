@@ -1,6 +1,7 @@
 // contactbench run SCENE: the paper's comparison for any surface (issue: scenes, the comparison run).
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -19,6 +20,7 @@
 #include "contactbench/app/report_writers.hpp"
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/scene_run.hpp"
+#include "contactbench/app/scene_toml.hpp"
 #include "contactbench/app/unconverged.hpp"
 #include "contactbench/core/fft.hpp"
 
@@ -31,7 +33,8 @@ struct RunCommandOptions {
   std::string out;          // default runs/<name>/ (untracked; results/ holds the published record)
   std::string fftw_wisdom;  // --fftw-wisdom FILE (app/fftw_wisdom_file.hpp); empty: the default
   int threads = 1;
-  bool progress = false;  // --progress (app/cli.hpp terminal_observer)
+  std::optional<Index> grid;  // --grid N (app/scene_grid_override.hpp); absent: the scene's own grid
+  bool progress = false;      // --progress (app/cli.hpp terminal_observer)
   bool plots = true;
   bool quiet = false;
 };
@@ -64,10 +67,12 @@ class FieldsWorkFolder {
 };
 
 void run_command(const RunCommandOptions& o, const CommandContext& context) {
-  const Scene scene = read_scene(o.scene);  // everything validated before any work
+  // Everything validated before any work.
+  const Scene scene = o.grid ? read_scene_on_grid(o.scene, *o.grid) : read_scene(o.scene);
   const std::filesystem::path folder =
       o.out.empty() ? std::filesystem::path("runs") / scene.name : std::filesystem::path(o.out);
   std::string command = "contactbench run " + o.scene + " --threads " + std::to_string(o.threads);
+  if (o.grid) command += " --grid " + std::to_string(*o.grid);
   if (!o.out.empty()) command += " --out " + o.out;
   if (!o.plots) command += " --no-plots";
 
@@ -126,6 +131,13 @@ void add_run_command(CLI::App& parent, const CommandContext& context) {
   command->add_option("SCENE", options->scene, "scene file (TOML)")->required();
   command->add_option("--out", options->out, "output folder (default: runs/<scene name>/, which git ignores)")
       ->check(refuse_empty_output_name);
+  command
+      ->add_option("--grid", options->grid,
+                   "points a side of the generated surface instead of the scene's surface.generate.grid: "
+                   "the same size, spectrum and seed at another resolution (a quick look), every refine "
+                   "key scaled by N/grid; refused for a surface read from a file (see surface.crop) and "
+                   "below the least grid that resolves the spectrum (the error says which)")
+      ->check(CLI::Range(Index{2}, Index{kMaxPointsASide}));
   command->add_flag("!--no-plots", options->plots, "do not draw the plots (no gnuplot run)");
   command->add_flag("--quiet", options->quiet, "no progress and no table on the terminal");
   add_threads_option(*command, options->threads);

@@ -81,6 +81,9 @@ struct Scene {
 // folder against which relative file paths resolve (its parent directory).
 Scene parse_scene(std::string_view toml_text, const std::filesystem::path& origin);
 Scene read_scene(const std::filesystem::path& path);
+// `contactbench run SCENE --grid N`: the scene with its generated surface on `points` a side and its refine
+// keys scaled alike (app/scene_grid_override.hpp); a SceneError names the key when that cannot apply.
+Scene read_scene_on_grid(const std::filesystem::path& path, Index points);
 
 // The scene as understood, defaults filled in, as TOML that parse_scene accepts again (for users to copy).
 // Methods keep their order. Throws Error for what a file cannot say (a seed above 2^63 - 1).

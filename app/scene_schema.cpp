@@ -8,6 +8,7 @@
 #include "contactbench/app/methods/registry.hpp"
 #include "contactbench/app/problems.hpp"
 #include "contactbench/app/scene.hpp"
+#include "contactbench/app/scene_grid_override.hpp"
 #include "contactbench/app/scene_text.hpp"
 #include "contactbench/app/scene_toml.hpp"
 #include "contactbench/app/section.hpp"
@@ -326,6 +327,18 @@ std::string origin_name(const fs::path& origin) {
   return origin.empty() ? "<scene>" : origin.string();
 }
 
+toml::table parse_toml(std::string_view toml_text, const fs::path& origin) {
+  try {
+    return toml::parse(toml_text, origin.string());
+  } catch (const toml::parse_error& error) {
+    Problems problems(origin_name(origin));
+    const auto& at = error.source().begin;
+    problems.add_syntax_error(static_cast<long>(at.line), static_cast<long>(at.column), error.description());
+    problems.throw_if_any();
+  }
+  return {};  // not reached: throw_if_any threw
+}
+
 }  // namespace
 
 std::string_view MethodSpec::name() const {
@@ -347,16 +360,7 @@ const MethodSpec& Scene::method(std::string_view label) const {
 }
 
 Scene parse_scene(std::string_view toml_text, const std::filesystem::path& origin) {
-  toml::table document;
-  try {
-    document = toml::parse(toml_text, origin.string());
-  } catch (const toml::parse_error& error) {
-    Problems problems(origin_name(origin));
-    const auto& at = error.source().begin;
-    problems.add_syntax_error(static_cast<long>(at.line), static_cast<long>(at.column), error.description());
-    problems.throw_if_any();
-  }
-  return parse_scene_table(document, origin);
+  return parse_scene_table(parse_toml(toml_text, origin), origin);
 }
 
 Scene parse_scene_table(const toml::table& document, const std::filesystem::path& origin) {
@@ -403,7 +407,10 @@ Scene parse_scene_table(const toml::table& document, const std::filesystem::path
   return scene;
 }
 
-Scene read_scene(const std::filesystem::path& path) {
+namespace {
+
+// The scene file's text as a TOML document.
+toml::table read_scene_document(const fs::path& path) {
   // A scene is a few kilobytes of TOML: 16 MiB is far beyond any real one and bounds a wrong argument
   // (a device such as /dev/zero is refused by name, never read without end).
   constexpr std::uintmax_t max_scene_bytes = std::uintmax_t{16} << 20;
@@ -415,7 +422,23 @@ Scene read_scene(const std::filesystem::path& path) {
     problems.add(0, "file", "cannot open the scene file " + std::string(e.what()));
     problems.throw_if_any();
   }
-  Scene scene = parse_scene(text, path);
+  return parse_toml(text, path);
+}
+
+}  // namespace
+
+Scene read_scene(const std::filesystem::path& path) {
+  Scene scene = parse_scene_table(read_scene_document(path), path);
+  scene.file = path;
+  return scene;
+}
+
+Scene read_scene_on_grid(const std::filesystem::path& path, Index points) {
+  const toml::table document = read_scene_document(path);
+  // The scene as written is checked first, so that its own problems are reported at their lines; then the
+  // override (app/scene_grid_override.hpp), and the overridden scene is checked again.
+  const Scene as_written = parse_scene_table(document, path);
+  Scene scene = parse_scene_table(with_grid_override(document, as_written, points, path), path);
   scene.file = path;
   return scene;
 }
