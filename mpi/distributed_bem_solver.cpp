@@ -93,11 +93,13 @@ DistributedBemSolver::~DistributedBemSolver() = default;
 
 // Bytes a point of the slab, measured as bytes() / slab points with mpiexec -np 2 and 3 on 256^2 and 512^2
 // surfaces (periodic / not): polonsky_keer 60 / 112, preconditioned_cg 80 / 185, each with 10 % of margin;
-// active_set 147 / 303 on its finest level (fitted with the whole-grid term below), with its coarse levels on
-// slabs (a quarter of the points each: a third more in all) 196 / 404, rounded up to 210 / 430. active_set
+// active_set 116 / 296 on its finest level (fitted with the whole-grid term below; its passes fused into the
+// transforms), with its coarse levels on slabs (a quarter of the points each: a third more in all) 155 / 395,
+// rounded up to 165 / 420. active_set
 // also keeps on every rank its levels' responses to a unit load (8 B a point of each level's grid: a third
-// more than the finest's) and solves the coarse levels of at most kGatherBound points on every rank whole
-// (the serial method's ~300 B a point).
+// more than the finest's) and solves the first coarse level of at most kGatherBound points (and those below
+// it) on every rank whole: measured ~100 B a point of that level, bounded here by 200 (at most 13 MB: the
+// estimate is for grids where GiB matter).
 std::size_t DistributedBemSolver::estimated_bytes(const Grid& grid, Index slab_points,
                                                   const BemSolverOptions& options) {
   const bool periodic = grid.periodic;
@@ -110,10 +112,13 @@ std::size_t DistributedBemSolver::estimated_bytes(const Grid& grid, Index slab_p
     case SolverKind::preconditioned_cg:
       bytes = (periodic ? 90 : 205) * slab;
       break;
-    case SolverKind::active_set:
-      bytes = (periodic ? 210 : 430) * slab + 8 * points * 4 / 3 +
-              300 * std::min(points / 4, static_cast<double>(DistributedActiveSet::kGatherBound));
+    case SolverKind::active_set: {
+      double gathered = points / 4;  // the coarse levels halve each side
+      while (gathered > static_cast<double>(DistributedActiveSet::kGatherBound))
+        gathered /= 4;
+      bytes = (periodic ? 165 : 420) * slab + 8 * points * 4 / 3 + 200 * gathered;
       break;
+    }
   }
   return static_cast<std::size_t>(std::ceil(bytes)) + (1u << 20);  // and a MiB of plans and small arrays
 }
