@@ -17,6 +17,7 @@
 #include "contactbench/app/report_writers.hpp"
 #include "contactbench/app/scene_run.hpp"
 #include "contactbench/app/setting_flags.hpp"
+#include "contactbench/app/stage_runner.hpp"
 #include "contactbench/app/surface_source.hpp"
 #include "contactbench/app/unconverged.hpp"
 #include "contactbench/bem/adhesive_path.hpp"
@@ -201,7 +202,10 @@ void run_bem(const BemOptions& o, const CommandContext& context) {
   // The planner's estimate of the run's work on its finest grid (core/fft.hpp FftWork; docs/solvers.md,
   // Planning): kApplicationsPerLoad convolutions a load, so that a long curve without a wisdom file measures.
   set_fft_work({.expected_applications = static_cast<double>(o.loads.size()) * kApplicationsPerLoad});
-  FftwWisdomFile wisdom(fftw_wisdom_path(o.fftw_wisdom, o.threads), o.threads, observer.warning);
+  // Under mpiexec rank 0's wisdom includes FFTW-MPI's plans: a file of its own (core/fftw_wisdom.hpp).
+  const bool distributed = context.runner && context.runner->ranks() > 1;
+  FftwWisdomFile wisdom(fftw_wisdom_path(o.fftw_wisdom, o.threads, distributed), o.threads, observer.warning,
+                        distributed);
   const double planning_before = fftw_planning_seconds();
   SceneReport report;
   try {

@@ -54,18 +54,20 @@ void add_fftw_wisdom_option(CLI::App& command, std::string& file) {
           "FILE"));
 }
 
-std::optional<std::filesystem::path> fftw_wisdom_path(const std::string& option, int threads) {
+std::optional<std::filesystem::path> fftw_wisdom_path(const std::string& option, int threads,
+                                                      bool distributed) {
   const std::string chosen = option.empty() ? variable(kFftwWisdomVariable) : option;
   if (chosen == "none") return std::nullopt;
   if (!chosen.empty()) return std::filesystem::path(chosen);
   const auto folder = cache_folder();
   if (!folder) return std::nullopt;
-  return *folder / file_name_of(fftw_wisdom_key(threads));
+  return *folder / file_name_of(fftw_wisdom_key(threads, distributed));
 }
 
-FftwWisdomFile::FftwWisdomFile(std::optional<std::filesystem::path> path, int threads, Warn warn)
+FftwWisdomFile::FftwWisdomFile(std::optional<std::filesystem::path> path, int threads, Warn warn,
+                               bool distributed)
     : path_(std::move(path)),
-      key_(fftw_wisdom_key(threads)),
+      key_(fftw_wisdom_key(threads, distributed)),
       warn_(std::move(warn)),
       work_before_(fft_work()) {
   if (!path_) {

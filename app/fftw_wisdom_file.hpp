@@ -25,8 +25,9 @@ void add_fftw_wisdom_option(CLI::App& command, std::string& file);
 
 // The file a command keeps wisdom in: `option` (--fftw-wisdom) when given, else the variable, else the cache
 // folder's file for this key; nothing for `none`, or when there is no cache folder (no XDG_CACHE_HOME and no
-// HOME).
-std::optional<std::filesystem::path> fftw_wisdom_path(const std::string& option, int threads);
+// HOME). `distributed`: run as MPI ranks (core/fftw_wisdom.hpp fftw_wisdom_key: a file of its own).
+std::optional<std::filesystem::path> fftw_wisdom_path(const std::string& option, int threads,
+                                                      bool distributed = false);
 
 class FftwWisdomFile {
  public:
@@ -35,7 +36,7 @@ class FftwWisdomFile {
   // Imports the file's wisdom into FFTW's planners, warning when it is unusable (foreign, damaged, not a
   // wisdom file at all). While it lives, the planner is told whether the wisdom is kept (core/fft.hpp
   // FftWork: the finest grids are then measured, once per machine).
-  FftwWisdomFile(std::optional<std::filesystem::path> path, int threads, Warn warn);
+  FftwWisdomFile(std::optional<std::filesystem::path> path, int threads, Warn warn, bool distributed = false);
   // Saves, if save() was not called (an error ended the command: the plans measured are still good).
   ~FftwWisdomFile();
   FftwWisdomFile(const FftwWisdomFile&) = delete;

@@ -21,6 +21,7 @@
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/scene_run.hpp"
 #include "contactbench/app/scene_toml.hpp"
+#include "contactbench/app/stage_runner.hpp"
 #include "contactbench/app/unconverged.hpp"
 #include "contactbench/core/fft.hpp"
 
@@ -79,7 +80,10 @@ void run_command(const RunCommandOptions& o, const CommandContext& context) {
   check_replaceable_folder(folder);  // before any work, and again when the output is moved into place
   const RunObserver observer = terminal_observer("contactbench run", o.progress);
   // Warnings about the wisdom file are shown even with --quiet: they say why a run plans again.
-  FftwWisdomFile wisdom(fftw_wisdom_path(o.fftw_wisdom, o.threads), o.threads, observer.warning);
+  // Under mpiexec rank 0's wisdom includes FFTW-MPI's plans: a file of its own (core/fftw_wisdom.hpp).
+  const bool distributed = context.runner && context.runner->ranks() > 1;
+  FftwWisdomFile wisdom(fftw_wisdom_path(o.fftw_wisdom, o.threads, distributed), o.threads, observer.warning,
+                        distributed);
   const double planning_before = fftw_planning_seconds();
   // A scene's fields are written, load by load, into a work folder beside the output (a run that fails
   // leaves there what it solved) and moved into the output folder with the rest.

@@ -29,8 +29,9 @@ std::string exported(char* text) {
 
 }  // namespace
 
-std::string fftw_wisdom_key(int threads) {
-  return std::string(fftw_version) + ", " + std::to_string(threads) + " threads, FFTW_MEASURE";
+std::string fftw_wisdom_key(int threads, bool distributed) {
+  return std::string(fftw_version) + ", " + std::to_string(threads) + " threads, FFTW_MEASURE" +
+         (distributed ? ", with FFTW-MPI" : "");
 }
 
 std::string fftw_wisdom_text(const std::string& key) {

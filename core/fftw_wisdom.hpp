@@ -18,7 +18,9 @@ namespace contactbench {
 // What a wisdom file is valid for, as its header names it: this FFTW build (version and SIMD codelets, e.g.
 // "fftw-3.3.10-sse2-avx2"), the thread count of the command and the planner rigor. FFTW itself keeps each
 // plan's shape, precision and flags inside the file; a file of another key is foreign and is not imported.
-std::string fftw_wisdom_key(int threads);
+// `distributed`: the process runs FFTW-MPI's planners too (rank 0 under mpiexec), whose wisdom names solvers
+// a process without FFTW-MPI refuses (the whole double part with them): such wisdom has a key of its own.
+std::string fftw_wisdom_key(int threads, bool distributed = false);
 
 // What reading a wisdom file did.
 struct WisdomImport {

@@ -9,12 +9,13 @@ they agree to round-off: 1e-12 leaves a factor of 1e3 over what 1-3 ranks showed
 A run's summary records the ranks and the memory per rank. The default solver (active_set) is distributed: a
 command or scene that names no solver equals one process. What has no distributed version is refused.
 """
-import csv
 import json
 import os
 import subprocess
 import sys
 import tempfile
+
+from mpi_outputs import relative, rows
 
 contactbench, mpiexec, ranks = sys.argv[1], sys.argv[2], int(sys.argv[3])
 environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
@@ -28,16 +29,6 @@ def run(arguments, distributed, expect_status=0):
     if done.returncode != expect_status:
         failures.append(f"{' '.join(command)}: exit {done.returncode}, expected {expect_status}\n{done.stderr}")
     return done
-
-
-def rows(path):
-    with open(path) as f:
-        return list(csv.DictReader(line for line in f if not line.startswith("#")))
-
-
-def relative(a, b):
-    a, b = float(a), float(b)
-    return abs(a - b) / max(abs(b), 1e-300) if a != b else 0.0
 
 
 def field(path):
@@ -173,6 +164,23 @@ with tempfile.TemporaryDirectory() as work:
             failures.append(f"run {big_scene} on {ranks} ranks: '{phrase}' not in: {done.stderr}")
     if os.path.exists(os.path.join(work, "big")):
         failures.append(f"run {big_scene} on {ranks} ranks: wrote its output folder before the refusal")
+
+    # The default wisdom file (the user's cache folder): rank 0's wisdom under mpiexec names FFTW-MPI's solvers,
+    # which a process without FFTW-MPI refuses, so it is kept in a file of its own; one process and mpiexec in
+    # turn never find their file damaged, and each reuses its own.
+    with tempfile.TemporaryDirectory() as cache:
+        cached = dict(environment, XDG_CACHE_HOME=cache)
+        cached.pop("CONTACTBENCH_FFTW_WISDOM", None)
+        for distributed in (True, False, True, False):
+            command = ([mpiexec, "--oversubscribe", "-np", str(ranks)] if distributed else []) + [
+                contactbench, "bem", surface, "--loads", "1e-3", "--threads", "1",
+                "--out", os.path.join(cache, "wisdom_run.csv")]
+            done = subprocess.run(command, capture_output=True, text=True, env=cached, timeout=120)
+            if done.returncode != 0 or "wisdom" in done.stderr:
+                failures.append(f"{' '.join(command)} with a shared cache folder: exit {done.returncode}, {done.stderr}")
+        files = sorted(os.listdir(os.path.join(cache, "contactbench")))
+        if len(files) != 2 or not any("FFTW-MPI" in name for name in files):
+            failures.append(f"wisdom files in the cache folder: {files}, expected one for each kind of process")
 
 for failure in failures:
     print("FAILED:", failure)

@@ -19,13 +19,14 @@ Each scene falls in one of two classes, decided from its own keys (read with tom
              test_mpi_cli.py states: 1e-12 leaves a factor of 1e3 over what 1-3 ranks showed).
 A scene whose keys the test cannot classify fails the test.
 """
-import csv
 import os
 import re
 import subprocess
 import sys
 import tempfile
 import tomllib
+
+from mpi_outputs import relative, rows
 
 contactbench, mpiexec, ranks, scenes_folder = sys.argv[1], sys.argv[2], int(sys.argv[3]), sys.argv[4]
 environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
@@ -62,16 +63,6 @@ def refused_keys(scene):
         if "approach_retract" in method:
             keys.append("approach_retract = {")
     return sorted(set(keys))
-
-
-def rows(path):
-    with open(path) as f:
-        return list(csv.DictReader(line for line in f if not line.startswith("#")))
-
-
-def relative(a, b):
-    a, b = float(a), float(b)
-    return abs(a - b) / max(abs(b), 1e-300) if a != b else 0.0
 
 
 def bem_labels(scene):
