@@ -17,7 +17,6 @@
 #include "contactbench/app/report_writers.hpp"
 #include "contactbench/app/scene_run.hpp"
 #include "contactbench/app/setting_flags.hpp"
-#include "contactbench/app/stage_runner.hpp"
 #include "contactbench/app/surface_source.hpp"
 #include "contactbench/app/unconverged.hpp"
 #include "contactbench/bem/adhesive_path.hpp"
@@ -203,9 +202,7 @@ void run_bem(const BemOptions& o, const CommandContext& context) {
   // Planning): kApplicationsPerLoad convolutions a load, so that a long curve without a wisdom file measures.
   set_fft_work({.expected_applications = static_cast<double>(o.loads.size()) * kApplicationsPerLoad});
   // Under mpiexec rank 0's wisdom includes FFTW-MPI's plans: a file of its own (core/fftw_wisdom.hpp).
-  const bool distributed = context.runner && context.runner->ranks() > 1;
-  FftwWisdomFile wisdom(fftw_wisdom_path(o.fftw_wisdom, o.threads, distributed), o.threads, observer.warning,
-                        distributed);
+  FftwWisdomFile wisdom(o.fftw_wisdom, o.threads, context.runs_as_ranks(), observer.warning);
   const double planning_before = fftw_planning_seconds();
   SceneReport report;
   try {

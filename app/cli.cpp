@@ -13,10 +13,15 @@
 #include "contactbench/app/mpi_launch.hpp"
 #include "contactbench/app/output.hpp"
 #include "contactbench/app/provenance.hpp"
+#include "contactbench/app/stage_runner.hpp"
 #include "contactbench/app/unconverged.hpp"
 #include "contactbench/core/error.hpp"
 
 namespace contactbench {
+
+bool CommandContext::runs_as_ranks() const {
+  return runner && runner->ranks() > 1;
+}
 
 void add_threads_option(CLI::App& command, int& threads) {
   threads = omp_get_max_threads();

@@ -19,6 +19,7 @@ class StageRunner;  // app/stage_runner.hpp
 // (this process, or slabs across MPI ranks). Never changes how a scene is read.
 struct CommandContext {
   const StageRunner* runner = nullptr;  // null: this process
+  bool runs_as_ranks() const;           // started as several MPI ranks (the runner spreads the stages)
 };
 
 // Each subcommand registers its options on `parent` and runs when chosen (one file each). The scene

@@ -64,9 +64,8 @@ std::optional<std::filesystem::path> fftw_wisdom_path(const std::string& option,
   return *folder / file_name_of(fftw_wisdom_key(threads, distributed));
 }
 
-FftwWisdomFile::FftwWisdomFile(std::optional<std::filesystem::path> path, int threads, Warn warn,
-                               bool distributed)
-    : path_(std::move(path)),
+FftwWisdomFile::FftwWisdomFile(const std::string& option, int threads, bool distributed, Warn warn)
+    : path_(fftw_wisdom_path(option, threads, distributed)),
       key_(fftw_wisdom_key(threads, distributed)),
       warn_(std::move(warn)),
       work_before_(fft_work()) {

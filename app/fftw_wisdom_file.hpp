@@ -33,10 +33,11 @@ class FftwWisdomFile {
  public:
   using Warn = std::function<void(const std::string&)>;
 
-  // Imports the file's wisdom into FFTW's planners, warning when it is unusable (foreign, damaged, not a
-  // wisdom file at all). While it lives, the planner is told whether the wisdom is kept (core/fft.hpp
-  // FftWork: the finest grids are then measured, once per machine).
-  FftwWisdomFile(std::optional<std::filesystem::path> path, int threads, Warn warn, bool distributed = false);
+  // Imports the wisdom of the file fftw_wisdom_path(option, threads, distributed) names into FFTW's
+  // planners, warning when it is unusable (foreign, damaged, not a wisdom file at all). While it lives, the
+  // planner is told whether the wisdom is kept (core/fft.hpp FftWork: the finest grids are then measured,
+  // once per machine).
+  FftwWisdomFile(const std::string& option, int threads, bool distributed, Warn warn);
   // Saves, if save() was not called (an error ended the command: the plans measured are still good).
   ~FftwWisdomFile();
   FftwWisdomFile(const FftwWisdomFile&) = delete;

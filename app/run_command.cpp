@@ -21,7 +21,6 @@
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/scene_run.hpp"
 #include "contactbench/app/scene_toml.hpp"
-#include "contactbench/app/stage_runner.hpp"
 #include "contactbench/app/unconverged.hpp"
 #include "contactbench/core/fft.hpp"
 
@@ -81,9 +80,7 @@ void run_command(const RunCommandOptions& o, const CommandContext& context) {
   const RunObserver observer = terminal_observer("contactbench run", o.progress);
   // Warnings about the wisdom file are shown even with --quiet: they say why a run plans again.
   // Under mpiexec rank 0's wisdom includes FFTW-MPI's plans: a file of its own (core/fftw_wisdom.hpp).
-  const bool distributed = context.runner && context.runner->ranks() > 1;
-  FftwWisdomFile wisdom(fftw_wisdom_path(o.fftw_wisdom, o.threads, distributed), o.threads, observer.warning,
-                        distributed);
+  FftwWisdomFile wisdom(o.fftw_wisdom, o.threads, context.runs_as_ranks(), observer.warning);
   const double planning_before = fftw_planning_seconds();
   // A scene's fields are written, load by load, into a work folder beside the output (a run that fails
   // leaves there what it solved) and moved into the output folder with the rest.

@@ -52,7 +52,7 @@ class StageRunner {
   // app/methods/bem_method.cpp).
   struct SpreadMemory {
     std::uintmax_t bytes = 0;
-    std::string how;  // e.g. "2 ranks on this machine, about 1.2 GiB each"
+    std::string how;  // e.g. "2 ranks, 2 on this machine, about 1.2 GiB each and 256 MiB more on rank 0, ..."
   };
   virtual std::optional<SpreadMemory> bem_memory(const BemSolverOptions&, const Grid&) const {
     return std::nullopt;
