@@ -16,6 +16,10 @@ Measures, interleaved (cold, warm, off, cold, warm, off, ...) so that the machin
                 back (one load: nothing; the plans are estimated).
   2. `contactbench run scenes/paper/surface_A.toml --threads T --no-plots`, the BEM stage's seconds and the
      planning line of "Stages that ran" (summary.json), cold / warm / none as above.
+  3. Where the 1024^2 command's time goes, per case: the stages its --progress lines report (reading the
+     surface, its spectral moments, the BEM stage and within it the solve and the FFTW planning), the rest of
+     the wall time (process start, wisdom read, statistics, CSV write, exit), and the page faults
+     (getrusage's minor faults of the child: a first touch of a 4 KiB page each).
 Medians of the repetitions; the machine is shared, so the load average is recorded beside them.
 --baseline: another contactbench program (an older commit's build, say) measured the same way, interleaved
 with this build's runs, so that the tables give the ratio of the two in the same run, under the same load.
@@ -23,6 +27,8 @@ with this build's runs, so that the tables give the ratio of the two in the same
 import argparse
 import json
 import os
+import re
+import resource
 import statistics
 import subprocess
 import sys
@@ -34,12 +40,28 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 def run(command, env):
+    faults_before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_minflt
     start = time.perf_counter()
     done = subprocess.run(command, env=env, capture_output=True, text=True)
     wall = time.perf_counter() - start
     if done.returncode != 0:
         sys.exit(f"command_cost: {' '.join(map(str, command))} failed:\n{done.stderr}")
+    done.page_faults = resource.getrusage(resource.RUSAGE_CHILDREN).ru_minflt - faults_before
     return wall, done
+
+
+# The seconds of the stages a `bem --progress` run reports on stderr ("contactbench bem: NAME: done in S s",
+# and the load's "N iterations in S s" as the solve).
+def progress_stages(stderr):
+    stages = {"surface": 0.0, "moments": 0.0, "bem": 0.0, "solve": 0.0, "FFTW planning": 0.0}
+    for line in stderr.splitlines():
+        done = re.search(r": ([^:]+): done in ([0-9.e+-]+) s$", line)
+        if done and done.group(1) in stages:
+            stages[done.group(1)] += float(done.group(2))
+        solved = re.search(r"iterations in ([0-9.e+-]+) s$", line)
+        if solved:
+            stages["solve"] += float(solved.group(1))
+    return stages
 
 
 def stage_seconds(summary, prefix):
@@ -80,17 +102,24 @@ def main():
         cases = [(program, case) for program in programs for case in ("cold", "warm", "none")]
         scene = ROOT / "scenes" / "paper" / "surface_A.toml"
         bem_wall = {key: [] for key in cases}
+        bem_stages = {key: [] for key in cases}
+        bem_faults = {key: [] for key in cases}
         scene_bem = {key: [] for key in cases}
         scene_planning = {key: [] for key in cases}
         scene_wall = {key: [] for key in cases}
         for repetition in range(args.repetitions):
             for program, binary in programs.items():
-                bem = [binary, "bem", surface, "--periodic", "--loads", "0.000478", "--threads", threads]
+                bem = [binary, "bem", surface, "--periodic", "--loads", "0.000478", "--threads", threads,
+                       "--progress", "--out", work / f"bem_{program}.csv"]
                 wisdom = work / f"bem_wisdom_{program}_{repetition}.txt"
                 for case, flag in (("cold", str(wisdom)), ("warm", str(wisdom)), ("none", "none")):
                     loads.append(os.getloadavg()[0])
-                    wall, _ = run(bem + ["--fftw-wisdom", flag], env)
+                    wall, done = run(bem + ["--fftw-wisdom", flag], env)
                     bem_wall[program, case].append(wall)
+                    stages = progress_stages(done.stderr)
+                    stages["rest"] = wall - stages["surface"] - stages["moments"] - stages["bem"]
+                    bem_stages[program, case].append(stages)
+                    bem_faults[program, case].append(done.page_faults)
             for program, binary in programs.items():
                 scene_run = [binary, "run", scene, "--threads", threads, "--no-plots", "--quiet"]
                 wisdom = work / f"scene_wisdom_{program}_{repetition}.txt"
@@ -152,6 +181,26 @@ def main():
             row += (f" {median(bem_wall['baseline', case])} | {spread(bem_wall['baseline', case])} | "
                     f"{ratio(bem_wall, case)} |")
         lines.append(row)
+    lines += [
+        "",
+        "Where the time goes (medians of each column over the repetitions): the stages the command's "
+        "--progress lines report; solve and planning are parts of the BEM stage (the rest of it: making "
+        "the solver's arrays and coarse levels, the contact statistics); rest: the wall time outside the "
+        "reported stages (process start and exit, the wisdom file, the CSV). Page faults: minor faults of "
+        "the process (getrusage).",
+        "",
+        "| program | case | wall [s] | surface read [s] | moments [s] | BEM stage [s] | of which solve [s] | "
+        "of which planning [s] | rest [s] | page faults |",
+        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|",
+    ]
+    for program in (("this", "baseline") if args.baseline else ("this",)):
+        for case in ("cold", "warm", "none"):
+            stage = {name: statistics.median(s[name] for s in bem_stages[program, case])
+                     for name in ("surface", "moments", "bem", "solve", "FFTW planning", "rest")}
+            lines.append(f"| {program} | {case} | {statistics.median(bem_wall[program, case]):.3f} | "
+                         f"{stage['surface']:.3f} | {stage['moments']:.3f} | {stage['bem']:.3f} | "
+                         f"{stage['solve']:.3f} | {stage['FFTW planning']:.3f} | {stage['rest']:.3f} | "
+                         f"{statistics.median(bem_faults[program, case]):.0f} |")
     lines += [
         "",
         "## The paper's surface A scene, `contactbench run`",

@@ -24,6 +24,14 @@ ActiveSet<T>::ActiveSet(const Grid& grid, std::vector<T> heights, Real modulus, 
       in_(n_),
       plastic_(n_),
       sums_(static_cast<std::size_t>(std::max({operator_->threads(), filter_->threads(), threads}))) {
+  // r and t are read off the set (r's value discarded, t times beta = 0 at a start): zeros, written by the
+  // threads whose static split of the points later uses them (their pages' first touch on those threads).
+  over_points([&](std::size_t begin, std::size_t end, Sums&) {
+    std::fill(r_.begin() + static_cast<std::ptrdiff_t>(begin), r_.begin() + static_cast<std::ptrdiff_t>(end),
+              T(0));
+    std::fill(t_.begin() + static_cast<std::ptrdiff_t>(begin), t_.begin() + static_cast<std::ptrdiff_t>(end),
+              T(0));
+  });
   measure_heights();
   make_coarse_level();  // the whole hierarchy, with its FFT plans, made once
   for (int thread = 0; thread < team(); ++thread)

@@ -22,6 +22,7 @@
 #include "contactbench/bem/convolution.hpp"
 #include "contactbench/core/fft.hpp"
 #include "contactbench/core/grid.hpp"
+#include "contactbench/core/work_array.hpp"
 
 namespace contactbench {
 
@@ -280,12 +281,14 @@ class ActiveSet {
   // The preconditioner's filter in single precision whatever T (cg_on_set).
   std::unique_ptr<Convolution<float>> filter_;
   std::size_t n_;
-  std::vector<T> u_, r_, z_, t_;  // G p, the CG's residual, the filtered residual, the CG's direction
+  // G p, the CG's residual, the filtered residual, the CG's direction: not zero-filled when made (u and z are
+  // written before they are read; r and t are zeroed by the team that uses them, in the constructor).
+  WorkArray<T> u_, r_, z_, t_;
   // Off the set: 1 / the window's count of set nodes (floored). In single precision whatever T: E and E^T
   // read the same weights, so the preconditioner stays symmetric, and each iteration reads them twice
   // (surface A at 1 % contact: the same iterations in the 30 cases, 2 to 4 % less time at 1024^2 and
   // 2048^2).
-  std::vector<float> extension_weight_;
+  WorkArray<float> extension_weight_;  // (written by make_extension_weights before any read)
   // The window sums of the extended filter, one per thread of the team (bem/box_sum.hpp).
   std::vector<WindowRows> window_rows_;
   std::vector<std::uint8_t> in_;       // the elastic contact set
@@ -303,16 +306,16 @@ class ActiveSet {
     double dp = 0;
   };
   std::vector<std::array<Change, active_set_tuning::kFewChanges>>
-      changes_;              // per thread, recorded by keep_to_sets
-  std::vector<T> response_;  // G e_0, the displacement of a unit pressure at node 0 (or empty)
-  std::vector<std::uint16_t> window_count_;  // per node: the set nodes in its window (with the weights)
-  bool weights_current_ = false;             // the weights are those of the set before pending_flips_
-  std::vector<std::vector<Flip>> flips_;     // per thread: the last set update's flips
-  std::vector<Flip> pending_flips_;          // the flips since the weights were made
-  double set_size_ = 1;                      // nodes in the set
-  double set_mean_ = 0;                      // the mean of u - h on the set at the CG's end (load control)
-  double contact_fraction_ = 0;              // of the nodes, in contact (p > 0) in the last solution
-  std::unique_ptr<ActiveSet<T>> coarse_;     // the next coarser level of the nested start, once made
+      changes_;                            // per thread, recorded by keep_to_sets
+  std::vector<T> response_;                // G e_0, the displacement of a unit pressure at node 0 (or empty)
+  WorkArray<std::uint16_t> window_count_;  // per node: the set nodes in its window (with the weights)
+  bool weights_current_ = false;           // the weights are those of the set before pending_flips_
+  std::vector<std::vector<Flip>> flips_;   // per thread: the last set update's flips
+  std::vector<Flip> pending_flips_;        // the flips since the weights were made
+  double set_size_ = 1;                    // nodes in the set
+  double set_mean_ = 0;                    // the mean of u - h on the set at the CG's end (load control)
+  double contact_fraction_ = 0;            // of the nodes, in contact (p > 0) in the last solution
+  std::unique_ptr<ActiveSet<T>> coarse_;   // the next coarser level of the nested start, once made
 };
 
 // Holds p at node k to the sets: H on the plastic set, 0 off both. Adds to `part` what the load's rescaling

@@ -18,7 +18,9 @@ PolonskyKeerSolver<T>::PolonskyKeerSolver(const Surface& centred, Real modulus, 
     : PressureState<T>(centred, threads),
       convolution_(make_half_space_convolution<T>(centred.grid(), modulus, threads)),
       t_(static_cast<std::size_t>(this->n_)),
-      partial_(static_cast<std::size_t>(convolution_->threads())) {}
+      partial_(static_cast<std::size_t>(convolution_->threads())) {
+  this->q_[1].resize(static_cast<std::size_t>(this->n_));  // the iteration's second pressure (PressureState)
+}
 
 template <class T>
 SolveOutcome PolonskyKeerSolver<T>::solve_load(double mean_pressure, double, double tolerance,

@@ -13,8 +13,7 @@ PressureState<T>::PressureState(const Surface& centred, int threads)
       n_(grid_.points()),
       h_(static_cast<std::size_t>(n_)),
       g_(static_cast<std::size_t>(n_)) {
-  q_[0].resize(static_cast<std::size_t>(n_));
-  q_[1].resize(static_cast<std::size_t>(n_));
+  q_[0].resize(static_cast<std::size_t>(n_));  // q_[1]: sized by the solvers that alternate (Polonsky-Keer)
   const HeightMap& h = centred.heights();
   for (Index i = 0; i < n_; ++i)
     h_[static_cast<std::size_t>(i)] = static_cast<T>(h.data()[i]);
