@@ -4,12 +4,14 @@
 #include <cstdint>
 #include <exception>
 #include <iostream>
+#include <optional>
 
 #include <mpi.h>
 
 #include "contactbench/app/load_fields.hpp"
 #include "contactbench/app/run_observer.hpp"
 #include "contactbench/app/stages.hpp"
+#include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/memory_budget.hpp"
 #include "contactbench/core/topography_io.hpp"
@@ -87,6 +89,7 @@ struct BemRequest {
   Grid grid;
   Real estar = 0;
   BemSettings settings;  // its solve settings the distributed solver takes (app/methods/bem_settings.hpp)
+  std::optional<Real> hardness;  // the interface's (active_set only; bem_refusal)
   int threads = 1;
   bool write_fields = false;
   std::vector<Real> mean_pressures;
@@ -99,6 +102,7 @@ BemRequest broadcast_request(const BemRequest& request) {
     pack_grid(packed, request.grid);
     packed.push_back(request.estar);
     pack_settings(bem_settings(), request.settings, packed);
+    packed.insert(packed.end(), {request.hardness ? 1.0 : 0.0, request.hardness.value_or(0.0)});
     packed.insert(packed.end(), {static_cast<double>(request.threads), request.write_fields ? 1.0 : 0.0,
                                  static_cast<double>(request.mean_pressures.size())});
     packed.insert(packed.end(), request.mean_pressures.begin(), request.mean_pressures.end());
@@ -111,6 +115,9 @@ BemRequest broadcast_request(const BemRequest& request) {
   r.grid = in.grid();
   r.estar = in.number();
   in.settings(r.settings);
+  const bool capped = in.flag();
+  const double hardness = in.number();
+  if (capped) r.hardness = hardness;
   r.threads = static_cast<int>(in.integer());
   r.write_fields = in.flag();
   for (Index k = in.integer(); k > 0; --k)
@@ -132,6 +139,7 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
   const mpi::Slab slab = mpi::slab_of(grid, kWorld);
   const HeightMap local = mpi::scatter_from_root(heights ? *heights : HeightMap(), slab, kWorld);
   BemSolverOptions options = request.settings.solver;
+  options.hardness = request.hardness;  // absent: purely elastic (as app/serial_runner.cpp)
   options.warning = warning;
   mpi::DistributedBemSolver solver(grid, local, request.estar, kWorld, options, request.threads);
   SolvedLoads result;
@@ -172,7 +180,7 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
                                                  .residual = solved.residual,
                                                  .converged = solved.converged,
                                                  .seconds = seconds,
-                                                 .plastic_points = 0,
+                                                 .plastic_points = solved.plastic_points,
                                                  .plastic_overlap = {}});
     if (is_root() && load_solved) load_solved(k, result.solutions.back());
   }
@@ -258,7 +266,10 @@ class DistributedRunner final : public StageRunner {
     // What the distributed solver lacks: the interface's effects, and the settings the declaration says
     // (app/methods/bem_settings.cpp) it does not take.
     std::vector<std::string> missing;
-    if (stage.hardness) missing.push_back("a hardness (interface.hardness)");
+    // A hardness: the capped active_set is distributed, not the other solvers' search of the flat's height.
+    if (stage.hardness && stage.settings.solver.solver != SolverKind::active_set)
+      missing.push_back("a hardness (interface.hardness) with solver " +
+                        std::string(solver_name(stage.settings.solver.solver)) + " (active_set takes it)");
     if (stage.adhesion) missing.push_back("adhesion (interface.adhesion)");
     if (!stage.load_path.empty()) missing.push_back("a load path (loads.path = \"as listed\")");
     if (stage.stiffness) missing.push_back("the contact stiffness (compare = [\"stiffness\"])");
@@ -285,6 +296,7 @@ class DistributedRunner final : public StageRunner {
     BemRequest request{.grid = solved.grid(),
                        .estar = estar,
                        .settings = stage.settings,
+                       .hardness = stage.hardness,
                        .threads = context.threads,
                        .write_fields = !fields.empty(),
                        .mean_pressures = mean_pressures,

@@ -87,10 +87,27 @@ ContactStatistics distributed_contact_statistics(const Grid& grid, const HeightM
   MPI_Gather(mine.data(), static_cast<int>(mine.size()), MPI_INT64_T, all.data(),
              static_cast<int>(mine.size()), MPI_INT64_T, 0, comm);
 
-  // Local sums: contact nodes, boundary edges inside the slab, the gap; and the largest pressure.
-  double sums[3] = {static_cast<double>(contact.cast<Index>().sum()),
-                    static_cast<double>(edges_within(contact, topology.wrap_x)), local_gap.sum()};
-  MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_DOUBLE, MPI_SUM, comm);
+  // Local sums: contact nodes, boundary edges inside the slab, the gap; for a non-periodic patch the
+  // contact nodes and pressure inside the interior block (all less the outer ring of kEdgeRingPixels, as
+  // bem/contact_statistics.cpp) and the whole pressure; and the largest pressure.
+  const Index ring = kEdgeRingPixels;
+  const bool edges = !topology.wrap_x && !topology.wrap_y && nx > 2 * ring && grid.ny > 2 * ring;
+  double inside_contact = 0, inside_pressure = 0;
+  if (edges) {
+    const Index first = std::max(ring, slab.start), last = std::min(grid.ny - ring, slab.start + slab.count);
+    for (Index y = first; y < last; ++y) {
+      const Index r = y - slab.start;
+      inside_contact += static_cast<double>(contact.row(r).segment(ring, nx - 2 * ring).cast<Index>().sum());
+      inside_pressure += local_pressure.row(r).segment(ring, nx - 2 * ring).sum();
+    }
+  }
+  double sums[6] = {static_cast<double>(contact.cast<Index>().sum()),
+                    static_cast<double>(edges_within(contact, topology.wrap_x)),
+                    local_gap.sum(),
+                    inside_contact,
+                    edges ? local_pressure.sum() : 0.0,
+                    inside_pressure};
+  MPI_Allreduce(MPI_IN_PLACE, sums, 6, MPI_DOUBLE, MPI_SUM, comm);
   double max_pressure = slab.count > 0 ? local_pressure.maxCoeff() : -std::numeric_limits<double>::infinity();
   MPI_Allreduce(MPI_IN_PLACE, &max_pressure, 1, MPI_DOUBLE, MPI_MAX, comm);
 
@@ -143,6 +160,10 @@ ContactStatistics distributed_contact_statistics(const Grid& grid, const HeightM
   s.spots = border[1];
   s.mean_gap = sums[2] / nodes;
   s.max_pressure = max_pressure;
+  if (edges) {
+    if (sums[0] > 0) s.edge_contact_share = (sums[0] - sums[3]) / sums[0];
+    if (sums[4] > 0) s.edge_load_share = (sums[4] - sums[5]) / sums[4];
+  }
   return s;
 }
 
