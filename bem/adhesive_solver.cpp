@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "contactbench/bem/adhesive_constrained_cg.hpp"
 #include "contactbench/bem/half_space.hpp"
 #include "contactbench/bem/solvers/contact_solver.hpp"
 #include "contactbench/core/error.hpp"
@@ -128,7 +129,20 @@ const AdhesiveSolution& AdhesiveBemSolver::solve_with(Control control, Real valu
   last_change_ = 0;
   flips_.assign(static_cast<std::size_t>(h.size()), 0);
   AdhesiveSolution& s = solution_;
+  Index cg_iterations = 0;
+  if (options_.method == AdhesiveMethod::constrained_cg && law_.model == AdhesionModel::dugdale) {
+    // The whole-surface CG moves the zone to where it settles; the fixed point below starts the contact
+    // solver from its pressure and checks it (one or a few contact solves where the CG settled).
+    HeightMap pressure =
+        warm_ && s.pressure.size() == h.size() ? s.pressure : HeightMap::Zero(h.rows(), h.cols());
+    const ConstrainedCgOutcome cg =
+        solve_dugdale_constrained_cg(*half_space_, h, law_, control == Control::load, value,
+                                     options.tolerance, options.max_iterations, pressure, attraction_);
+    cg_iterations = cg.iterations;
+    if (pressure.maxCoeff() > 0) engine_->start_from(pressure);
+  }
   s = AdhesiveSolution{};
+  s.cg_iterations = cg_iterations;
   ContactSolution contact;
   HeightMap used;  // the attraction of the last contact solve
   bool contact_converged = true, settled = false;
