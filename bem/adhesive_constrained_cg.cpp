@@ -31,6 +31,7 @@ ConstrainedCgOutcome solve_dugdale_constrained_cg(HalfSpace& half_space, const H
   unit(0, 0) = 1;
   half_space.apply(unit, response);
   const Real self_response = response(0, 0);
+  const Real half_own_pull = self_response * sigma0 / 2;
   Real last_norm = 1;
   bool conjugate = false;
   for (Index k = 0; k < max_iterations; ++k) {
@@ -103,7 +104,10 @@ ConstrainedCgOutcome solve_dugdale_constrained_cg(HalfSpace& half_space, const H
       // The cohesive zone from the current gap: in contact or closer than δc.
       unsigned char& flipped = flips[static_cast<std::size_t>(i)];
       if (flipped >= kFlipsToFreeze) continue;
-      const Real a = (p > 0 || gap < reach) ? sigma0 : 0;
+      // The fixed point's rule (adhesive_solver.cpp): the gap with half of the point's own pull below δc,
+      // the same test whichever side the point is on now.
+      const Real own = attraction.data()[i] > 0 ? half_own_pull : -half_own_pull;
+      const Real a = (p > 0 || gap + own < reach) ? sigma0 : 0;
       if (a != attraction.data()[i]) {
         attraction.data()[i] = a;
         ++flipped;
