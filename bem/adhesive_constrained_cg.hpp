@@ -1,5 +1,5 @@
 // The Maugis–Dugdale contact solved on the whole surface by one constrained conjugate gradient
-// (docs/theory.md section 10.8, docs/solvers.md "Adhesion"): Polonsky and Keer's iteration (Wear 231, 1999)
+// (docs/theory.md section 10.10, docs/solvers.md "Adhesion"): Polonsky and Keer's iteration (Wear 231, 1999)
 // on the repulsive pressure p >= 0, with the attraction a(x) in {0, σ0} decided inside the iteration from the
 // current gap, in the spirit of Rey, Anciaux and Molinari (Computational Mechanics 60, 69, 2017), who treat
 // the cohesive zone inside the CG rather than around it. The fixed point (adhesive_solver.cpp) moves the
