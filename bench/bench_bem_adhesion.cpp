@@ -12,6 +12,7 @@
 // adhesive solve, cg_iterations (constrained_cg: the whole-surface CG's steps); elastic_iterations,
 // elastic_seconds; ratio (adhesive over non-adhesive time, the figure of issue 34: goal <= 5 at 1024^2);
 // zone_pixels (the attractive zone's width at the contact edge), area_fraction and elastic_area_fraction;
+// load_potential (U + (P/A0) d of the adhesive state, J/m^2);
 // converged. Reported: the medians of 3 repetitions.
 #include <benchmark/benchmark.h>
 
@@ -82,6 +83,9 @@ void adhesive_solve(benchmark::State& state, AdhesionModel model, bool periodic,
     state.counters["elastic_seconds"] = elastic_seconds;
     state.counters["ratio"] = adhesive_seconds / elastic_seconds;
     state.counters["zone_pixels"] = a.zone_pixels;
+    // U + (P/A0) d [J/m^2]: the potential that load control makes stationary (dU/dd = -P/A0, docs/theory.md
+    // 10.7), to compare the equilibria two methods end on at the same load (the lower is the more stable).
+    state.counters["load_potential"] = adhesive.energy() + a.mean_pressure * a.separation;
     state.counters["area_fraction"] = static_cast<double>(a.contact_points) / points;
     state.counters["elastic_area_fraction"] = static_cast<double>(e.contact_points) / points;
     state.counters["converged"] = a.converged && e.converged ? 1 : 0;
