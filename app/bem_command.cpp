@@ -172,7 +172,7 @@ void run_approach_retract(const BemOptions& o, const Scene& scene, const std::st
   if (stage.settings.refine > 0 || stage.settings.extrapolate || !stage.settings.fields.empty())
     throw Error("--approach-retract: --refine, --extrapolate and --fields are not taken along a path");
   const RunObserver observer = terminal_observer(command);
-  AdhesiveSolverOptions options{.contact = stage.settings.solver};
+  AdhesiveSolverOptions options{.contact = stage.settings.solver, .method = stage.settings.adhesive_method};
   options.contact.warning = observer.warning;
   AdhesiveBemSolver solver(surface.with_periodic(stage.periodic), modulus, *stage.adhesion, options,
                            o.threads);

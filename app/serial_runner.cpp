@@ -40,8 +40,10 @@ class SerialRunner final : public StageRunner {
     std::optional<BemSolver> solver;
     std::optional<AdhesiveBemSolver> adhesive;
     if (stage.adhesion)
-      adhesive.emplace(solved, estar, *stage.adhesion, AdhesiveSolverOptions{.contact = solver_options},
-                       context.threads);
+      adhesive.emplace(
+          solved, estar, *stage.adhesion,
+          AdhesiveSolverOptions{.contact = solver_options, .method = stage.settings.adhesive_method},
+          context.threads);
     else
       solver.emplace(solved, estar, solver_options, context.threads);
     std::map<int, Labeller> labellers;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "contactbench/bem/adhesive_constrained_cg.hpp"
 #include "contactbench/bem/half_space.hpp"
 #include "contactbench/bem/solvers/contact_solver.hpp"
 #include "contactbench/core/error.hpp"
@@ -18,6 +19,9 @@ constexpr Real kSmallestRelaxation = 1.0 / 256;
 // Dugdale: a point that changed side this often in one solve is cycling: the zone's edge crosses it. Three:
 // in, out and in again (a point that only enters or only leaves changes side once).
 constexpr unsigned char kFlipsToEdge = 3;
+// constrained_cg: the whole-surface CG only has to bring the zone to where it settles; the contact solver
+// that follows converges to the contact tolerance. Its stop: the pressure's relative change per step.
+constexpr Real kWholeSurfaceTolerance = 1e-3;
 
 }  // namespace
 
@@ -129,6 +133,8 @@ const AdhesiveSolution& AdhesiveBemSolver::solve_with(Control control, Real valu
   flips_.assign(static_cast<std::size_t>(h.size()), 0);
   AdhesiveSolution& s = solution_;
   s = AdhesiveSolution{};
+  const bool whole_surface_cg =
+      options_.method == AdhesiveMethod::constrained_cg && law_.model == AdhesionModel::dugdale;
   ContactSolution contact;
   HeightMap used;  // the attraction of the last contact solve
   bool contact_converged = true, settled = false;
@@ -166,6 +172,17 @@ const AdhesiveSolution& AdhesiveBemSolver::solve_with(Control control, Real valu
     s.attraction_change = update_attraction(contact);
     settled = law_.model == AdhesionModel::dugdale ? s.attraction_change == 0
                                                    : s.attraction_change <= residual_bound(options.tolerance);
+    if (whole_surface_cg && outer == 0 && !settled) {
+      // After the first contact solve (the fixed point's own start, so both methods leave from the same
+      // state), the whole-surface CG moves the zone to where it settles; the contact solver starts from its
+      // pressure, and the outer iterations that follow check and settle it.
+      HeightMap pressure = contact.pressure;
+      s.cg_iterations =
+          solve_dugdale_constrained_cg(*half_space_, h, law_, control == Control::load, value,
+                                       kWholeSurfaceTolerance, options.max_iterations, pressure, attraction_)
+              .iterations;
+      if (pressure.maxCoeff() > 0) engine_->start_from(pressure);
+    }
   }
   warm_ = !s.separated;
   if (s.outer_iterations > 0 && contact.pressure.size() > 0) {

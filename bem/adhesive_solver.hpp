@@ -19,6 +19,7 @@
 #pragma once
 
 #include <memory>
+#include <string_view>
 
 #include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/core/adhesion_law.hpp"
@@ -56,6 +57,7 @@ struct AdhesiveSolution {
   Real zone_pixels = 0;
   Index iterations = 0;        // of the contact solves, summed over the outer iterations
   Index outer_iterations = 0;  // contact solves made
+  Index cg_iterations = 0;     // constrained_cg: the steps of the whole-surface CG before them
   Real residual = 0;           // of the last contact solve (BemSolver::solution().residual)
   Real attraction_change = 0;  // the last outer change: points that changed side (Dugdale), max |Δa|/peak
   bool converged = false;
@@ -72,8 +74,18 @@ struct AdhesiveSolution {
   }
 };
 
+// How the adhesive problem is solved (docs/solvers.md "Adhesion"): the fixed point on the attraction around
+// the contact solver alone, or (Dugdale only) first one constrained CG on the whole surface with the zone
+// decided inside it (bem/adhesive_constrained_cg.hpp), whose state the fixed point then checks and settles.
+enum class AdhesiveMethod { fixed_point, constrained_cg };
+
+inline std::string_view adhesive_method_name(AdhesiveMethod method) {
+  return method == AdhesiveMethod::fixed_point ? "fixed_point" : "constrained_cg";
+}
+
 struct AdhesiveSolverOptions {
   BemSolverOptions contact;  // of each contact solve (the solver, tolerance, precision)
+  AdhesiveMethod method = AdhesiveMethod::fixed_point;
   // Outer iterations before the solve is marked not converged.
   Index max_outer_iterations = 500;
 };

@@ -109,7 +109,7 @@ TEST(ExponentialSphere, TendsTowardJkrAsTaborGrows) {
 // (δK = F/(2E* a), Kendall's approach at pull-off), then retracted in steps of 4 % of δK until the face lets
 // go; the load rises linearly to the last state in contact, so the last steps are redone from the last
 // state in contact in steps of 0.4 % of δK (the error of the pull-off is below 0.4 % of F).
-Real punch_pull_off_over_kendall(Index radius_pixels, Real zone_pixels) {
+Real punch_pull_off_over_kendall(Index radius_pixels, Real zone_pixels, AdhesiveMethod method) {
   const Real dx = 1e-6;
   const Index n = 2 * radius_pixels + 4;
   const Grid grid{.nx = n, .ny = n, .lx = n * dx, .ly = n * dx, .periodic = false};
@@ -126,6 +126,7 @@ Real punch_pull_off_over_kendall(Index radius_pixels, Real zone_pixels) {
   const Real sigma0 = std::sqrt(M_PI * kModulus * kWork / (8 * zone_pixels * dx));
   AdhesiveSolverOptions options;
   options.contact.tolerance = 1e-8;
+  options.method = method;
   AdhesiveBemSolver solver(s, kModulus, AdhesionLaw::dugdale(kWork, sigma0), options, 2);
   const Real top = solver.surface().heights().maxCoeff();
   const Real a = std::sqrt(static_cast<Real>(face) / M_PI) * dx;  // the face's area as a disc
@@ -161,10 +162,13 @@ Real punch_pull_off_over_kendall(Index radius_pixels, Real zone_pixels) {
 // cohesive zone moves the crack's effective tip by a fraction of ℓ, a correction of first order in ℓ/a.
 // Kendall's limit itself (1 % needs a/ℓ of several hundred, a of about 1000 pixels) is out of a test's
 // reach; its first-order extrapolation from a/ℓ = 4 and 8 is tested instead.
-TEST(KendallPunch, PullOffTendsToKendallAsTheZoneShrinks) {
-  const Real coarse = punch_pull_off_over_kendall(8, 2);
-  const Real fine = punch_pull_off_over_kendall(16, 2);
-  const Real same_ratio = punch_pull_off_over_kendall(16, 4);
+// Both methods of the Dugdale law (AdhesiveSolverOptions::method) are held to the same checks.
+class KendallPunch : public ::testing::TestWithParam<AdhesiveMethod> {};
+
+TEST_P(KendallPunch, PullOffTendsToKendallAsTheZoneShrinks) {
+  const Real coarse = punch_pull_off_over_kendall(8, 2, GetParam());
+  const Real fine = punch_pull_off_over_kendall(16, 2, GetParam());
+  const Real same_ratio = punch_pull_off_over_kendall(16, 4, GetParam());
   // The pixel does not matter at a fixed a/ℓ: measured 0.8 % apart; 2 % allowed (a zone of 2 pixels).
   EXPECT_NEAR(same_ratio, coarse, 0.02);
   // Both below Kendall (the zone's finite stress gives way first) and closer at the larger a/ℓ.
@@ -179,6 +183,10 @@ TEST(KendallPunch, PullOffTendsToKendallAsTheZoneShrinks) {
   // it is 0.994, so the extrapolation is good to about 2 % from the pair tested).
   EXPECT_NEAR(2 * fine - coarse, 1.0, 0.03);
 }
+
+INSTANTIATE_TEST_SUITE_P(Methods, KendallPunch,
+                         ::testing::Values(AdhesiveMethod::fixed_point, AdhesiveMethod::constrained_cg),
+                         [](const auto& info) { return std::string(adhesive_method_name(info.param)); });
 
 }  // namespace
 }  // namespace contactbench

@@ -151,6 +151,19 @@ SettingTable<BemSettings> make_table() {
           .choices = solver_names()},
       [](BemSettings & s) -> auto& { return s.solver.solver; }));
   table.push_back(bind_choice(
+      Row{.key = "adhesive_solver",
+          .kind = SettingKind::choice,
+          .accepted = "`\"fixed_point\"`, `\"constrained_cg\"` (`\"constrained_cg\"`: the Dugdale law only)",
+          .default_value = std::string("fixed_point"),
+          .doc =
+              "with interface.adhesion (unused without it): the fixed point on the attraction around the "
+              "contact solver, or first a constrained CG on the whole Dugdale problem whose state the fixed "
+              "point then checks and settles (docs/solvers.md \"Adhesion\"; results/bench/"
+              "bem_adhesion_solvers.md); the exponential law always takes the fixed point",
+          .flag = {"--adhesive-solver"},
+          .choices = {"fixed_point", "constrained_cg"}},
+      [](BemSettings & s) -> auto& { return s.adhesive_method; }));
+  table.push_back(bind_choice(
       Row{.key = "load_path",
           .kind = SettingKind::choice,
           .accepted = "`\"scaled\"`, `\"extrapolated\"`, `\"cold\"`, `\"solver\"`",

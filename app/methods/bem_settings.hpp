@@ -9,6 +9,7 @@
 #include <string>
 
 #include "contactbench/app/settings.hpp"
+#include "contactbench/bem/adhesive_solver.hpp"
 #include "contactbench/bem/bem_solver.hpp"
 
 namespace contactbench {
@@ -36,6 +37,8 @@ struct BemSettings {
   // boundary = "mirrored": a non-periodic surface solved as its periodic even extension to twice the points
   // a side, judged on the original patch (app/mirrored_boundary.hpp); false: "as_is", the finite patch
   bool mirrored = false;
+  // With interface.adhesion: how the adhesive problem is solved (bem/adhesive_solver.hpp)
+  AdhesiveMethod adhesive_method = AdhesiveMethod::fixed_point;
 };
 
 const SettingTable<BemSettings>& bem_settings();
