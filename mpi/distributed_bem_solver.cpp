@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/bem/solvers/constrained_cg_kernels.hpp"
 #include "contactbench/bem/solvers/load_stepping.hpp"
 #include "contactbench/bem/solvers/polonsky_keer_step.hpp"
@@ -21,7 +22,7 @@ void refuse(bool unsupported, const std::string& what) {
         "distributed Polonsky-Keer: " + what +
         " is not distributed yet (docs/mpi.md); it supports load control, elastic, double precision, "
         "load_path = scaled, cold or solver, no coarse_start (solvers polonsky_keer, preconditioned_cg, "
-        "active_set)");
+        "active_set), a hardness with active_set only");
 }
 
 double max_over_ranks(double value, MPI_Comm comm) {
@@ -49,7 +50,10 @@ DistributedBemSolver::DistributedBemSolver(const Grid& grid, const HeightMap& lo
     : grid_(grid), comm_(comm), options_(std::move(options)), operator_(grid, modulus, comm, threads) {
   if (!(options_.tolerance > 0) || options_.max_iterations < 1)
     throw Error("Polonsky-Keer: tolerance must be > 0 and max_iterations >= 1");
-  refuse(options_.hardness.has_value(), "a hardness");
+  // A hardness caps the pressure in the active-set method (its ActiveSetProblem::hardness); the PK solvers'
+  // capped iteration (their impose_load search of the flat's height) is not distributed.
+  refuse(options_.hardness.has_value() && options_.solver != SolverKind::active_set,
+         "a hardness with solver " + std::string(solver_name(options_.solver)));
   refuse(options_.single_precision, "single precision");
   refuse(options_.coarse_start, "coarse_start");
   // It starts each load from the last scaled, the start every solver may take when left to choose.
@@ -308,9 +312,11 @@ void DistributedBemSolver::solve_active_set(double mean_pressure, double total) 
     for (std::size_t k = 0; k < q.size(); ++k)
       pressure[k] = s * q[k];
   }
-  const ActiveSetOutcome outcome =
-      active_set_->solve({.load_control = true, .mean_pressure = mean_pressure}, options_.tolerance,
-                         options_.max_iterations, warm_, pressure, options_.between_iterations);
+  const ActiveSetOutcome outcome = active_set_->solve(
+      {.load_control = true,
+       .mean_pressure = mean_pressure,
+       .hardness = options_.hardness.value_or(std::numeric_limits<double>::infinity())},
+      options_.tolerance, options_.max_iterations, warm_, pressure, options_.between_iterations);
   q = std::move(pressure);
   s_[cur_] = 1;
   active_set_->displacement_minus_heights(g_);
@@ -325,7 +331,10 @@ void DistributedBemSolver::write() {
   solution_.pressure.resize(slab.count, grid_.nx);
   solution_.gap.resize(slab.count, grid_.nx);
   const std::vector<double>& q = q_[cur_];
-  double residual = 0, contact = 0;
+  // As the serial solver counts them (bem/solvers/pressure_state.cpp): nodes at p >= H are plastic, in
+  // contact, their gap 0 and left out of the residual (the surface flowed to fit the flat there).
+  const double hardness = options_.hardness.value_or(std::numeric_limits<double>::infinity());
+  double residual = 0, counts[2] = {0, 0};  // contact, plastic
   for (std::size_t i = 0; i < q.size(); ++i) {
     const double p = s_[cur_] * q[i];
     solution_.pressure.data()[i] = p;
@@ -334,11 +343,16 @@ void DistributedBemSolver::write() {
       solution_.gap.data()[i] = gap;
     } else {
       solution_.gap.data()[i] = 0;
-      contact += 1;
-      residual = std::max(residual, std::abs(gap));
+      counts[0] += 1;
+      if (p >= hardness)
+        counts[1] += 1;
+      else
+        residual = std::max(residual, std::abs(gap));
     }
   }
-  solution_.contact_points = static_cast<Index>(sum_over_ranks(contact, comm_));
+  sum_over_ranks(counts, comm_);
+  solution_.contact_points = static_cast<Index>(counts[0]);
+  solution_.plastic_points = static_cast<Index>(counts[1]);
   solution_.residual = max_over_ranks(residual, comm_) / (height_range_ > 0 ? height_range_ : 1.0);
   solution_.separation = separation_;
   solution_.iterations = iterations_;
