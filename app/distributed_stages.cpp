@@ -1,6 +1,7 @@
 #include "contactbench/app/distributed_stages.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <exception>
 #include <iostream>
@@ -8,6 +9,7 @@
 
 #include <mpi.h>
 
+#include "contactbench/app/distributions_csv.hpp"
 #include "contactbench/app/load_fields.hpp"
 #include "contactbench/app/run_observer.hpp"
 #include "contactbench/app/stages.hpp"
@@ -89,9 +91,12 @@ struct BemRequest {
   Grid grid;
   Real estar = 0;
   BemSettings settings;  // its solve settings the distributed solver takes (app/methods/bem_settings.hpp)
-  std::optional<Real> hardness;  // the interface's (active_set only; bem_refusal)
+  std::optional<Real> hardness;  // the interface's; active_set only (bem_refusal)
   int threads = 1;
   bool write_fields = false;
+  // The load whose distributions are measured (the scene's `distributions`; -1: none) and their bins.
+  Index measured_load = -1;
+  Index distribution_bins = 0;
   std::vector<Real> mean_pressures;
   std::vector<int> connectivities;
 };
@@ -103,8 +108,10 @@ BemRequest broadcast_request(const BemRequest& request) {
     packed.push_back(request.estar);
     pack_settings(bem_settings(), request.settings, packed);
     packed.insert(packed.end(), {request.hardness ? 1.0 : 0.0, request.hardness.value_or(0.0)});
-    packed.insert(packed.end(), {static_cast<double>(request.threads), request.write_fields ? 1.0 : 0.0,
-                                 static_cast<double>(request.mean_pressures.size())});
+    packed.insert(packed.end(),
+                  {static_cast<double>(request.threads), request.write_fields ? 1.0 : 0.0,
+                   static_cast<double>(request.measured_load), static_cast<double>(request.distribution_bins),
+                   static_cast<double>(request.mean_pressures.size())});
     packed.insert(packed.end(), request.mean_pressures.begin(), request.mean_pressures.end());
     packed.push_back(static_cast<double>(request.connectivities.size()));
     packed.insert(packed.end(), request.connectivities.begin(), request.connectivities.end());
@@ -116,10 +123,12 @@ BemRequest broadcast_request(const BemRequest& request) {
   r.estar = in.number();
   in.settings(r.settings);
   const bool capped = in.flag();
-  const double hardness = in.number();
+  const Real hardness = in.number();
   if (capped) r.hardness = hardness;
   r.threads = static_cast<int>(in.integer());
   r.write_fields = in.flag();
+  r.measured_load = in.integer();
+  r.distribution_bins = in.integer();
   for (Index k = in.integer(); k > 0; --k)
     r.mean_pressures.push_back(in.number());
   for (Index k = in.integer(); k > 0; --k)
@@ -159,11 +168,24 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
           grid, solved.pressure, solved.gap, topology_of(c, grid.periodic), kWorld);
       if (is_root()) result.statistics[c].push_back(statistics);
     }
-    if (request.write_fields) {
+    const bool measured = static_cast<Index>(k) == request.measured_load;
+    if (request.write_fields || measured) {
       const HeightMap pressure = mpi::gather_to_root(solved.pressure, slab, kWorld);
       const HeightMap gap = mpi::gather_to_root(solved.gap, slab, kWorld);
+      // The distributions from the gathered fields, as one process measures them (app/distributions_csv.hpp):
+      // the cluster areas need every cluster labelled whole, which the slabs' statistics do not keep, and
+      // rank 0's memory already counts the gathered fields (bem_memory). The histograms' sums then run in
+      // one process's order, so the counts and means are one process's exactly.
       if (is_root()) try {
-          write_load_fields(fields, k + 1, grid, {.pressure = &pressure, .gap = &gap}, warning);
+          if (measured) {
+            std::map<int, Labeller> labellers;
+            for (const int c : request.connectivities)
+              labellers.emplace(c, Labeller(topology_of(c, grid.periodic), request.threads));
+            result.distributions = measure_distributions(pressure, gap, grid.dx() * grid.dy(),
+                                                         request.distribution_bins, labellers);
+          }
+          if (request.write_fields)
+            write_load_fields(fields, k + 1, grid, {.pressure = &pressure, .gap = &gap}, warning);
         } catch (...) {
           failure = std::current_exception();
         }
@@ -266,14 +288,20 @@ class DistributedRunner final : public StageRunner {
     // What the distributed solver lacks: the interface's effects, and the settings the declaration says
     // (app/methods/bem_settings.cpp) it does not take.
     std::vector<std::string> missing;
-    // A hardness: the capped active_set is distributed, not the other solvers' search of the flat's height.
+    // A hardness: the capped active-set method is distributed, not the PK solvers' search of the flat's
+    // height (their impose_load).
     if (stage.hardness && stage.settings.solver.solver != SolverKind::active_set)
       missing.push_back("a hardness (interface.hardness) with solver " +
                         std::string(solver_name(stage.settings.solver.solver)) + " (active_set takes it)");
     if (stage.adhesion) missing.push_back("adhesion (interface.adhesion)");
-    if (!stage.load_path.empty()) missing.push_back("a load path (loads.path = \"as listed\")");
+    // A load path is a list of loads, each warm-started from the last as one process does; with a hardness
+    // the surface keeps its plastic flow from one load to the next (BemSolver::keep_plastic_deformation),
+    // new heights the slabs' solver has no way to take yet.
+    if (!stage.load_path.empty() && stage.hardness)
+      missing.push_back(
+          "a load path with a hardness (loads.path = \"as listed\" with interface.hardness: "
+          "the plastic flow kept along the path)");
     if (stage.stiffness) missing.push_back("the contact stiffness (compare = [\"stiffness\"])");
-    if (stage.distributions) missing.push_back("the distributions (distributions = { load, bins })");
     if (stage.approach_retract)
       missing.push_back("the approach-retract path (approach_retract = { from, to, steps })");
     for (const std::string& setting :
@@ -293,12 +321,21 @@ class DistributedRunner final : public StageRunner {
     if (const std::string refusal = bem_refusal(stage); !refusal.empty()) throw Error(refusal);
     const RunObserver quiet;
     const RunObserver& observer = context.observer ? *context.observer : quiet;
+    // The solve at the scene's reference load of the distributions: the first at it (as
+    // app/serial_runner.cpp).
+    Index measured_load = -1;
+    if (stage.distributions)
+      for (std::size_t k = 0; k < mean_pressures.size() && measured_load < 0; ++k)
+        if (std::abs(mean_pressures[k] - stage.distributions->load * estar) <= 1e-12 * mean_pressures[k])
+          measured_load = static_cast<Index>(k);
     BemRequest request{.grid = solved.grid(),
                        .estar = estar,
                        .settings = stage.settings,
                        .hardness = stage.hardness,
                        .threads = context.threads,
                        .write_fields = !fields.empty(),
+                       .measured_load = measured_load,
+                       .distribution_bins = stage.distributions ? stage.distributions->bins : 0,
                        .mean_pressures = mean_pressures,
                        .connectivities = {connectivities.begin(), connectivities.end()}};
     // A progress line per load as one process says it (app/serial_runner.cpp), from rank 0.

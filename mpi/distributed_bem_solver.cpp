@@ -20,9 +20,9 @@ void refuse(bool unsupported, const std::string& what) {
   if (unsupported)
     throw Error(
         "distributed Polonsky-Keer: " + what +
-        " is not distributed yet (docs/mpi.md); it supports load control, double precision, "
+        " is not distributed yet (docs/mpi.md); it supports load control, elastic, double precision, "
         "load_path = scaled, cold or solver, no coarse_start (solvers polonsky_keer, preconditioned_cg, "
-        "active_set), and a hardness with solver active_set");
+        "active_set), a hardness with active_set only");
 }
 
 double max_over_ranks(double value, MPI_Comm comm) {
@@ -50,10 +50,10 @@ DistributedBemSolver::DistributedBemSolver(const Grid& grid, const HeightMap& lo
     : grid_(grid), comm_(comm), options_(std::move(options)), operator_(grid, modulus, comm, threads) {
   if (!(options_.tolerance > 0) || options_.max_iterations < 1)
     throw Error("Polonsky-Keer: tolerance must be > 0 and max_iterations >= 1");
+  // A hardness caps the pressure in the active-set method (its ActiveSetProblem::hardness); the PK solvers'
+  // capped iteration (their impose_load search of the flat's height) is not distributed.
   refuse(options_.hardness.has_value() && options_.solver != SolverKind::active_set,
          "a hardness with solver " + std::string(solver_name(options_.solver)));
-  if (options_.hardness && !(*options_.hardness > 0))
-    throw Error("distributed active_set: the hardness must be > 0 Pa");
   refuse(options_.single_precision, "single precision");
   refuse(options_.coarse_start, "coarse_start");
   // It starts each load from the last scaled, the start every solver may take when left to choose.
@@ -331,6 +331,8 @@ void DistributedBemSolver::write() {
   solution_.pressure.resize(slab.count, grid_.nx);
   solution_.gap.resize(slab.count, grid_.nx);
   const std::vector<double>& q = q_[cur_];
+  // As the serial solver counts them (bem/solvers/pressure_state.cpp): nodes at p >= H are plastic, in
+  // contact, their gap 0 and left out of the residual (the surface flowed to fit the flat there).
   const double hardness = options_.hardness.value_or(std::numeric_limits<double>::infinity());
   double residual = 0, counts[2] = {0, 0};  // contact, plastic
   for (std::size_t i = 0; i < q.size(); ++i) {
@@ -340,8 +342,6 @@ void DistributedBemSolver::write() {
     if (!(p > 0)) {
       solution_.gap.data()[i] = gap;
     } else {
-      // Zero on the contact set, on plastic nodes too; their gap is not a residual (as the serial write,
-      // bem/solvers/pressure_state.cpp).
       solution_.gap.data()[i] = 0;
       counts[0] += 1;
       if (p >= hardness)

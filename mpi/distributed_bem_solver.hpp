@@ -10,11 +10,9 @@
 // (mpi/distributed_active_set.hpp, the serial method step for step with its nested coarse start; its
 // warm start from the previous load's pressure scaled to the new load, as the serial solver's).
 //
-// Distributed so far: load control in double precision; elastic with the three solvers, capped at a hardness
-// with active_set (its capped iteration, as the serial active_set solves a capped load: one solve, no search
-// of the flat's height). Options that need more (a hardness with the other solvers, single precision,
-// separation control, coarse or extrapolated starts) are refused with an error naming them, never run
-// approximately.
+// Distributed so far: load control, double precision, elastic or (active_set only) capped at a hardness.
+// Options that need more (a hardness with the PK solvers, single precision, separation control, coarse or
+// extrapolated starts) are refused with an error naming them, never run approximately.
 #pragma once
 
 #include <memory>
@@ -39,8 +37,7 @@ struct DistributedContactSolution {
   Real mean_pressure = 0;    // P/A0 [Pa], as prescribed
   Real separation = 0;       // the flat's height above the mean plane [m]
   Index contact_points = 0;  // over all ranks
-  Index plastic_points =
-      0;  // points at p = H, over all ranks (with a hardness; counted in contact_points too)
+  Index plastic_points = 0;  // at p = H (with a hardness; 0 without), over all ranks, in contact_points too
   Index iterations = 0;
   Real change = 0;    // the last relative change of the pressure
   Real residual = 0;  // max |gap| on the contact set / (max h - min h), over all ranks
@@ -50,8 +47,8 @@ struct DistributedContactSolution {
 class DistributedBemSolver {
  public:
   // Collective. local_heights: this rank's slab (slab_of(grid, comm)) of the surface; modulus E* [Pa].
-  // options: single_precision, coarse_start and an extrapolated load path unset, a hardness only with
-  // active_set (see above).
+  // options: single_precision, coarse_start and an extrapolated load path unset, a hardness with active_set
+  // only (see above).
   // `threads`: FFTW's threads a rank, for the transforms (the element-wise passes run on one).
   DistributedBemSolver(const Grid& grid, const HeightMap& local_heights, Real modulus, MPI_Comm comm,
                        BemSolverOptions options, int threads = 1);
