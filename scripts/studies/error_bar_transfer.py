@@ -5,12 +5,11 @@ Fresh surfaces (seeds 201 ..., never used by scripts/studies/error_bar.py), a fe
 `--base` grid (the spectrum cut at its Nyquist, so every finer grid is the same surface, Fourier-refined), solved
 at the study's six loads (two per load band) on base ... `--truth` points a side. The estimates come from the
 grids base, 2 base, 4 base; the truth is error_bar.py's truth_of from truth/4, truth/2, truth (its own uncertainty
-u quoted beside: the spread of three independent truths). The scenes solve at 256-1024; on this loaded machine
-the default is base 128 (estimate from 128/256/512) against a truth from 256/512/1024, one step finer than the
-calibration, and the wider question (256/512/1024 against 2048/4096) is left for a quiet machine (--base 256
---truth 4096).
+u quoted beside: the spread of three independent truths). The scenes solve at 256-1024: --base 256 --truth 2048
+is their regime (estimate from 256/512/1024, truth from 512/1024/2048); --base 128 --truth 1024 is one step
+finer than the calibration (estimate from 128/256/512, truth from 256/512/1024).
 
-Writes results/studies/error_bar/transfer.md and transfer.csv (the raw solves).
+Writes results/studies/error_bar/transfer_<base>_<truth>.md and .csv (the raw solves).
 Usage: OMP_WAIT_POLICY=PASSIVE PYTHONPATH=build/release/python /usr/bin/python3 \
        scripts/studies/error_bar_transfer.py [--threads 2] [--base 128] [--truth 1024] [--seeds 1] [--reuse]
 """
@@ -40,7 +39,8 @@ def main():
     args = parser.parse_args()
     os.chdir(ROOT)
     sys.path.insert(0, os.path.join(ROOT, "build", "release", "python"))
-    raw_path = os.path.join(OUT, "transfer.csv")
+    name = "transfer_{}_{}".format(args.base, args.truth)  # one pair of files per pair of grids
+    raw_path = os.path.join(OUT, name + ".csv")
     cases = {}
     if args.reuse and os.path.exists(raw_path):
         for line in open(raw_path):
@@ -95,7 +95,7 @@ def main():
     md += ["", "Made by `OMP_WAIT_POLICY=PASSIVE PYTHONPATH=build/release/python /usr/bin/python3 "
            "scripts/studies/error_bar_transfer.py --threads {} --base {} --truth {} --seeds {}` ({}).".format(
                args.threads, base, args.truth, args.seeds, stamp()), ""]
-    write_atomically(os.path.join(OUT, "transfer.md"), "\n".join(md))
+    write_atomically(os.path.join(OUT, name + ".md"), "\n".join(md))
     print("\n".join(md))
 
 
