@@ -72,22 +72,22 @@ def main():
             true, u, _ = truth_of(grids, k, args.truth)
             f1, f2, f3 = (grids[n][k][0] for n in (base, 2 * base, 4 * base))
             band = next(b for b, lo, hi in BANDS if lo <= load <= hi)
-            for name, (value, bar, _) in (("calibrated3", calibrated3(f1, f2, f3, (4 * base) ** 2, load)),
+            for estimate, (value, bar, _) in (("calibrated3", calibrated3(f1, f2, f3, (4 * base) ** 2, load)),
                                           ("gci3", gci3(f1, f2, f3))):
                 err = abs(value - true)
-                records.append((band, name, err <= bar, err - u <= bar, bar / err if err > 0 else math.inf))
+                records.append((band, estimate, err <= bar, err - u <= bar, bar / err if err > 0 else math.inf))
                 lines.append("| {} | {} | {:g} | {} | {:.5g} | {:.5g} | {:.2g} | {:.2g} | {:.2g} | {} |".format(
-                    f, seed, load, name, value, true, u, err, bar, "yes" if err <= bar else "NO"))
+                    f, seed, load, estimate, value, true, u, err, bar, "yes" if err <= bar else "NO"))
     md = ["# Transfer of the error bar to finer grids (estimate from {}/{}/{}, truth from {}/{}/{})".format(
               base, 2 * base, 4 * base, args.truth // 4, args.truth // 2, args.truth), "",
           "| band | estimate | cases | coverage | judgeable coverage (within u) | median bar / true error |",
           "|---|---|---:|---:|---:|---:|"]
     for b, _, _ in BANDS:
-        for name in ("calibrated3", "gci3"):
-            sel = [r for r in records if r[0] == b and r[1] == name]
+        for estimate in ("calibrated3", "gci3"):
+            sel = [r for r in records if r[0] == b and r[1] == estimate]
             if sel:
                 md.append("| {} | {} | {} | {:.0f} % | {:.0f} % | {:.2f} |".format(
-                    b, name, len(sel), 100 * sum(r[2] for r in sel) / len(sel),
+                    b, estimate, len(sel), 100 * sum(r[2] for r in sel) / len(sel),
                     100 * sum(r[3] for r in sel) / len(sel), median([r[4] for r in sel])))
     md += ["", "Every case (u = the truth's own uncertainty):", "",
            "| family | seed | P/(E* A0) | estimate | value | truth | u | true error | bar | covered |",
