@@ -92,6 +92,48 @@ def terms_log(c):
     return [abs(c["value"]) * max(abs(l3 - l2), abs(l2 - l1) / 2, abs(2 * (l3 - l2) - (l2 - l1)))]
 
 
+# --- features that could explain the spread of bar / true error within a load band (issue 40, round three): each
+#     splits a band's cases into three groups at fixed edges, and the scale factor is fitted per (band, group) ---
+def observed_order(c):
+    f1, f2, f3 = c["f"]
+    d21, d32 = f2 - f1, f3 - f2
+    return math.log(d21 / d32) / math.log(2) if d21 * d32 > 0 else math.nan
+
+
+def group_by_order(c):
+    """The observed order of the three counts: oscillating/flat, below 0.8, 0.8-1.25, above 1.25."""
+    p = observed_order(c)
+    return "none" if p != p else ("<0.8" if p < 0.8 else ("0.8-1.25" if p <= 1.25 else ">1.25"))
+
+
+def group_by_step_ratio(c):
+    """The ratio of successive differences d32 / d21 (0.5 at order 1): below 0.35, 0.35-0.65, above, or of the
+    other sign."""
+    f1, f2, f3 = c["f"]
+    d21, d32 = f2 - f1, f3 - f2
+    if d21 == 0:
+        return "flat"
+    r = d32 / d21
+    return "<0" if r < 0 else ("<0.35" if r < 0.35 else ("0.35-0.65" if r <= 0.65 else ">0.65"))
+
+
+def group_by_nodes(c):
+    """The contact-node count N3 = f3 (4n)^2 of the finest grid (a proxy for the contact-spot count)."""
+    n3 = c["f"][2] * (4 * BASE) ** 2
+    return "<300" if n3 < 300 else ("300-3000" if n3 <= 3000 else ">3000")
+
+
+def group_by_correction(c):
+    """The perimeter correction's relative size |f3 - c3| / f3 on the finest grid (small spots: large)."""
+    rel = abs(c["f"][2] - c["c"][2]) / c["f"][2] if c["f"][2] > 0 else 0.0
+    return "<0.15" if rel < 0.15 else ("0.15-0.3" if rel <= 0.3 else ">0.3")
+
+
+def group_by_family(c):
+    """The surface family itself (an oracle a scene does not have: what the best grouping could at most win)."""
+    return c["family"]
+
+
 def fixed_spread(c):
     return order_spread(*c["f"])
 
@@ -109,12 +151,28 @@ CANDIDATES = [
     ("lattice f3/sqrt(N3) alone", lambda c: terms_scale_and_lattice(c)[1:], True, False),
     ("correction |f3 - c3| alone", lambda c: [abs(c["f"][2] - c["c"][2])], False, False),
     ("|A_ext - c3| alone", lambda c: [abs(c["value"] - c["c"][2])], False, False),
+    # round three: the scale with its factor per load band and per group of a per-case feature
+    ("scale per band x observed order", terms_scale, True, group_by_order),
+    ("scale per band x step ratio d32/d21", terms_scale, True, group_by_step_ratio),
+    ("scale per band x finest contact nodes N3", terms_scale, True, group_by_nodes),
+    ("scale per band x perimeter correction |f3-c3|/f3", terms_scale, True, group_by_correction),
+    ("scale per band x family (oracle)", terms_scale, True, group_by_family),
 ]
 RULES = [("covers all", 1.0), ("covers 97.5 %", 0.975)]  # the share of the training cases the factors cover
 
 
 def band_of(load):
     return next(b for b, lo, hi in BANDS if lo <= load <= hi)
+
+
+def group_of(c, per_band):
+    """The group whose factors a case uses: one for all (per_band False), the load band (True), or the band and a
+    feature's group (per_band a function of the case)."""
+    if per_band is False:
+        return "all"
+    if per_band is True:
+        return band_of(c["load"])
+    return (band_of(c["load"]), per_band(c))
 
 
 def bar_of(c, terms, floor, factors):
@@ -158,13 +216,12 @@ def evaluate(cases, folds, terms, floor, per_band, share):
     for train_seeds, test_seeds in folds:
         train = [c for c in cases if c["seed"] in train_seeds]
         test = [c for c in cases if c["seed"] in test_seeds]
-        if per_band:
-            for b, _, _ in BANDS:
-                factors = fit([c for c in train if band_of(c["load"]) == b], terms, floor, share)
-                out += [(c, bar_of(c, terms, floor, factors)) for c in test if band_of(c["load"]) == b]
-        else:
-            factors = fit(train, terms, floor, share)
-            out += [(c, bar_of(c, terms, floor, factors)) for c in test]
+        for g in sorted({group_of(c, per_band) for c in test}, key=str):
+            group_train = [c for c in train if group_of(c, per_band) == g]
+            if not group_train and not isinstance(g, str):  # a group no training seed has: its band's cases
+                group_train = [c for c in train if band_of(c["load"]) == g[0]]
+            factors = fit(group_train, terms, floor, share)
+            out += [(c, bar_of(c, terms, floor, factors)) for c in test if group_of(c, per_band) == g]
     return out
 
 
@@ -217,10 +274,8 @@ def main():
     if eligible:
         _, _, name, rule, share, _ = eligible[0]
         terms, floor, per_band = next((t, f, p) for n, t, f, p in CANDIDATES if n == name)
-        if per_band:
-            fitted = {b: fit([c for c in cases if band_of(c["load"]) == b], terms, floor, share) for b, _, _ in BANDS}
-        else:
-            fitted = fit(cases, terms, floor, share)
+        fitted = {str(g): fit([c for c in cases if group_of(c, per_band) == g], terms, floor, share)
+                  for g in sorted({group_of(c, per_band) for c in cases}, key=str)}
         md += ["Winner: {} ({}); its factors fitted on all {} cases: {}.".format(name, rule, len(cases), fitted), ""]
     md += ["Made by `PYTHONPATH=build/release/python /usr/bin/python3 scripts/studies/error_bar_candidates.py` "
            "({}).".format(stamp()), ""]
