@@ -1,7 +1,6 @@
 #include "contactbench/app/distributed_stages.hpp"
 
 #include <chrono>
-#include <cmath>
 #include <cstdint>
 #include <exception>
 #include <iostream>
@@ -321,13 +320,8 @@ class DistributedRunner final : public StageRunner {
     if (const std::string refusal = bem_refusal(stage); !refusal.empty()) throw Error(refusal);
     const RunObserver quiet;
     const RunObserver& observer = context.observer ? *context.observer : quiet;
-    // The solve at the scene's reference load of the distributions: the first at it (as
-    // app/serial_runner.cpp).
-    Index measured_load = -1;
-    if (stage.distributions)
-      for (std::size_t k = 0; k < mean_pressures.size() && measured_load < 0; ++k)
-        if (std::abs(mean_pressures[k] - stage.distributions->load * estar) <= 1e-12 * mean_pressures[k])
-          measured_load = static_cast<Index>(k);
+    const std::optional<std::size_t> measured = stage.distributions_solve(mean_pressures, estar);
+    const Index measured_load = measured ? static_cast<Index>(*measured) : -1;
     BemRequest request{.grid = solved.grid(),
                        .estar = estar,
                        .settings = stage.settings,

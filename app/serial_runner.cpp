@@ -67,12 +67,7 @@ class SerialRunner final : public StageRunner {
       stiffness_solver.emplace(solved.grid(), estar, stage.hardness, context.threads,
                                StiffnessOptions{.tolerance = kStageStiffnessTolerance});
     SolvedLoads done;
-    // The solve at the scene's reference load of the distributions: the first at it (along a path too).
-    std::optional<std::size_t> measured_solve;
-    if (stage.distributions)
-      for (std::size_t k = 0; k < mean_pressures.size() && !measured_solve; ++k)
-        if (std::abs(mean_pressures[k] - stage.distributions->load * estar) <= 1e-12 * mean_pressures[k])
-          measured_solve = k;
+    const std::optional<std::size_t> measured_solve = stage.distributions_solve(mean_pressures, estar);
     for (std::size_t k = 0; k < mean_pressures.size(); ++k) {
       ContactSolution solution;
       HeightMap attraction;  // a = p - t of an adhesive state, for its fields

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <sstream>
 
@@ -54,6 +55,14 @@ bool SweepStage::same_as(const SweepStage& other) const {
          topology.wrap_x == other.topology.wrap_x && topology.wrap_y == other.topology.wrap_y &&
          levels.kind == other.levels.kind &&
          (levels.kind == SweepLevels::Kind::exact || levels.count == other.levels.count);
+}
+
+std::optional<std::size_t> BemStage::distributions_solve(const std::vector<Real>& mean_pressures,
+                                                         Real estar) const {
+  if (!distributions) return std::nullopt;
+  for (std::size_t k = 0; k < mean_pressures.size(); ++k)
+    if (std::abs(mean_pressures[k] - distributions->load * estar) <= 1e-12 * mean_pressures[k]) return k;
+  return std::nullopt;
 }
 
 std::string BemStage::name() const {

@@ -62,6 +62,9 @@ struct BemStage {
   // The scene's `approach_retract` path, run after the loads by an adhesive stage; absent: none.
   std::optional<AdhesivePathOptions> approach_retract;
   std::string name() const;  // e.g. "bem (active_set, periodic, tolerance 1e-08)"
+  // Which of the mean pressures [Pa] the distributions are measured at: the first at their load (times E*),
+  // along a path too; none without distributions or when no solve is at that load. Both runners use it.
+  std::optional<std::size_t> distributions_solve(const std::vector<Real>& mean_pressures, Real estar) const;
   // Methods that ask for equal solves share one.
   bool operator==(const BemStage& other) const;
 };
