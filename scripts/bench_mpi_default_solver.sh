@@ -5,8 +5,9 @@
 # active_set of the same problem in the same run (bench/bench_mpi.cpp --tolerance), 1 rank x 1 thread against
 # 1 thread and 2 ranks x 1 thread against 2 threads. Records results/bench/mpi_default_solver.md. Needs the
 # MPI build.
-# Usage: [SOLVERS="active_set preconditioned_cg"] scripts/bench_mpi_default_solver.sh [sizes...]
-#        (default sizes: 1024 2048)
+# Usage: [SOLVERS="active_set preconditioned_cg"] [RANKS="1 2"] scripts/bench_mpi_default_solver.sh [sizes...]
+#        (default sizes: 1024 2048; RANKS: the rank counts timed, default both; OUT: the record, default
+#        results/bench/mpi_default_solver.md)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake --preset release >/dev/null
@@ -15,14 +16,14 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_WAIT_POLICY
 commit=$(git rev-parse --short HEAD)
 git diff --quiet HEAD -- core bem mpi bench || commit="$commit+uncommitted"
 machine="$(lscpu | sed -n 's/^Model name: *//p' | head -n 1) with $(nproc) cores"
-out=results/bench/mpi_default_solver.md
+out=${OUT:-results/bench/mpi_default_solver.md}
 mkdir -p results/bench
 load_before=$(cut -d ' ' -f 1-3 /proc/loadavg)
 rows=$(mktemp)
 solvers=${SOLVERS:-active_set preconditioned_cg}
 for n in ${@:-1024 2048}; do
   for solver in $solvers; do
-    for ranks in 1 2; do
+    for ranks in ${RANKS:-1 2}; do
       # --bind-to none: OpenMPI binds each of 1 or 2 ranks to one core, which would put the reference's 2
       # threads (on rank 0) on one core.
       OMP_NUM_THREADS=$ranks mpiexec --oversubscribe --bind-to none -n "$ranks" build/release/bench/bench_mpi \
@@ -34,7 +35,7 @@ done
 {
   echo "# One load under mpiexec against one process (active_set)"
   echo
-  echo "Made by \`SOLVERS=\"$solvers\" scripts/bench_mpi_default_solver.sh ${*:-}\` at commit $commit on $(date -u +%Y-%m-%dT%H:%MZ),"
+  echo "Made by \`${OUT:+OUT=$out }SOLVERS=\"$solvers\" RANKS=\"${RANKS:-1 2}\" scripts/bench_mpi_default_solver.sh ${*:-}\` at commit $commit on $(date -u +%Y-%m-%dT%H:%MZ),"
   echo "$machine, shared with other jobs: load average $load_before before and"
   echo "$(cut -d ' ' -f 1-3 /proc/loadavg) after (1, 5, 15 minutes), so the times are noisy; medians of 3 cold solves."
   echo "Surface A's spectrum (docs/theory.md section 2) on n x n points, periodic, ~4 % contact, solved to the"
