@@ -151,7 +151,8 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
       modulus_(modulus),
       threads_(threads),
       operator_(grid, modulus, comm, threads),
-      filter_(make_distributed_unit_preconditioner(grid, comm, threads)),
+      // The filter runs between the operator's applications, never during one: one transform for both.
+      filter_(make_distributed_unit_preconditioner(grid, comm, threads, &operator_.convolution())),
       n_(static_cast<std::size_t>(slab_.points())),
       points_(static_cast<double>(grid.points())),
       h_(std::move(local_heights)) {
@@ -159,7 +160,7 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
                     "distributed active_set: the local heights have " + std::to_string(h_.size()) +
                         " values, this rank's slab " + std::to_string(n_),
                     comm);
-  for (auto* field : {&u_, &r_, &z_, &t_, &window_inputs_})
+  for (auto* field : {&u_, &r_, &z_, &t_})
     field->assign(n_, 0.0);
   extension_weight_.assign(n_, 0.0f);
   window_count_.assign(n_, 0);
@@ -172,7 +173,6 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
         RowExchange::halo(layout_, rank_of(comm), extension_radius(), grid.periodic, comm));
     window_ = WindowRows(grid.nx, grid.ny, extension_radius(), grid.periodic);
   }
-  make_response();
   const Index nx = grid.nx, ny = grid.ny;
   if (nx % 2 == 0 && ny % 2 == 0 && nx / 2 >= kCoarsest && ny / 2 >= kCoarsest)
     coarse_ = std::make_unique<Coarse>(grid, h_, modulus, comm, threads, gather_bound);
@@ -181,10 +181,10 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
 DistributedActiveSet::~DistributedActiveSet() = default;
 
 std::size_t DistributedActiveSet::bytes() const {
-  // h, u, r, z, t, the window inputs; the weights (float), the window counts (16 bits) and the two sets (8
-  // bits each): 56 B a point of the slab; the whole response: 8 B a point of the grid.
-  const std::size_t doubles = 6 * n_ + response_.size();
-  return sizeof(double) * doubles + sizeof(float) * n_ + 4 * n_ + operator_.bytes() + filter_->bytes() +
+  // h, u, r, z, t; the weights (float), the window counts (16 bits) and the two sets (8 bits each): 48 B a
+  // point of the slab; the operator's transform (which the filter shares) and both multipliers.
+  const std::size_t doubles = 5 * n_;
+  return sizeof(double) * doubles + sizeof(float) * n_ + 4 * n_ + operator_.bytes() + filter_->own_bytes() +
          (coarse_ ? coarse_->bytes() : 0);
 }
 
@@ -274,25 +274,6 @@ void DistributedActiveSet::measure_heights() {
   gap_round_off_ = 8 * std::numeric_limits<double>::epsilon() * std::max(std::abs(low), std::abs(highest_));
   height_range_ = highest_ - low;
   if (!(height_range_ > 0)) height_range_ = 1;
-}
-
-// G e_0, the response to a unit pressure at node 0, on the whole grid on every rank: the rows a column
-// update touches can be any (periodic), and 8 B a point of the grid is below what a slab holds a point (56 B
-// of fields, bytes(), and the transforms) only while the ranks are few (docs/mpi.md).
-void DistributedActiveSet::make_response() {
-  std::vector<double> unit(n_, 0.0), local(n_, 0.0);
-  if (slab_.start == 0 && slab_.count > 0) unit[0] = 1;
-  operator_.apply(unit.data(), local.data());
-  std::vector<int> counts, offsets;
-  for (const Slab& s : layout_) {
-    if (s.points() > std::numeric_limits<int>::max() || s.start * s.nx > std::numeric_limits<int>::max())
-      throw Error("distributed active_set: a grid of more than 2^31 points keeps no whole response");
-    counts.push_back(static_cast<int>(s.points()));
-    offsets.push_back(static_cast<int>(s.start * s.nx));
-  }
-  response_.assign(static_cast<std::size_t>(grid_.points()), 0.0);
-  MPI_Allgatherv(local.data(), static_cast<int>(n_), MPI_DOUBLE, response_.data(), counts.data(),
-                 offsets.data(), MPI_DOUBLE, comm_);
 }
 
 ActiveSetOutcome DistributedActiveSet::solve(const ActiveSetProblem& problem, double tolerance,
@@ -456,46 +437,29 @@ void DistributedActiveSet::keep_to_sets(std::vector<double>& p, std::size_t k, S
   part.g += plastic_[k] ? cap_ : 0.0;
 }
 
-// u += G dp for the `changed` changes of p the last keep_to_sets pass made (every rank's, gathered in rank
-// order, the serial method's order of nodes), by the whole response kept on each rank.
+// u += G dp for the `changed` changes of p the last keep_to_sets pass made (at most kFewChanges over all
+// ranks, each rank's own in changes_, in node order): the operator applied to the changes alone. The serial
+// method adds dp times G's column of each node from its response to a unit load at node 0 (G e_0, a field of
+// the whole grid); on slabs that field would be 8 B a point of the grid on every rank, whatever the number of
+// ranks (docs/mpi.md "Memory a point"), so the transform makes the same sum (to round-off) from no stored
+// field, at the cost of one transform pair when few pressures changed.
 void DistributedActiveSet::add_columns(Index changed) {
-  const int ranks = size_of(comm_);
-  const int mine = static_cast<int>(2 * changes_.size());
-  std::vector<int> counts(static_cast<std::size_t>(ranks)), offsets(static_cast<std::size_t>(ranks));
-  MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
-  int all = 0;
-  for (int r = 0; r < ranks; ++r) {
-    offsets[static_cast<std::size_t>(r)] = all;
-    all += counts[static_cast<std::size_t>(r)];
-  }
-  if (all != 2 * changed) throw Error("distributed active_set: the column update lost changes");
-  std::vector<Change> every(static_cast<std::size_t>(changed));
-  MPI_Allgatherv(changes_.data(), mine, MPI_DOUBLE, every.data(), counts.data(), offsets.data(), MPI_DOUBLE,
-                 comm_);
-  const Index nx = grid_.nx, ny = grid_.ny;
-  const bool periodic = grid_.periodic;
-  for (Index r = 0; r < slab_.count; ++r) {
-    const Index y = slab_.start + r;
-    double* const row = u_.data() + r * nx;
-    for (const Change& change : every) {
-      const Index node = static_cast<Index>(change.node);
-      const Index ky = node / nx, kx = node % nx;
-      const Index dy = periodic ? (y - ky + ny) % ny : std::abs(y - ky);
-      const double* const column = response_.data() + dy * nx;
-      const double dp = change.dp;
-      if (periodic) {
-        for (Index x = kx; x < nx; ++x)
-          row[x] += dp * column[x - kx];
-        for (Index x = 0; x < kx; ++x)
-          row[x] += dp * column[x - kx + nx];
-      } else {
-        for (Index x = kx; x < nx; ++x)
-          row[x] += dp * column[x - kx];
-        for (Index x = 0; x < kx; ++x)
-          row[x] += dp * column[kx - x];
-      }
-    }
-  }
+  if (static_cast<Index>(changes_.size()) > changed)
+    throw Error("distributed active_set: the column update has more changes than the pass counted");
+  const Index nx = grid_.nx, first = slab_.start * nx;
+  std::size_t next = 0;
+  operator_.apply(
+      [&](Index r, double* row) {
+        std::fill_n(row, nx, 0.0);
+        const Index end = first + (r + 1) * nx;
+        for (; next < changes_.size() && static_cast<Index>(changes_[next].node) < end; ++next)
+          row[static_cast<Index>(changes_[next].node) - first - r * nx] = changes_[next].dp;
+      },
+      [&](Index r, const double* row) {
+        double* const u = u_.data() + r * nx;
+        for (Index x = 0; x < nx; ++x)
+          u[x] += row[x];
+      });
   displacement_fresh_ = false;
 }
 
@@ -567,19 +531,15 @@ void DistributedActiveSet::window_sums(Value value, Emit emit) {
     emit(r, window_sums_of(r, value));
 }
 
-// Only the rows other ranks read (those within the window's radius of the slab's edges) are written to
-// window_inputs_ and sent; the slab's own rows are made from `value` as the window reaches them.
+// Only the rows other ranks read (those within the window's radius of the slab's edges) are made, straight
+// into the exchange's send buffer; the slab's own rows are made from `value` as the window reaches them.
 template <class Value>
 void DistributedActiveSet::start_window_sums(Value value) {
-  const Index nx = grid_.nx, radius = extension_radius();
-  for (Index r = 0; r < slab_.count; ++r) {
-    if (r >= radius && r < slab_.count - radius) r = slab_.count - radius;
-    for (Index x = 0; x < nx; ++x) {
-      const std::size_t k = static_cast<std::size_t>(r * nx + x);
-      window_inputs_[k] = value(k);
-    }
-  }
-  halo_->exchange(window_inputs_.data());
+  const Index nx = grid_.nx;
+  halo_->exchange([&](Index r, double* out) {
+    for (Index x = 0; x < nx; ++x)
+      out[x] = value(static_cast<std::size_t>(r * nx + x));
+  });
   window_.restart();
 }
 

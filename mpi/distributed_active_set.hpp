@@ -4,8 +4,8 @@
 // the CG's vectors, the operator and the filter on FFTW-MPI (mpi/distributed_half_space.hpp), every global
 // sum combined in rank order from an MPI_Allgather (so every rank takes the same decisions), the extended
 // filter's window sums over a halo of kExtensionRadius rows (mpi/row_exchange.hpp, from further ranks when
-// a slab is thinner), the few changed nodes' columns of G gathered to every rank with the whole response
-// G e_0 kept on each rank, and the cold start's k-th largest score selected over the ranks
+// a slab is thinner), the few changed nodes' columns of G added by the operator applied to those changes
+// alone (no whole response kept), and the cold start's k-th largest score selected over the ranks
 // (mpi/distributed_selection.hpp). The nested coarse start: levels above kGatherBound points restricted on
 // slabs (mpi/distributed_restriction.hpp) and solved by this class, the first level at or below it gathered
 // to every rank and solved by the serial ActiveSetSolver itself (identical on every rank), the pressure
@@ -56,10 +56,13 @@ class DistributedActiveSet {
                          std::vector<double>& pressure, const std::function<void()>& between = {});
   // G p - h of the last solution on this rank's slab.
   void displacement_minus_heights(std::vector<double>& out) const;
+  double displacement_minus_height(std::size_t k) const { return u_[k] - h_[k]; }
+  // This rank's slab of the centred heights.
+  const std::vector<double>& heights() const { return h_; }
   const Slab& slab() const { return slab_; }
   // The fraction of all nodes in contact in the last solution.
   double contact_fraction() const { return contact_fraction_; }
-  // Bytes this rank holds (fields, the whole response, operator, filter, coarse levels).
+  // Bytes this rank holds (fields, operator, filter, coarse levels).
   std::size_t bytes() const;
 
  private:
@@ -95,7 +98,6 @@ class DistributedActiveSet {
   }
 
   void measure_heights();
-  void make_response();
   void finish(std::vector<double>& p, double total, double tolerance, double d, const Sums& kept, Index steps,
               ActiveSetOutcome& outcome);
   Sums update_sets(std::vector<double>& p, double d, double limit, double entry, bool capping);
@@ -139,15 +141,13 @@ class DistributedActiveSet {
   std::size_t n_;  // this rank's points
   double points_;  // all ranks' points
   std::vector<double> h_, u_, r_, z_, t_;
-  std::vector<double> window_inputs_;
   WindowRows window_;  // the window sums' rows, made once (start_window_sums restarts them)
   mutable std::vector<double> gathered_;  // gathered()'s buffer
   std::vector<float> extension_weight_;
   std::vector<std::uint16_t> window_count_;
   std::vector<std::uint8_t> in_, plastic_;
   std::unique_ptr<RowExchange> halo_;
-  std::vector<double> response_;  // G e_0 on the whole grid, on every rank (add_columns)
-  std::vector<Change> changes_;   // this rank's first kFewChanges changes of the last keep_to_sets pass
+  std::vector<Change> changes_;  // this rank's first kFewChanges changes of the last keep_to_sets pass
   bool load_control_ = true;
   double separation_ = 0;
   double cap_ = 0;
