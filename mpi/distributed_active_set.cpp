@@ -46,13 +46,16 @@ class DistributedActiveSet::Coarse {
       : grid_(fine) {
     grid_.nx = fine.nx / 2;
     grid_.ny = fine.ny / 2;
-    const Slab fine_slab = slab_of(fine, comm);
-    HeightMap local(fine_slab.count, fine.nx);
-    std::copy(fine_heights.begin(), fine_heights.end(), local.data());
-    const HeightMap restricted = restrict_to_coarse_slab(fine, local, comm);
     layout_ = all_slabs(grid_.nx, grid_.ny, comm);
     slab_ = layout_[static_cast<std::size_t>(rank_of(comm))];
-    std::vector<double> heights(restricted.data(), restricted.data() + restricted.size());
+    std::vector<double> heights;
+    {  // the fine slab's copy freed before the level is made
+      const Slab fine_slab = slab_of(fine, comm);
+      HeightMap local(fine_slab.count, fine.nx);
+      std::copy(fine_heights.begin(), fine_heights.end(), local.data());
+      const HeightMap restricted = restrict_to_coarse_slab(fine, local, comm);
+      heights.assign(restricted.data(), restricted.data() + restricted.size());
+    }
     if (grid_.points() > gather_bound) {
       distributed_ = std::make_unique<DistributedActiveSet>(grid_, std::move(heights), modulus, comm, threads,
                                                             gather_bound);
@@ -117,8 +120,9 @@ class DistributedActiveSet::Coarse {
 
   std::size_t bytes() const {
     // Gathered: the serial level's ~56 B a point (ActiveSet's fields) and its own coarser levels (a third
-    // more), about 12 doubles a point of this level, on every rank.
-    return distributed_ ? distributed_->bytes()
+    // more), about 12 doubles a point of this level, on every rank. On slabs: the level's own peak, and the
+    // pressure it returns (8 B a point of its slab).
+    return distributed_ ? distributed_->bytes() + sizeof(double) * static_cast<std::size_t>(slab_.points())
                         : sizeof(double) * 12 * static_cast<std::size_t>(grid_.points());
   }
 
@@ -150,6 +154,7 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
       layout_(all_slabs(grid.nx, grid.ny, comm)),
       modulus_(modulus),
       threads_(threads),
+      gather_bound_(gather_bound),
       operator_(grid, modulus, comm, threads),
       // The filter runs between the operator's applications, never during one: one transform for both.
       filter_(make_distributed_unit_preconditioner(grid, comm, threads, &operator_.convolution())),
@@ -160,12 +165,7 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
                     "distributed active_set: the local heights have " + std::to_string(h_.size()) +
                         " values, this rank's slab " + std::to_string(n_),
                     comm);
-  for (auto* field : {&u_, &r_, &z_, &t_})
-    field->assign(n_, 0.0);
-  extension_weight_.assign(n_, 0.0f);
-  window_count_.assign(n_, 0);
-  in_.assign(n_, 0);
-  plastic_.assign(n_, 0);
+  u_.assign(n_, 0.0);  // the work arrays are made by each solve (make_work)
   changes_.reserve(kFewChanges);
   measure_heights();
   if (extension_radius() > 0) {
@@ -174,18 +174,46 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
     window_ = WindowRows(grid.nx, grid.ny, extension_radius(), grid.periodic);
   }
   const Index nx = grid.nx, ny = grid.ny;
-  if (nx % 2 == 0 && ny % 2 == 0 && nx / 2 >= kCoarsest && ny / 2 >= kCoarsest)
-    coarse_ = std::make_unique<Coarse>(grid, h_, modulus, comm, threads, gather_bound);
+  has_coarse_ = nx % 2 == 0 && ny % 2 == 0 && nx / 2 >= kCoarsest && ny / 2 >= kCoarsest;
 }
 
 DistributedActiveSet::~DistributedActiveSet() = default;
 
 std::size_t DistributedActiveSet::bytes() const {
-  // h, u, r, z, t; the weights (float), the window counts (16 bits) and the two sets (8 bits each): 48 B a
-  // point of the slab; the operator's transform (which the filter shares) and both multipliers.
-  const std::size_t doubles = 5 * n_;
-  return sizeof(double) * doubles + sizeof(float) * n_ + 4 * n_ + operator_.bytes() + filter_->own_bytes() +
-         (coarse_ ? coarse_->bytes() : 0);
+  // Held from solve to solve: h and u (16 B a point of the slab), the operator's transform (which the filter
+  // shares) and both multipliers. During a solve, first the coarse level (made for the cold start, freed
+  // when it has given its pressure: its own peak, recorded when it ran), then this level's work arrays.
+  return kept_bytes() + std::max(work_bytes(), coarse_peak_);
+}
+
+std::size_t DistributedActiveSet::kept_bytes() const {
+  return 2 * sizeof(double) * n_ + operator_.bytes() + filter_->own_bytes();
+}
+
+// r, z, t; the weights (float), the window counts (16 bits) and the two sets (8 bits each): 32 B a point.
+std::size_t DistributedActiveSet::work_bytes() const {
+  return (3 * sizeof(double) + sizeof(float) + sizeof(std::uint16_t) + 2) * n_;
+}
+
+// The work arrays, made after the coarse start (which then no longer holds its own) and freed when a solve
+// ends (docs/mpi.md "Memory a point"). Every value read is written first within a solve (the direction t
+// only as 0 * t when beta = 0, so zeros are as good as the last solve's values).
+void DistributedActiveSet::make_work() {
+  for (auto* field : {&r_, &z_, &t_})
+    field->assign(n_, 0.0);
+  extension_weight_.assign(n_, 0.0f);
+  window_count_.assign(n_, 0);
+  in_.assign(n_, 0);
+  plastic_.assign(n_, 0);
+}
+
+void DistributedActiveSet::free_work() {
+  for (auto* field : {&r_, &z_, &t_})
+    std::vector<double>().swap(*field);
+  std::vector<float>().swap(extension_weight_);
+  std::vector<std::uint16_t>().swap(window_count_);
+  std::vector<std::uint8_t>().swap(in_);
+  std::vector<std::uint8_t>().swap(plastic_);
 }
 
 double DistributedActiveSet::threshold(double tolerance, double d) const {
@@ -294,6 +322,7 @@ ActiveSetOutcome DistributedActiveSet::solve(const ActiveSetProblem& problem, do
     outcome.coarse_iterations = coarse.iterations;
     outcome.work = coarse.work / 4;
   }
+  make_work();
   double d = 0;
   Sums kept = start_sets(p, warm, total, d);
   bool capping = warm;
@@ -356,6 +385,7 @@ ActiveSetOutcome DistributedActiveSet::solve(const ActiveSetProblem& problem, do
     if (outcome.iterations >= max_iterations) break;
   }
   finish(p, total, tolerance, d, kept, inner + column_updates, outcome);
+  free_work();
   outcome.work += static_cast<double>(outcome.iterations);
   outcome.iterations = std::llround(outcome.work);
   return outcome;
@@ -791,7 +821,7 @@ double DistributedActiveSet::coarse_area_level(const std::vector<double>& scores
 
 ActiveSetOutcome DistributedActiveSet::nested_start(const ActiveSetProblem& problem, std::vector<double>& p,
                                                     const std::function<void()>& between) {
-  if (!coarse_) {
+  if (!has_coarse_) {
     p.assign(n_, 1.0);
     if (!problem.load_control) {
       const double stiffness = 1 / operator_.self_response();
@@ -800,7 +830,11 @@ ActiveSetOutcome DistributedActiveSet::nested_start(const ActiveSetProblem& prob
     }
     return {};
   }
-  return coarse_->solve(problem, slab_, cap_, p, coarse_fraction_, between);
+  // The coarse level lives for this start only: its fields are not held while this level iterates.
+  Coarse coarse(grid_, h_, modulus_, comm_, threads_, gather_bound_);
+  const ActiveSetOutcome outcome = coarse.solve(problem, slab_, cap_, p, coarse_fraction_, between);
+  coarse_peak_ = std::max(coarse_peak_, coarse.bytes());
+  return outcome;
 }
 
 DistributedActiveSet::Sums DistributedActiveSet::start_sets(std::vector<double>& p, bool warm, double total,
@@ -814,9 +848,9 @@ DistributedActiveSet::Sums DistributedActiveSet::start_sets(std::vector<double>&
     for (std::size_t k = 0; k < n_; ++k) {
       const double score = start_score(p, k, d, stiffness);
       in_[k] = score > 0;
-      if (in_[k] && load_control_ && coarse_) scores.push_back(score);
+      if (in_[k] && load_control_ && has_coarse_) scores.push_back(score);
     }
-    const double level = load_control_ && coarse_ ? coarse_area_level(scores) : 0.0;
+    const double level = load_control_ && has_coarse_ ? coarse_area_level(scores) : 0.0;
     if (level > 0)
       for (std::size_t k = 0; k < n_; ++k)
         if (in_[k]) in_[k] = start_score(p, k, d, stiffness) >= level;

@@ -62,8 +62,11 @@ class DistributedActiveSet {
   const Slab& slab() const { return slab_; }
   // The fraction of all nodes in contact in the last solution.
   double contact_fraction() const { return contact_fraction_; }
-  // Bytes this rank holds (fields, operator, filter, coarse levels).
+  // The most bytes this rank holds at once during a solve (fields, operator, filter, work arrays; the coarse
+  // levels' peak once a cold solve has made them: docs/mpi.md "Memory a point").
   std::size_t bytes() const;
+  // What it holds from one solve to the next (heights, displacement, transform, multipliers).
+  std::size_t kept_bytes() const;
 
  private:
   struct Sums {
@@ -98,6 +101,9 @@ class DistributedActiveSet {
   }
 
   void measure_heights();
+  std::size_t work_bytes() const;
+  void make_work();
+  void free_work();
   void finish(std::vector<double>& p, double total, double tolerance, double d, const Sums& kept, Index steps,
               ActiveSetOutcome& outcome);
   Sums update_sets(std::vector<double>& p, double d, double limit, double entry, bool capping);
@@ -136,6 +142,7 @@ class DistributedActiveSet {
   std::vector<Slab> layout_;
   Real modulus_;
   int threads_;
+  Index gather_bound_;
   DistributedHalfSpace operator_;
   std::unique_ptr<DistributedConvolution> filter_;
   std::size_t n_;  // this rank's points
@@ -155,8 +162,9 @@ class DistributedActiveSet {
   double last_step_change_ = 0;
   bool displacement_current_ = false, displacement_fresh_ = false;
   double set_size_ = 1, set_mean_ = 0, contact_fraction_ = 0;
-  double coarse_fraction_ = 0;  // of the coarse level's nodes, in contact in its solution
-  std::unique_ptr<Coarse> coarse_;
+  double coarse_fraction_ = 0;   // of the coarse level's nodes, in contact in its solution
+  bool has_coarse_ = false;      // a cold start solves the next coarser level first (made then, freed after)
+  std::size_t coarse_peak_ = 0;  // the coarse level's bytes() when it last ran
 };
 
 }  // namespace contactbench::mpi

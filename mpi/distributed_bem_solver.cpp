@@ -97,15 +97,13 @@ DistributedBemSolver::DistributedBemSolver(const Grid& grid, const HeightMap& lo
 
 DistributedBemSolver::~DistributedBemSolver() = default;
 
-// Bytes a point of the slab, measured as bytes() / slab points with mpiexec -np 2 and 3 on 256^2 and 512^2
-// surfaces (periodic / not): polonsky_keer 60 / 112, preconditioned_cg 80 / 185, each with 10 % of margin;
-// active_set 116 / 296 on its finest level (fitted with the whole-grid term below; its passes fused into the
-// transforms), with its coarse levels on slabs (a quarter of the points each: a third more in all) 155 / 395,
-// rounded up to 165 / 420. active_set
-// also keeps on every rank its levels' responses to a unit load (8 B a point of each level's grid: a third
-// more than the finest's) and solves the first coarse level of at most kGatherBound points (and those below
-// it) on every rank whole: measured ~100 B a point of that level, bounded here by 200 (at most 13 MB: the
-// estimate is for grids where GiB matter).
+// Bytes a point of the slab, measured as bytes() / slab points with mpiexec -np 2 and 3 on 256^2 and 640 x
+// 512 surfaces (periodic / not; docs/mpi.md "Memory a point"), with 10 % of margin: polonsky_keer 76 / 136,
+// preconditioned_cg 96 / 217. active_set: what it holds from solve to solve (the pressure, heights,
+// displacement, the transform and both multipliers) 40 / 120, and during a solve either its work arrays (32,
+// plus a transient selection array of the cold start, at most 8) or, before them, its coarse start: the first
+// level of at most kGatherBound points whole on every rank (~100 B a point of that level, Coarse::bytes) and
+// the levels on slabs (a quarter of the points each: at most a third of the finest level's kept and work).
 std::size_t DistributedBemSolver::estimated_bytes(const Grid& grid, Index slab_points,
                                                   const BemSolverOptions& options) {
   const bool periodic = grid.periodic;
@@ -113,16 +111,18 @@ std::size_t DistributedBemSolver::estimated_bytes(const Grid& grid, Index slab_p
   double bytes = 0;
   switch (options.solver) {
     case SolverKind::polonsky_keer:
-      bytes = (periodic ? 67 : 124) * slab;
+      bytes = (periodic ? 84 : 150) * slab;
       break;
     case SolverKind::preconditioned_cg:
-      bytes = (periodic ? 90 : 205) * slab;
+      bytes = (periodic ? 106 : 240) * slab;
       break;
     case SolverKind::active_set: {
       double gathered = points / 4;  // the coarse levels halve each side
       while (gathered > static_cast<double>(DistributedActiveSet::kGatherBound))
         gathered /= 4;
-      bytes = (periodic ? 165 : 420) * slab + 8 * points * 4 / 3 + 200 * gathered;
+      const double kept = (periodic ? 44 : 132) * slab, work = 44 * slab;
+      const double coarse = 100 * gathered + (kept + work) / 3;
+      bytes = kept + std::max(work, coarse);
       break;
     }
   }
@@ -130,12 +130,16 @@ std::size_t DistributedBemSolver::estimated_bytes(const Grid& grid, Index slab_p
 }
 
 std::size_t DistributedBemSolver::bytes() const {
-  std::size_t values = h_.capacity() + g_.capacity() + t_.capacity() + u_.capacity() + z_.capacity() +
-                       q_[0].capacity() + q_[1].capacity();
-  // The solution's pressure and gap (written by every solve): 16 B a point.
-  values += 2 * static_cast<std::size_t>(local_points_);
-  return sizeof(double) * values + (operator_ ? operator_->bytes() : 0) +
-         (preconditioner_ ? preconditioner_->bytes() : 0) + (active_set_ ? active_set_->bytes() : 0);
+  const std::size_t values = h_.capacity() + g_.capacity() + t_.capacity() + u_.capacity() + z_.capacity() +
+                             q_[0].capacity() + q_[1].capacity();
+  // The solution's pressure and gap, 16 B a point, made by write() after each solve: with active_set they
+  // are freed when the next solve starts and made after it has freed its work arrays, so they count against
+  // those (which are more, 32 B a point), not on top.
+  const std::size_t solution = 2 * sizeof(double) * static_cast<std::size_t>(local_points_);
+  if (active_set_)
+    return sizeof(double) * values + std::max(active_set_->bytes(), active_set_->kept_bytes() + solution);
+  return sizeof(double) * values + solution + (operator_ ? operator_->bytes() : 0) +
+         (preconditioner_ ? preconditioner_->bytes() : 0);
 }
 
 void DistributedBemSolver::apply(const std::vector<double>& in, std::vector<double>& out) {
