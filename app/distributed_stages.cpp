@@ -151,9 +151,6 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
   options.warning = warning;
   mpi::DistributedBemSolver solver(grid, local, request.estar, kWorld, options, request.threads);
   SolvedLoads result;
-  unsigned long long bytes = solver.bytes();
-  MPI_Reduce(is_root() ? MPI_IN_PLACE : &bytes, &bytes, 1, MPI_UNSIGNED_LONG_LONG, MPI_MAX, 0, kWorld);
-  result.bytes_per_rank = bytes;
   std::exception_ptr failure;
   for (std::size_t k = 0; k < request.mean_pressures.size(); ++k) {
     int go = failure ? 0 : 1;
@@ -205,6 +202,11 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
                                                  .plastic_overlap = {}});
     if (is_root() && load_solved) load_solved(k, result.solutions.back());
   }
+  // After the loads: the most one rank held at once (active_set knows its coarse levels' peak once a cold
+  // solve has made them).
+  unsigned long long bytes = solver.bytes();
+  MPI_Reduce(is_root() ? MPI_IN_PLACE : &bytes, &bytes, 1, MPI_UNSIGNED_LONG_LONG, MPI_MAX, 0, kWorld);
+  result.bytes_per_rank = bytes;
   if (failure) std::rethrow_exception(failure);
   return result;
 }

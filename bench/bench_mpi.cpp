@@ -14,11 +14,21 @@
 // solves to the tolerance instead (the time a load costs, iterations as they come) and prints: ranks,
 // threads, n, solver, iterations, s/load, the serial reference's solver, threads, iterations and s/load, and
 // the ratio of the two times. The reference runs on rank 0 while the others wait without spinning
-// (quiet_barrier), so that a reference on 2 threads has both cores.
+// (quiet_barrier), so that a reference on 2 threads has both cores. --no-serial leaves the reference out (a
+// grid rank 0 cannot hold whole).
+//
+//   mpiexec -n RANKS bench_mpi --n 4096 --solver active_set --memory [--iterations 10]
+// the memory a rank holds for one cold load (docs/mpi.md "Memory a point"): for each rank, its slab's
+// points, the preflight estimate (DistributedBemSolver::estimated_bytes), what the solver says it held
+// (bytes()) and the resident memory the solve added (the kernel's peak, VmHWM, reset after the surface was
+// generated, less the resident memory then), each also in bytes a point of the slab.
+//   mpiexec -n RANKS bench_mpi --n 16384 --solver active_set --estimate
+// the preflight estimate a rank alone, nothing allocated.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <optional>
 #include <string>
 #include <thread>
@@ -72,6 +82,46 @@ double transpose_seconds(Index nx, Index ny, int repetitions, MPI_Comm comm) {
   return median(times);
 }
 
+// A line of /proc/self/status in bytes ("VmHWM", "VmRSS"), 0 when absent.
+double status_bytes(const std::string& key) {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind(key + ":", 0) == 0) return 1024.0 * std::stod(line.substr(key.size() + 1));
+  return 0;
+}
+
+// --memory: one cold load (`options`: a few iterations) and what each rank held; rank 0 prints a row a rank.
+void memory_rows(const Grid& grid, const HeightMap& local, Real modulus, Real load,
+                 const BemSolverOptions& options, int threads, MPI_Comm comm) {
+  const mpi::Slab slab = mpi::slab_of(grid, comm);
+  const double estimate =
+      static_cast<double>(mpi::DistributedBemSolver::estimated_bytes(grid, slab.points(), options));
+  { std::ofstream("/proc/self/clear_refs") << "5"; }  // the peak from here (Linux >= 4.0)
+  const double before = status_bytes("VmRSS");
+  double held = 0;
+  {
+    mpi::DistributedBemSolver solver(grid, local, modulus, comm, options, threads);
+    solver.solve(load);
+    held = static_cast<double>(solver.bytes());
+  }
+  const double added = status_bytes("VmHWM") - before;
+  const double points = static_cast<double>(std::max<Index>(slab.points(), 1));
+  const double mine[5] = {points, estimate, held, added, before};
+  std::vector<double> all(5 * static_cast<std::size_t>(mpi::size_of(comm)));
+  MPI_Gather(mine, 5, MPI_DOUBLE, all.data(), 5, MPI_DOUBLE, 0, comm);
+  if (mpi::rank_of(comm) != 0) return;
+  const double mib = 1 << 20;
+  for (int r = 0; r < mpi::size_of(comm); ++r) {
+    const double* v = all.data() + 5 * r;
+    std::printf(
+        "| %d | %ld | %s | %d | %.0f | %.0f MiB (%.0f B) | %.0f MiB (%.0f B) | %.0f MiB (%.0f B) | %.0f MiB "
+        "|\n",
+        mpi::size_of(comm), static_cast<long>(grid.nx), std::string(solver_name(options.solver)).c_str(), r,
+        v[0], v[1] / mib, v[1] / v[0], v[2] / mib, v[2] / v[0], v[3] / mib, v[3] / v[0], v[4] / mib);
+  }
+}
+
 // A barrier that sleeps while it waits (MPI_Barrier polls, taking a core from a reference timed meanwhile).
 void quiet_barrier(MPI_Comm comm) {
   MPI_Request request;
@@ -102,7 +152,11 @@ void per_load_row(const Grid& grid, const HeightMap& local, const Surface* surfa
     times.push_back(seconds_since(start));
   }
   distributed.seconds = median(times);
-  if (rank == 0) {
+  if (rank == 0 && !surface) {
+    std::printf("| %d | %d | %ld | %s | %ld | %.3g | - | - | - | - | - |\n", mpi::size_of(comm), threads,
+                static_cast<long>(grid.nx), std::string(solver_name(options.solver)).c_str(),
+                static_cast<long>(distributed.iterations), distributed.seconds);
+  } else if (rank == 0) {
     BemSolverOptions reference_options = options;
     reference_options.solver = reference;
     times.clear();
@@ -128,7 +182,7 @@ int main(int argc, char** argv) {
   mpi::Environment environment(argc, argv);
   Index n = 1024;
   int iterations = 10, repetitions = 3, threads = 1;
-  bool serial = true;
+  bool serial = true, memory = false, estimate = false;
   SolverKind solver = SolverKind::polonsky_keer;
   double tolerance = 0;  // 0: a fixed number of iterations
   SolverKind reference = SolverKind::active_set;
@@ -148,6 +202,10 @@ int main(int argc, char** argv) {
       solver = solver_kind(value(), "--solver");
     else if (arg == "--no-serial")
       serial = false;
+    else if (arg == "--memory")
+      memory = true;
+    else if (arg == "--estimate")
+      estimate = true;
     else if (arg == "--tolerance")
       tolerance = std::stod(value());
     else if (arg == "--reference")
@@ -164,6 +222,20 @@ int main(int argc, char** argv) {
   // Surface A's spectrum (docs/theory.md section 2) on n x n points over 200 um, periodic.
   const Grid grid{.nx = n, .ny = n, .lx = 200e-6, .ly = 200e-6, .periodic = true};
   const SelfAffinePsd psd{.sigma = 0.5e-6, .hurst = 0.5, .qr = 3.14e4, .qs = std::nullopt};
+  if (estimate) {
+    BemSolverOptions options;
+    options.solver = solver;
+    const Index points = mpi::slab_of(grid, comm).points();
+    const double bytes =
+        static_cast<double>(mpi::DistributedBemSolver::estimated_bytes(grid, points, options));
+    if (rank == 0)
+      std::printf(
+          "%d ranks, %ld^2, %s: rank 0's slab %ld points, preflight estimate %.2f GiB a rank (%.1f B a "
+          "point)\n",
+          ranks, static_cast<long>(n), std::string(solver_name(solver)).c_str(), static_cast<long>(points),
+          bytes / (1 << 30), bytes / static_cast<double>(points));
+    return 0;
+  }
   const HeightMap local = mpi::generate_surface_slab(grid, psd, 1, comm);
   const Real modulus = 1.1e11;
   const Real load = 0.02 * modulus * mpi::distributed_spectral_moments(grid, local, comm).rms_gradient();
@@ -171,11 +243,15 @@ int main(int argc, char** argv) {
   options.solver = solver;
   options.tolerance = 1e-300;  // never reached: every solve runs `iterations` iterations
   options.max_iterations = iterations;
+  if (memory) {
+    memory_rows(grid, local, modulus, load, options, threads, comm);
+    return 0;
+  }
   if (tolerance > 0) {
     options.tolerance = tolerance;
     options.max_iterations = BemSolverOptions{}.max_iterations;
     std::optional<Surface> surface;  // rank 0's, for the reference
-    if (rank == 0) surface = generate_surface(grid, psd, 1, reference_threads);
+    if (rank == 0 && serial) surface = generate_surface(grid, psd, 1, reference_threads);
     per_load_row(grid, local, surface ? &*surface : nullptr, modulus, load, options, threads, reference,
                  reference_threads, repetitions, comm);
     return 0;

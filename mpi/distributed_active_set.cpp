@@ -46,13 +46,16 @@ class DistributedActiveSet::Coarse {
       : grid_(fine) {
     grid_.nx = fine.nx / 2;
     grid_.ny = fine.ny / 2;
-    const Slab fine_slab = slab_of(fine, comm);
-    HeightMap local(fine_slab.count, fine.nx);
-    std::copy(fine_heights.begin(), fine_heights.end(), local.data());
-    const HeightMap restricted = restrict_to_coarse_slab(fine, local, comm);
     layout_ = all_slabs(grid_.nx, grid_.ny, comm);
     slab_ = layout_[static_cast<std::size_t>(rank_of(comm))];
-    std::vector<double> heights(restricted.data(), restricted.data() + restricted.size());
+    std::vector<double> heights;
+    {  // the fine slab's copy freed before the level is made
+      const Slab fine_slab = slab_of(fine, comm);
+      HeightMap local(fine_slab.count, fine.nx);
+      std::copy(fine_heights.begin(), fine_heights.end(), local.data());
+      const HeightMap restricted = restrict_to_coarse_slab(fine, local, comm);
+      heights.assign(restricted.data(), restricted.data() + restricted.size());
+    }
     if (grid_.points() > gather_bound) {
       distributed_ = std::make_unique<DistributedActiveSet>(grid_, std::move(heights), modulus, comm, threads,
                                                             gather_bound);
@@ -117,8 +120,9 @@ class DistributedActiveSet::Coarse {
 
   std::size_t bytes() const {
     // Gathered: the serial level's ~56 B a point (ActiveSet's fields) and its own coarser levels (a third
-    // more), about 12 doubles a point of this level, on every rank.
-    return distributed_ ? distributed_->bytes()
+    // more), about 12 doubles a point of this level, on every rank. On slabs: the level's own peak, and the
+    // pressure it returns (8 B a point of its slab).
+    return distributed_ ? distributed_->bytes() + sizeof(double) * static_cast<std::size_t>(slab_.points())
                         : sizeof(double) * 12 * static_cast<std::size_t>(grid_.points());
   }
 
@@ -150,8 +154,10 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
       layout_(all_slabs(grid.nx, grid.ny, comm)),
       modulus_(modulus),
       threads_(threads),
+      gather_bound_(gather_bound),
       operator_(grid, modulus, comm, threads),
-      filter_(make_distributed_unit_preconditioner(grid, comm, threads)),
+      // The filter runs between the operator's applications, never during one: one transform for both.
+      filter_(make_distributed_unit_preconditioner(grid, comm, threads, &operator_.convolution())),
       n_(static_cast<std::size_t>(slab_.points())),
       points_(static_cast<double>(grid.points())),
       h_(std::move(local_heights)) {
@@ -159,12 +165,7 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
                     "distributed active_set: the local heights have " + std::to_string(h_.size()) +
                         " values, this rank's slab " + std::to_string(n_),
                     comm);
-  for (auto* field : {&u_, &r_, &z_, &t_, &window_inputs_})
-    field->assign(n_, 0.0);
-  extension_weight_.assign(n_, 0.0f);
-  window_count_.assign(n_, 0);
-  in_.assign(n_, 0);
-  plastic_.assign(n_, 0);
+  u_.assign(n_, 0.0);  // the work arrays are made by each solve (make_work)
   changes_.reserve(kFewChanges);
   measure_heights();
   if (extension_radius() > 0) {
@@ -172,20 +173,47 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
         RowExchange::halo(layout_, rank_of(comm), extension_radius(), grid.periodic, comm));
     window_ = WindowRows(grid.nx, grid.ny, extension_radius(), grid.periodic);
   }
-  make_response();
   const Index nx = grid.nx, ny = grid.ny;
-  if (nx % 2 == 0 && ny % 2 == 0 && nx / 2 >= kCoarsest && ny / 2 >= kCoarsest)
-    coarse_ = std::make_unique<Coarse>(grid, h_, modulus, comm, threads, gather_bound);
+  has_coarse_ = nx % 2 == 0 && ny % 2 == 0 && nx / 2 >= kCoarsest && ny / 2 >= kCoarsest;
 }
 
 DistributedActiveSet::~DistributedActiveSet() = default;
 
 std::size_t DistributedActiveSet::bytes() const {
-  // h, u, r, z, t, the window inputs; the weights (float), the window counts (16 bits) and the two sets (8
-  // bits each): 56 B a point of the slab; the whole response: 8 B a point of the grid.
-  const std::size_t doubles = 6 * n_ + response_.size();
-  return sizeof(double) * doubles + sizeof(float) * n_ + 4 * n_ + operator_.bytes() + filter_->bytes() +
-         (coarse_ ? coarse_->bytes() : 0);
+  // Held from solve to solve: h and u (16 B a point of the slab), the operator's transform (which the filter
+  // shares) and both multipliers. During a solve, first the coarse level (made for the cold start, freed
+  // when it has given its pressure: its own peak, recorded when it ran), then this level's work arrays.
+  return kept_bytes() + std::max(work_bytes(), coarse_peak_);
+}
+
+std::size_t DistributedActiveSet::kept_bytes() const {
+  return 2 * sizeof(double) * n_ + operator_.bytes() + filter_->own_bytes();
+}
+
+// r, z, t; the weights (float), the window counts (16 bits) and the two sets (8 bits each): 32 B a point.
+std::size_t DistributedActiveSet::work_bytes() const {
+  return (3 * sizeof(double) + sizeof(float) + sizeof(std::uint16_t) + 2) * n_;
+}
+
+// The work arrays, made after the coarse start (which then no longer holds its own) and freed when a solve
+// ends (docs/mpi.md "Memory a point"). Every value read is written first within a solve (the direction t
+// only as 0 * t when beta = 0, so zeros are as good as the last solve's values).
+void DistributedActiveSet::make_work() {
+  for (auto* field : {&r_, &z_, &t_})
+    field->assign(n_, 0.0);
+  extension_weight_.assign(n_, 0.0f);
+  window_count_.assign(n_, 0);
+  in_.assign(n_, 0);
+  plastic_.assign(n_, 0);
+}
+
+void DistributedActiveSet::free_work() {
+  for (auto* field : {&r_, &z_, &t_})
+    std::vector<double>().swap(*field);
+  std::vector<float>().swap(extension_weight_);
+  std::vector<std::uint16_t>().swap(window_count_);
+  std::vector<std::uint8_t>().swap(in_);
+  std::vector<std::uint8_t>().swap(plastic_);
 }
 
 double DistributedActiveSet::threshold(double tolerance, double d) const {
@@ -276,25 +304,6 @@ void DistributedActiveSet::measure_heights() {
   if (!(height_range_ > 0)) height_range_ = 1;
 }
 
-// G e_0, the response to a unit pressure at node 0, on the whole grid on every rank: the rows a column
-// update touches can be any (periodic), and 8 B a point of the grid is below what a slab holds a point (56 B
-// of fields, bytes(), and the transforms) only while the ranks are few (docs/mpi.md).
-void DistributedActiveSet::make_response() {
-  std::vector<double> unit(n_, 0.0), local(n_, 0.0);
-  if (slab_.start == 0 && slab_.count > 0) unit[0] = 1;
-  operator_.apply(unit.data(), local.data());
-  std::vector<int> counts, offsets;
-  for (const Slab& s : layout_) {
-    if (s.points() > std::numeric_limits<int>::max() || s.start * s.nx > std::numeric_limits<int>::max())
-      throw Error("distributed active_set: a grid of more than 2^31 points keeps no whole response");
-    counts.push_back(static_cast<int>(s.points()));
-    offsets.push_back(static_cast<int>(s.start * s.nx));
-  }
-  response_.assign(static_cast<std::size_t>(grid_.points()), 0.0);
-  MPI_Allgatherv(local.data(), static_cast<int>(n_), MPI_DOUBLE, response_.data(), counts.data(),
-                 offsets.data(), MPI_DOUBLE, comm_);
-}
-
 ActiveSetOutcome DistributedActiveSet::solve(const ActiveSetProblem& problem, double tolerance,
                                              Index max_iterations, bool warm, std::vector<double>& p,
                                              const std::function<void()>& between) {
@@ -313,6 +322,7 @@ ActiveSetOutcome DistributedActiveSet::solve(const ActiveSetProblem& problem, do
     outcome.coarse_iterations = coarse.iterations;
     outcome.work = coarse.work / 4;
   }
+  make_work();
   double d = 0;
   Sums kept = start_sets(p, warm, total, d);
   bool capping = warm;
@@ -375,6 +385,7 @@ ActiveSetOutcome DistributedActiveSet::solve(const ActiveSetProblem& problem, do
     if (outcome.iterations >= max_iterations) break;
   }
   finish(p, total, tolerance, d, kept, inner + column_updates, outcome);
+  free_work();
   outcome.work += static_cast<double>(outcome.iterations);
   outcome.iterations = std::llround(outcome.work);
   return outcome;
@@ -456,46 +467,29 @@ void DistributedActiveSet::keep_to_sets(std::vector<double>& p, std::size_t k, S
   part.g += plastic_[k] ? cap_ : 0.0;
 }
 
-// u += G dp for the `changed` changes of p the last keep_to_sets pass made (every rank's, gathered in rank
-// order, the serial method's order of nodes), by the whole response kept on each rank.
+// u += G dp for the `changed` changes of p the last keep_to_sets pass made (at most kFewChanges over all
+// ranks, each rank's own in changes_, in node order): the operator applied to the changes alone. The serial
+// method adds dp times G's column of each node from its response to a unit load at node 0 (G e_0, a field of
+// the whole grid); on slabs that field would be 8 B a point of the grid on every rank, whatever the number of
+// ranks (docs/mpi.md "Memory a point"), so the transform makes the same sum (to round-off) from no stored
+// field, at the cost of one transform pair when few pressures changed.
 void DistributedActiveSet::add_columns(Index changed) {
-  const int ranks = size_of(comm_);
-  const int mine = static_cast<int>(2 * changes_.size());
-  std::vector<int> counts(static_cast<std::size_t>(ranks)), offsets(static_cast<std::size_t>(ranks));
-  MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
-  int all = 0;
-  for (int r = 0; r < ranks; ++r) {
-    offsets[static_cast<std::size_t>(r)] = all;
-    all += counts[static_cast<std::size_t>(r)];
-  }
-  if (all != 2 * changed) throw Error("distributed active_set: the column update lost changes");
-  std::vector<Change> every(static_cast<std::size_t>(changed));
-  MPI_Allgatherv(changes_.data(), mine, MPI_DOUBLE, every.data(), counts.data(), offsets.data(), MPI_DOUBLE,
-                 comm_);
-  const Index nx = grid_.nx, ny = grid_.ny;
-  const bool periodic = grid_.periodic;
-  for (Index r = 0; r < slab_.count; ++r) {
-    const Index y = slab_.start + r;
-    double* const row = u_.data() + r * nx;
-    for (const Change& change : every) {
-      const Index node = static_cast<Index>(change.node);
-      const Index ky = node / nx, kx = node % nx;
-      const Index dy = periodic ? (y - ky + ny) % ny : std::abs(y - ky);
-      const double* const column = response_.data() + dy * nx;
-      const double dp = change.dp;
-      if (periodic) {
-        for (Index x = kx; x < nx; ++x)
-          row[x] += dp * column[x - kx];
-        for (Index x = 0; x < kx; ++x)
-          row[x] += dp * column[x - kx + nx];
-      } else {
-        for (Index x = kx; x < nx; ++x)
-          row[x] += dp * column[x - kx];
-        for (Index x = 0; x < kx; ++x)
-          row[x] += dp * column[kx - x];
-      }
-    }
-  }
+  if (static_cast<Index>(changes_.size()) > changed)
+    throw Error("distributed active_set: the column update has more changes than the pass counted");
+  const Index nx = grid_.nx, first = slab_.start * nx;
+  std::size_t next = 0;
+  operator_.apply(
+      [&](Index r, double* row) {
+        std::fill_n(row, nx, 0.0);
+        const Index end = first + (r + 1) * nx;
+        for (; next < changes_.size() && static_cast<Index>(changes_[next].node) < end; ++next)
+          row[static_cast<Index>(changes_[next].node) - first - r * nx] = changes_[next].dp;
+      },
+      [&](Index r, const double* row) {
+        double* const u = u_.data() + r * nx;
+        for (Index x = 0; x < nx; ++x)
+          u[x] += row[x];
+      });
   displacement_fresh_ = false;
 }
 
@@ -567,19 +561,15 @@ void DistributedActiveSet::window_sums(Value value, Emit emit) {
     emit(r, window_sums_of(r, value));
 }
 
-// Only the rows other ranks read (those within the window's radius of the slab's edges) are written to
-// window_inputs_ and sent; the slab's own rows are made from `value` as the window reaches them.
+// Only the rows other ranks read (those within the window's radius of the slab's edges) are made, straight
+// into the exchange's send buffer; the slab's own rows are made from `value` as the window reaches them.
 template <class Value>
 void DistributedActiveSet::start_window_sums(Value value) {
-  const Index nx = grid_.nx, radius = extension_radius();
-  for (Index r = 0; r < slab_.count; ++r) {
-    if (r >= radius && r < slab_.count - radius) r = slab_.count - radius;
-    for (Index x = 0; x < nx; ++x) {
-      const std::size_t k = static_cast<std::size_t>(r * nx + x);
-      window_inputs_[k] = value(k);
-    }
-  }
-  halo_->exchange(window_inputs_.data());
+  const Index nx = grid_.nx;
+  halo_->exchange([&](Index r, double* out) {
+    for (Index x = 0; x < nx; ++x)
+      out[x] = value(static_cast<std::size_t>(r * nx + x));
+  });
   window_.restart();
 }
 
@@ -831,7 +821,7 @@ double DistributedActiveSet::coarse_area_level(const std::vector<double>& scores
 
 ActiveSetOutcome DistributedActiveSet::nested_start(const ActiveSetProblem& problem, std::vector<double>& p,
                                                     const std::function<void()>& between) {
-  if (!coarse_) {
+  if (!has_coarse_) {
     p.assign(n_, 1.0);
     if (!problem.load_control) {
       const double stiffness = 1 / operator_.self_response();
@@ -840,7 +830,11 @@ ActiveSetOutcome DistributedActiveSet::nested_start(const ActiveSetProblem& prob
     }
     return {};
   }
-  return coarse_->solve(problem, slab_, cap_, p, coarse_fraction_, between);
+  // The coarse level lives for this start only: its fields are not held while this level iterates.
+  Coarse coarse(grid_, h_, modulus_, comm_, threads_, gather_bound_);
+  const ActiveSetOutcome outcome = coarse.solve(problem, slab_, cap_, p, coarse_fraction_, between);
+  coarse_peak_ = std::max(coarse_peak_, coarse.bytes());
+  return outcome;
 }
 
 DistributedActiveSet::Sums DistributedActiveSet::start_sets(std::vector<double>& p, bool warm, double total,
@@ -854,9 +848,9 @@ DistributedActiveSet::Sums DistributedActiveSet::start_sets(std::vector<double>&
     for (std::size_t k = 0; k < n_; ++k) {
       const double score = start_score(p, k, d, stiffness);
       in_[k] = score > 0;
-      if (in_[k] && load_control_ && coarse_) scores.push_back(score);
+      if (in_[k] && load_control_ && has_coarse_) scores.push_back(score);
     }
-    const double level = load_control_ && coarse_ ? coarse_area_level(scores) : 0.0;
+    const double level = load_control_ && has_coarse_ ? coarse_area_level(scores) : 0.0;
     if (level > 0)
       for (std::size_t k = 0; k < n_; ++k)
         if (in_[k]) in_[k] = start_score(p, k, d, stiffness) >= level;

@@ -4,8 +4,8 @@
 // the CG's vectors, the operator and the filter on FFTW-MPI (mpi/distributed_half_space.hpp), every global
 // sum combined in rank order from an MPI_Allgather (so every rank takes the same decisions), the extended
 // filter's window sums over a halo of kExtensionRadius rows (mpi/row_exchange.hpp, from further ranks when
-// a slab is thinner), the few changed nodes' columns of G gathered to every rank with the whole response
-// G e_0 kept on each rank, and the cold start's k-th largest score selected over the ranks
+// a slab is thinner), the few changed nodes' columns of G added by the operator applied to those changes
+// alone (no whole response kept), and the cold start's k-th largest score selected over the ranks
 // (mpi/distributed_selection.hpp). The nested coarse start: levels above kGatherBound points restricted on
 // slabs (mpi/distributed_restriction.hpp) and solved by this class, the first level at or below it gathered
 // to every rank and solved by the serial ActiveSetSolver itself (identical on every rank), the pressure
@@ -56,11 +56,17 @@ class DistributedActiveSet {
                          std::vector<double>& pressure, const std::function<void()>& between = {});
   // G p - h of the last solution on this rank's slab.
   void displacement_minus_heights(std::vector<double>& out) const;
+  double displacement_minus_height(std::size_t k) const { return u_[k] - h_[k]; }
+  // This rank's slab of the centred heights.
+  const std::vector<double>& heights() const { return h_; }
   const Slab& slab() const { return slab_; }
   // The fraction of all nodes in contact in the last solution.
   double contact_fraction() const { return contact_fraction_; }
-  // Bytes this rank holds (fields, the whole response, operator, filter, coarse levels).
+  // The most bytes this rank holds at once during a solve (fields, operator, filter, work arrays; the coarse
+  // levels' peak once a cold solve has made them: docs/mpi.md "Memory a point").
   std::size_t bytes() const;
+  // What it holds from one solve to the next (heights, displacement, transform, multipliers).
+  std::size_t kept_bytes() const;
 
  private:
   struct Sums {
@@ -95,7 +101,9 @@ class DistributedActiveSet {
   }
 
   void measure_heights();
-  void make_response();
+  std::size_t work_bytes() const;
+  void make_work();
+  void free_work();
   void finish(std::vector<double>& p, double total, double tolerance, double d, const Sums& kept, Index steps,
               ActiveSetOutcome& outcome);
   Sums update_sets(std::vector<double>& p, double d, double limit, double entry, bool capping);
@@ -134,20 +142,19 @@ class DistributedActiveSet {
   std::vector<Slab> layout_;
   Real modulus_;
   int threads_;
+  Index gather_bound_;
   DistributedHalfSpace operator_;
   std::unique_ptr<DistributedConvolution> filter_;
   std::size_t n_;  // this rank's points
   double points_;  // all ranks' points
   std::vector<double> h_, u_, r_, z_, t_;
-  std::vector<double> window_inputs_;
   WindowRows window_;  // the window sums' rows, made once (start_window_sums restarts them)
   mutable std::vector<double> gathered_;  // gathered()'s buffer
   std::vector<float> extension_weight_;
   std::vector<std::uint16_t> window_count_;
   std::vector<std::uint8_t> in_, plastic_;
   std::unique_ptr<RowExchange> halo_;
-  std::vector<double> response_;  // G e_0 on the whole grid, on every rank (add_columns)
-  std::vector<Change> changes_;   // this rank's first kFewChanges changes of the last keep_to_sets pass
+  std::vector<Change> changes_;  // this rank's first kFewChanges changes of the last keep_to_sets pass
   bool load_control_ = true;
   double separation_ = 0;
   double cap_ = 0;
@@ -155,8 +162,9 @@ class DistributedActiveSet {
   double last_step_change_ = 0;
   bool displacement_current_ = false, displacement_fresh_ = false;
   double set_size_ = 1, set_mean_ = 0, contact_fraction_ = 0;
-  double coarse_fraction_ = 0;  // of the coarse level's nodes, in contact in its solution
-  std::unique_ptr<Coarse> coarse_;
+  double coarse_fraction_ = 0;   // of the coarse level's nodes, in contact in its solution
+  bool has_coarse_ = false;      // a cold start solves the next coarser level first (made then, freed after)
+  std::size_t coarse_peak_ = 0;  // the coarse level's bytes() when it last ran
 };
 
 }  // namespace contactbench::mpi

@@ -47,7 +47,7 @@ void sum_over_ranks(double (&values)[N], MPI_Comm comm) {
 
 DistributedBemSolver::DistributedBemSolver(const Grid& grid, const HeightMap& local_heights, Real modulus,
                                            MPI_Comm comm, BemSolverOptions options, int threads)
-    : grid_(grid), comm_(comm), options_(std::move(options)), operator_(grid, modulus, comm, threads) {
+    : grid_(grid), comm_(comm), options_(std::move(options)), slab_(slab_of(grid, comm)) {
   if (!(options_.tolerance > 0) || options_.max_iterations < 1)
     throw Error("Polonsky-Keer: tolerance must be > 0 and max_iterations >= 1");
   // A hardness caps the pressure in the active-set method (its ActiveSetProblem::hardness); the PK solvers'
@@ -58,7 +58,7 @@ DistributedBemSolver::DistributedBemSolver(const Grid& grid, const HeightMap& lo
   refuse(options_.coarse_start, "coarse_start");
   // It starts each load from the last scaled, the start every solver may take when left to choose.
   refuse(load_path_start(options_, grid) == LoadPathStart::extrapolated, "load_path = extrapolated");
-  const Slab& slab = operator_.slab();
+  const Slab& slab = slab_;
   throw_on_any_rank(local_heights.rows() != slab.count || local_heights.cols() != grid.nx,
                     "distributed Polonsky-Keer: the local heights are " +
                         std::to_string(local_heights.cols()) + " x " + std::to_string(local_heights.rows()) +
@@ -72,12 +72,19 @@ DistributedBemSolver::DistributedBemSolver(const Grid& grid, const HeightMap& lo
   h_.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     h_[i] = local_heights.data()[i] - mean;
-  g_.assign(n, 0.0);
   q_[0].assign(n, 0.0);
+  const double local_max =
+      n ? *std::max_element(h_.begin(), h_.end()) : -std::numeric_limits<double>::infinity();
+  const double local_min =
+      n ? *std::min_element(h_.begin(), h_.end()) : std::numeric_limits<double>::infinity();
+  height_range_ = max_over_ranks(local_max, comm) - min_over_ranks(local_min, comm);
   if (options_.solver == SolverKind::active_set) {
-    // Its own fields; here only the pressure (q_[0]) and G p - h (g_) between loads.
-    active_set_ = std::make_unique<DistributedActiveSet>(grid, h_, modulus, comm, threads);
+    // Its own fields, the heights moved there; here only the pressure (q_[0]) between loads.
+    active_set_ = std::make_unique<DistributedActiveSet>(grid, std::move(h_), modulus, comm, threads);
+    h_ = {};
   } else {
+    operator_ = std::make_unique<DistributedHalfSpace>(grid, modulus, comm, threads);
+    g_.assign(n, 0.0);
     t_.assign(n, 0.0);
     u_.assign(n, 0.0);
     q_[1].assign(n, 0.0);
@@ -86,24 +93,17 @@ DistributedBemSolver::DistributedBemSolver(const Grid& grid, const HeightMap& lo
     preconditioner_ = make_distributed_preconditioner(grid, modulus, comm, threads);
     z_.assign(n, 0.0);
   }
-  const double local_max =
-      n ? *std::max_element(h_.begin(), h_.end()) : -std::numeric_limits<double>::infinity();
-  const double local_min =
-      n ? *std::min_element(h_.begin(), h_.end()) : std::numeric_limits<double>::infinity();
-  height_range_ = max_over_ranks(local_max, comm) - min_over_ranks(local_min, comm);
 }
 
 DistributedBemSolver::~DistributedBemSolver() = default;
 
-// Bytes a point of the slab, measured as bytes() / slab points with mpiexec -np 2 and 3 on 256^2 and 512^2
-// surfaces (periodic / not): polonsky_keer 60 / 112, preconditioned_cg 80 / 185, each with 10 % of margin;
-// active_set 116 / 296 on its finest level (fitted with the whole-grid term below; its passes fused into the
-// transforms), with its coarse levels on slabs (a quarter of the points each: a third more in all) 155 / 395,
-// rounded up to 165 / 420. active_set
-// also keeps on every rank its levels' responses to a unit load (8 B a point of each level's grid: a third
-// more than the finest's) and solves the first coarse level of at most kGatherBound points (and those below
-// it) on every rank whole: measured ~100 B a point of that level, bounded here by 200 (at most 13 MB: the
-// estimate is for grids where GiB matter).
+// Bytes a point of the slab, measured as bytes() / slab points with mpiexec -np 2 and 3 on 256^2 and 640 x
+// 512 surfaces (periodic / not; docs/mpi.md "Memory a point"), with 10 % of margin: polonsky_keer 76 / 136,
+// preconditioned_cg 96 / 217. active_set: what it holds from solve to solve (the pressure, heights,
+// displacement, the transform and both multipliers) 40 / 120, and during a solve either its work arrays (32,
+// plus a transient selection array of the cold start, at most 8) or, before them, its coarse start: the first
+// level of at most kGatherBound points whole on every rank (~100 B a point of that level, Coarse::bytes) and
+// the levels on slabs (a quarter of the points each: at most a third of the finest level's kept and work).
 std::size_t DistributedBemSolver::estimated_bytes(const Grid& grid, Index slab_points,
                                                   const BemSolverOptions& options) {
   const bool periodic = grid.periodic;
@@ -111,16 +111,18 @@ std::size_t DistributedBemSolver::estimated_bytes(const Grid& grid, Index slab_p
   double bytes = 0;
   switch (options.solver) {
     case SolverKind::polonsky_keer:
-      bytes = (periodic ? 67 : 124) * slab;
+      bytes = (periodic ? 84 : 150) * slab;
       break;
     case SolverKind::preconditioned_cg:
-      bytes = (periodic ? 90 : 205) * slab;
+      bytes = (periodic ? 106 : 240) * slab;
       break;
     case SolverKind::active_set: {
       double gathered = points / 4;  // the coarse levels halve each side
       while (gathered > static_cast<double>(DistributedActiveSet::kGatherBound))
         gathered /= 4;
-      bytes = (periodic ? 165 : 420) * slab + 8 * points * 4 / 3 + 200 * gathered;
+      const double kept = (periodic ? 44 : 132) * slab, work = 44 * slab;
+      const double coarse = 100 * gathered + (kept + work) / 3;
+      bytes = kept + std::max(work, coarse);
       break;
     }
   }
@@ -128,14 +130,20 @@ std::size_t DistributedBemSolver::estimated_bytes(const Grid& grid, Index slab_p
 }
 
 std::size_t DistributedBemSolver::bytes() const {
-  std::size_t values = h_.capacity() + g_.capacity() + t_.capacity() + u_.capacity() + z_.capacity() +
-                       q_[0].capacity() + q_[1].capacity();
-  return sizeof(double) * values + operator_.bytes() + (preconditioner_ ? preconditioner_->bytes() : 0) +
-         (active_set_ ? active_set_->bytes() : 0);
+  const std::size_t values = h_.capacity() + g_.capacity() + t_.capacity() + u_.capacity() + z_.capacity() +
+                             q_[0].capacity() + q_[1].capacity();
+  // The solution's pressure and gap, 16 B a point, made by write() after each solve: with active_set they
+  // are freed when the next solve starts and made after it has freed its work arrays, so they count against
+  // those (which are more, 32 B a point), not on top.
+  const std::size_t solution = 2 * sizeof(double) * static_cast<std::size_t>(local_points_);
+  if (active_set_)
+    return sizeof(double) * values + std::max(active_set_->bytes(), active_set_->kept_bytes() + solution);
+  return sizeof(double) * values + solution + (operator_ ? operator_->bytes() : 0) +
+         (preconditioner_ ? preconditioner_->bytes() : 0);
 }
 
 void DistributedBemSolver::apply(const std::vector<double>& in, std::vector<double>& out) {
-  operator_.apply(in.data(), out.data());
+  operator_->apply(in.data(), out.data());
 }
 
 // g = s_new u - h (u = G q_new, in u_), the change of the pressure from s_old q_old, and the moments of the
@@ -186,7 +194,7 @@ cg::Moments DistributedBemSolver::gap_pass(const std::vector<double>& q_new, con
 void DistributedBemSolver::iterate(double total) {
   const double tolerance = options_.tolerance;
   const Index max_iterations = options_.max_iterations;
-  const double self_response = operator_.self_response();
+  const double self_response = operator_->self_response();
   const bool preconditioned = preconditioner_ != nullptr;
   const std::size_t n = h_.size();
 
@@ -301,25 +309,22 @@ void DistributedBemSolver::iterate(double total) {
 // The active-set method from the serial solver's start (bem/solvers/active_set_solver.cpp): warm, the
 // previous pressure scaled to the load (PressureState::begin_load); cold, its nested coarse start.
 void DistributedBemSolver::solve_active_set(double mean_pressure, double total) {
+  // The pressure scaled in place and solved in place (no second copy of it).
   std::vector<double>& q = q_[cur_];
-  std::vector<double> pressure;
   if (warm_) {
     double sum = 0;
     for (const double v : q)
       sum += v;
     const double s = total / sum_over_ranks(sum, comm_);
-    pressure.resize(q.size());
-    for (std::size_t k = 0; k < q.size(); ++k)
-      pressure[k] = s * q[k];
+    for (double& v : q)
+      v = s * v;
   }
-  const ActiveSetOutcome outcome = active_set_->solve(
-      {.load_control = true,
-       .mean_pressure = mean_pressure,
-       .hardness = options_.hardness.value_or(std::numeric_limits<double>::infinity())},
-      options_.tolerance, options_.max_iterations, warm_, pressure, options_.between_iterations);
-  q = std::move(pressure);
+  const ActiveSetOutcome outcome =
+      active_set_->solve({.load_control = true,
+                          .mean_pressure = mean_pressure,
+                          .hardness = options_.hardness.value_or(std::numeric_limits<double>::infinity())},
+                         options_.tolerance, options_.max_iterations, warm_, q, options_.between_iterations);
   s_[cur_] = 1;
-  active_set_->displacement_minus_heights(g_);
   separation_ = outcome.separation;  // the gap is g + d
   iterations_ = outcome.iterations;
   change_ = outcome.change;
@@ -327,7 +332,7 @@ void DistributedBemSolver::solve_active_set(double mean_pressure, double total) 
 }
 
 void DistributedBemSolver::write() {
-  const Slab& slab = operator_.slab();
+  const Slab& slab = slab_;
   solution_.pressure.resize(slab.count, grid_.nx);
   solution_.gap.resize(slab.count, grid_.nx);
   const std::vector<double>& q = q_[cur_];
@@ -335,10 +340,15 @@ void DistributedBemSolver::write() {
   // contact, their gap 0 and left out of the residual (the surface flowed to fit the flat there).
   const double hardness = options_.hardness.value_or(std::numeric_limits<double>::infinity());
   double residual = 0, counts[2] = {0, 0};  // contact, plastic
+  // G p - h: the PK solvers' g_, active_set's from its own fields (-h after a zero load).
+  auto minus_heights = [&](std::size_t i) {
+    if (!active_set_) return g_[i];
+    return unloaded_ ? -active_set_->heights()[i] : active_set_->displacement_minus_height(i);
+  };
   for (std::size_t i = 0; i < q.size(); ++i) {
     const double p = s_[cur_] * q[i];
     solution_.pressure.data()[i] = p;
-    const double gap = g_[i] + separation_;
+    const double gap = minus_heights(i) + separation_;
     if (!(p > 0)) {
       solution_.gap.data()[i] = gap;
     } else {
@@ -369,12 +379,15 @@ const DistributedContactSolution& DistributedBemSolver::solve(Real mean_pressure
   solution_.mean_pressure = mean_pressure;
   if (mean_pressure == 0) {
     // No load, no contact: the flat rests at the highest point (as the serial solver).
+    const std::vector<double>& h = active_set_ ? active_set_->heights() : h_;
     const double local_max =
-        h_.empty() ? -std::numeric_limits<double>::infinity() : *std::max_element(h_.begin(), h_.end());
+        h.empty() ? -std::numeric_limits<double>::infinity() : *std::max_element(h.begin(), h.end());
     separation_ = max_over_ranks(local_max, comm_);
     std::fill(q_[cur_].begin(), q_[cur_].end(), 0.0);
-    for (std::size_t i = 0; i < h_.size(); ++i)
-      g_[i] = -h_[i];
+    if (!active_set_)
+      for (std::size_t i = 0; i < h_.size(); ++i)
+        g_[i] = -h_[i];
+    unloaded_ = true;
     iterations_ = 0;
     change_ = 0;
     converged_ = true;
@@ -386,6 +399,7 @@ const DistributedContactSolution& DistributedBemSolver::solve(Real mean_pressure
   // the one the solver declares (active_set: cold, its nested coarse start, from 512^2), so that the
   // iterations stay those of one process.
   if (load_path_start(options_, grid_) == LoadPathStart::cold) warm_ = false;
+  unloaded_ = false;
   const double total = mean_pressure * static_cast<double>(grid_.points());
   if (active_set_) {
     // (its start is its own: solve_active_set)

@@ -58,9 +58,9 @@ class DistributedBemSolver {
   // the serial solver. Collective.
   const DistributedContactSolution& solve(Real mean_pressure);
   const DistributedContactSolution& solution() const { return solution_; }
-  const Slab& slab() const { return operator_.slab(); }
-  // Bytes this rank holds for the solve (fields, operator, preconditioner; not the solution's copies): the
-  // memory per rank of docs/mpi.md.
+  const Slab& slab() const { return slab_; }
+  // Bytes this rank holds for the solve (fields, operator, preconditioner, the solution's pressure and gap):
+  // the memory per rank of docs/mpi.md "Memory a point".
   std::size_t bytes() const;
   // What bytes() will be, at most, for a rank holding `slab_points` of `grid`, before anything is allocated
   // (the preflight's memory check, app/distributed_stages.cpp). An upper bound: tests/mpi check bytes() <=
@@ -78,11 +78,14 @@ class DistributedBemSolver {
   Grid grid_;
   MPI_Comm comm_;
   BemSolverOptions options_;
-  DistributedHalfSpace operator_;
+  Slab slab_;
+  std::unique_ptr<DistributedHalfSpace> operator_;  // the PK solvers' (active_set has its own)
   Index local_points_;
   std::unique_ptr<DistributedConvolution> preconditioner_;  // null: plain Polonsky-Keer
   std::unique_ptr<DistributedActiveSet> active_set_;        // the active-set method instead of PK's
+  // h_ and g_ (G p - h) are the PK solvers' only: active_set keeps the heights and G p (active_set_'s).
   std::vector<double> h_, g_, t_, u_, z_, q_[2];
+  bool unloaded_ = false;  // the last load was 0 (no contact, G p = 0)
   double s_[2] = {1, 1};
   int cur_ = 0;
   bool warm_ = false;

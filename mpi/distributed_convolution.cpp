@@ -24,14 +24,19 @@ Index shared_rows(Index start_a, Index count_a, Index start_b, Index count_b, In
 
 }  // namespace
 
-DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MPI_Comm comm, int threads)
+DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MPI_Comm comm, int threads,
+                                               const DistributedConvolution* share)
     : slab_(slab_of(grid, comm)),
       comm_(comm),
       padded_(padded),
       lx_(padded ? 2 * grid.nx : grid.nx),
-      ly_(padded ? 2 * grid.ny : grid.ny),
-      fft_(std::make_unique<DistributedRealFft2d>(lx_, ly_, comm, threads)),
-      multiplier_(static_cast<std::size_t>(fft_->spectrum_count() * ly_), 0.0) {
+      ly_(padded ? 2 * grid.ny : grid.ny) {
+  if (share && (share->padded_ != padded || share->lx_ != lx_ || share->ly_ != ly_ ||
+                share->slab_.nx != slab_.nx || share->slab_.ny != slab_.ny))
+    throw Error("mpi: a convolution can share the transform of one of the same grid and lattice only");
+  fft_ = share ? share->fft_ : std::make_shared<DistributedRealFft2d>(lx_, ly_, comm, threads);
+  buffers_ = share ? share->buffers_ : std::make_shared<Buffers>();
+  multiplier_.assign(static_cast<std::size_t>(fft_->spectrum_count() * ly_), 0.0);
   // Each stored column kx stands for +kx and -kx, except kx = 0 and the Nyquist column (even lx).
   for (Index c = 0; c < fft_->spectrum_count(); ++c) {
     const Index kx = fft_->spectrum_start() + c;
@@ -40,7 +45,7 @@ DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MP
   if (size_of(comm) == 1 && threads <= 1)
     alone_ = std::make_unique<Convolution<double>>(grid.nx, grid.ny, padded, 1);
   if (!padded) return;
-  padded_rows_.resize(static_cast<std::size_t>(std::max<Index>(slab_.points(), 1)));
+  buffers_->padded_rows.resize(static_cast<std::size_t>(std::max<Index>(slab_.points(), 1)));
   // The exchange plan: this rank's grid rows to the transform slabs that hold them. Both layouts are in rank
   // order, so what a rank sends (receives) is contiguous and in row order.
   const Index nx = grid.nx, ny = grid.ny;
@@ -59,7 +64,7 @@ DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MP
     sent += out * nx;
     received += in * nx;
   }
-  receive_buffer_.resize(static_cast<std::size_t>(std::max<Index>(received, 1)));
+  buffers_->receive.resize(static_cast<std::size_t>(std::max<Index>(received, 1)));
 }
 
 DistributedConvolution::~DistributedConvolution() = default;
@@ -104,19 +109,19 @@ void DistributedConvolution::apply(const Real* in, Real* out) {
   const Index ny = slab_.ny;
   for (Index r = 0; r < transform_slab.count; ++r)
     std::fill_n(fft_->real_row(r), lx_, 0.0);
-  MPI_Alltoallv(in, send_counts_.data(), send_offsets_.data(), MPI_DOUBLE, receive_buffer_.data(),
+  MPI_Alltoallv(in, send_counts_.data(), send_offsets_.data(), MPI_DOUBLE, buffers_->receive.data(),
                 receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, comm_);
   const Index rows = shared_rows(0, ny, transform_slab.start, transform_slab.count, ny);
   for (Index r = 0; r < rows; ++r)
-    std::copy_n(receive_buffer_.data() + r * nx, nx, fft_->real_row(r));
+    std::copy_n(buffers_->receive.data() + r * nx, nx, fft_->real_row(r));
   fft_->forward();
   Complex* spectrum = fft_->spectrum();
   for (std::size_t i = 0; i < multiplier_.size(); ++i)
     spectrum[i] *= multiplier_[i];
   fft_->backward();
   for (Index r = 0; r < rows; ++r)
-    std::copy_n(fft_->real_row(r), nx, receive_buffer_.data() + r * nx);
-  MPI_Alltoallv(receive_buffer_.data(), receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, out,
+    std::copy_n(fft_->real_row(r), nx, buffers_->receive.data() + r * nx);
+  MPI_Alltoallv(buffers_->receive.data(), receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, out,
                 send_counts_.data(), send_offsets_.data(), MPI_DOUBLE, comm_);
 }
 
@@ -147,14 +152,15 @@ void DistributedConvolution::apply(const RowProducer& produce, const RowConsumer
     // The transform's slab cleared (the last inverse wrote all of it: that is the zero padding), then the
     // grid rows it owns arrive from their ranks.
     for (Index r = 0; r < slab_.count; ++r)
-      produce(r, padded_rows_.data() + r * nx);
+      produce(r, buffers_->padded_rows.data() + r * nx);
     for (Index r = 0; r < transform_slab.count; ++r)
       std::fill_n(fft_->real_row(r), lx_, 0.0);
-    MPI_Alltoallv(padded_rows_.data(), send_counts_.data(), send_offsets_.data(), MPI_DOUBLE,
-                  receive_buffer_.data(), receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, comm_);
+    MPI_Alltoallv(buffers_->padded_rows.data(), send_counts_.data(), send_offsets_.data(), MPI_DOUBLE,
+                  buffers_->receive.data(), receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE,
+                  comm_);
     const Index rows = shared_rows(0, ny, transform_slab.start, transform_slab.count, ny);
     for (Index r = 0; r < rows; ++r)
-      std::copy_n(receive_buffer_.data() + r * nx, nx, fft_->real_row(r));
+      std::copy_n(buffers_->receive.data() + r * nx, nx, fft_->real_row(r));
   }
   fft_->forward();
   Complex* spectrum = fft_->spectrum();
@@ -183,12 +189,12 @@ void DistributedConvolution::apply(const RowProducer& produce, const RowConsumer
   } else {
     const Index rows = shared_rows(0, ny, transform_slab.start, transform_slab.count, ny);
     for (Index r = 0; r < rows; ++r)
-      std::copy_n(fft_->real_row(r), nx, receive_buffer_.data() + r * nx);
+      std::copy_n(fft_->real_row(r), nx, buffers_->receive.data() + r * nx);
     // The reverse exchange: what was received goes back where it came from.
-    MPI_Alltoallv(receive_buffer_.data(), receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE,
-                  padded_rows_.data(), send_counts_.data(), send_offsets_.data(), MPI_DOUBLE, comm_);
+    MPI_Alltoallv(buffers_->receive.data(), receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE,
+                  buffers_->padded_rows.data(), send_counts_.data(), send_offsets_.data(), MPI_DOUBLE, comm_);
     for (Index r = 0; r < slab_.count; ++r)
-      consume(r, padded_rows_.data() + r * nx);
+      consume(r, buffers_->padded_rows.data() + r * nx);
   }
 }
 

@@ -22,8 +22,11 @@ namespace contactbench::mpi {
 
 class DistributedConvolution {
  public:
-  // Collective; the multiplier is zero until set.
-  DistributedConvolution(const Grid& grid, bool padded, MPI_Comm comm, int threads = 1);
+  // Collective; the multiplier is zero until set. `share`: another convolution of the same grid and lattice
+  // whose transform and exchange buffers this one uses too (a convolution's transform is scratch between
+  // two applications, so two that never run at once need one: docs/mpi.md "Memory a point").
+  DistributedConvolution(const Grid& grid, bool padded, MPI_Comm comm, int threads = 1,
+                         const DistributedConvolution* share = nullptr);
   ~DistributedConvolution();
 
   const Slab& slab() const { return slab_; }  // of the grid: the input's and output's layout
@@ -39,10 +42,14 @@ class DistributedConvolution {
   // G(0): the output at a point of a unit input at that point alone, the sum of M over the full lattice.
   double self_response() const { return self_response_; }
 
-  // Bytes this rank holds for the convolution: the transform's slab, the multiplier, the exchange buffer.
+  // Bytes this rank holds for the convolution: the transform's slab, the multiplier, the exchange buffers.
   std::size_t bytes() const {
-    return fft_->bytes() + sizeof(double) * (multiplier_.capacity() + receive_buffer_.capacity() +
-                                             padded_rows_.capacity() + column_weight_.capacity());
+    return own_bytes() + fft_->bytes() +
+           sizeof(double) * (buffers_->receive.capacity() + buffers_->padded_rows.capacity());
+  }
+  // The same without what it may share with another (the transform and the exchange buffers).
+  std::size_t own_bytes() const {
+    return sizeof(double) * (multiplier_.capacity() + column_weight_.capacity());
   }
 
   // out = conv(in) on this rank's slab (count x nx, row-major); in and out may be the same array. Collective.
@@ -63,19 +70,23 @@ class DistributedConvolution {
   MPI_Comm comm_;
   bool padded_;
   Index lx_, ly_;
-  std::unique_ptr<DistributedRealFft2d> fft_;
+  std::shared_ptr<DistributedRealFft2d> fft_;  // shared with another convolution or not
   std::vector<double> multiplier_;
   double self_response_ = 0;
   // Padded only: how the grid's rows travel to the transform's slabs (counts, offsets in values), and the
   // transform slab's grid rows in row order.
   std::vector<int> send_counts_, send_offsets_, receive_counts_, receive_offsets_;
-  std::vector<double> receive_buffer_;
+  // Padded only: the rows received (receive) and this rank's grid rows, produced or to be consumed
+  // (padded_rows); shared with the transform.
+  struct Buffers {
+    std::vector<double> receive, padded_rows;
+  };
+  std::shared_ptr<Buffers> buffers_;
   std::vector<double> column_weight_;  // per spectral column: 1 or 2 (its Hermitian partner counted)
   // One rank on one thread: the serial engine (bem/convolution.hpp: rows, then columns a block at a time in
   // cache with the multiply between, no transpose), the same multiplier; FFTW-MPI's plan with its local
   // transposes then only makes the multiplier.
   std::unique_ptr<Convolution<double>> alone_;
-  std::vector<double> padded_rows_;  // padded only: this rank's grid rows, produced or to be consumed
 };
 
 }  // namespace contactbench::mpi

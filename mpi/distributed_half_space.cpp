@@ -86,12 +86,12 @@ std::unique_ptr<DistributedConvolution> make_distributed_preconditioner(const Gr
   return convolution;
 }
 
-std::unique_ptr<DistributedConvolution> make_distributed_unit_preconditioner(const Grid& grid, MPI_Comm comm,
-                                                                             int threads) {
+std::unique_ptr<DistributedConvolution> make_distributed_unit_preconditioner(
+    const Grid& grid, MPI_Comm comm, int threads, const DistributedConvolution* share) {
   validate(grid, "distributed filter grid");
   const bool padded = !grid.periodic;
   const Grid lattice_grid = filter_lattice(grid);
-  auto convolution = std::make_unique<DistributedConvolution>(grid, padded, comm, threads);
+  auto convolution = std::make_unique<DistributedConvolution>(grid, padded, comm, threads, share);
   // |q| / max |q| with the pair's normalisation: the serial filter's arithmetic
   // (bem/fourier_preconditioner.cpp, (1/2)|q| / (points) first, then divided by its peak times the lattice's
   // points).

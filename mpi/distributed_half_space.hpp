@@ -27,6 +27,8 @@ class DistributedHalfSpace {
   double self_response() const { return convolution_->self_response(); }
 
   std::size_t bytes() const { return convolution_->bytes(); }
+  // The convolution, for another to share its transform (make_distributed_unit_preconditioner).
+  const DistributedConvolution& convolution() const { return *convolution_; }
 
   // displacement = G pressure on this rank's slab (slab().count x nx, row-major); the arrays may be the same.
   // Collective.
@@ -49,8 +51,10 @@ std::unique_ptr<DistributedConvolution> make_distributed_preconditioner(const Gr
                                                                         MPI_Comm comm, int threads = 1);
 
 // The same filter scaled to a largest value of 1, as bem's make_unit_fourier_preconditioner (the same
-// multiplier values): the active-set method's filter (mpi/distributed_active_set.hpp). Collective.
-std::unique_ptr<DistributedConvolution> make_distributed_unit_preconditioner(const Grid& grid, MPI_Comm comm,
-                                                                             int threads = 1);
+// multiplier values): the active-set method's filter (mpi/distributed_active_set.hpp). `share`: a convolution
+// of the same lattice (the operator's, when the grid is periodic or both are padded) whose transform it uses.
+// Collective.
+std::unique_ptr<DistributedConvolution> make_distributed_unit_preconditioner(
+    const Grid& grid, MPI_Comm comm, int threads = 1, const DistributedConvolution* share = nullptr);
 
 }  // namespace contactbench::mpi

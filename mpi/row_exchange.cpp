@@ -101,8 +101,18 @@ void RowExchange::exchange(const double* mine) {
                 receive_buffer_.data(), receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, comm_);
 }
 
+void RowExchange::exchange(const std::function<void(Index, double*)>& fill) {
+  mine_ = nullptr;
+  const Index nx = slab_.nx;
+  for (std::size_t i = 0; i < send_rows_.size(); ++i)
+    fill(send_rows_[i], send_buffer_.data() + static_cast<Index>(i) * nx);
+  MPI_Alltoallv(send_buffer_.data(), send_counts_.data(), send_offsets_.data(), MPI_DOUBLE,
+                receive_buffer_.data(), receive_counts_.data(), receive_offsets_.data(), MPI_DOUBLE, comm_);
+}
+
 const double* RowExchange::row(Index y) const {
-  if (y >= slab_.start && y < slab_.start + slab_.count) return mine_ + (y - slab_.start) * slab_.nx;
+  if (y >= slab_.start && y < slab_.start + slab_.count)
+    return mine_ ? mine_ + (y - slab_.start) * slab_.nx : nullptr;
   const Index at = received_at_[static_cast<std::size_t>(y)];
   return at < 0 ? nullptr : receive_buffer_.data() + at * slab_.nx;
 }

@@ -31,6 +31,9 @@ class RowExchange {
   // Moves the needed rows: `mine` is this rank's slab (count x nx, row-major), which row() then also reads
   // (it must stay alive and unchanged while row() is used). Collective.
   void exchange(const double* mine);
+  // The same with the rows others need made by fill(local_row, out) (nx values each) rather than read from a
+  // stored slab; row() then gives received rows only (nullptr for this rank's own). Collective.
+  void exchange(const std::function<void(Index, double*)>& fill);
   // Global row y: from this rank's slab or received; nullptr when it is neither.
   const double* row(Index y) const;
 
