@@ -454,14 +454,15 @@ class DistributedRunner final : public StageRunner {
            " (docs/mpi.md)";
   }
 
-  std::optional<ResidentSurface> make_resident_surface(const GeneratedSurfaceSpec& spec, int) const override {
+  std::optional<ResidentSurface> make_resident_surface(const GeneratedSurfaceSpec& spec,
+                                                       int threads) const override {
     announce(Job::surface);
     ResidentSurface surface = surface_job(&spec);
-    const Grid grid = surface.grid;
-    surface.gather = [grid] {
-      announce(Job::gather_surface);
-      return Surface(grid, gather_surface_job());
-    };
+    // The whole heights, when a method reads them, are made here by the serial generator (one process's
+    // surface bit for bit, centred as one process centres it): gathering the slabs on 3 ranks gave a
+    // surface whose spectrum differed (Persson's mean gap 0.8 % off, tests/mpi/test_mpi_cli.py), a cause
+    // not found yet (docs/mpi.md "Not done yet").
+    surface.gather = [spec, threads] { return make_surface(SurfaceSpec{spec}, threads); };
     surface.mean_gaps = [](const std::vector<Real>& levels) {
       announce(Job::mean_gaps);
       return mean_gaps_job(levels);
