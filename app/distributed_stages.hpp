@@ -1,8 +1,10 @@
 // The command line as several MPI ranks (mpirun -np K contactbench ..., docs/mpi.md): rank 0 runs the command
 // as one process would (reads the inputs, runs the surface, moments and theories, writes every output), and
 // the other ranks serve its distributed stages: the BEM solves and the sweep run on slabs of the grid across
-// all ranks (contactbench::mpi). Rank 0 sends each stage's parameters and scatters the surface; the results
-// come back to rank 0, so the outputs are the files a serial run writes. Stages with no distributed version
+// all ranks (contactbench::mpi). Rank 0 sends each stage's parameters and scatters the surface, or, for a
+// generated surface, every rank generates its own slab and keeps it for the stages (no rank holds it whole
+// unless a method reads the whole heights); the results come back to rank 0, so the outputs are the files a
+// serial run writes. Stages with no distributed version
 // are refused before any work, never run K times.
 //
 // Built only with CB_WITH_MPI (app/CMakeLists.txt); the program's serial path never calls it.

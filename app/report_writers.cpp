@@ -206,6 +206,8 @@ void write_summary_json(std::ostream& out, const SceneReport& report, const Comp
     JsonObject distributed;
     distributed.add("ranks", static_cast<long long>(report.ranks));
     distributed.add("bem_bytes_per_rank", static_cast<long long>(report.bytes_per_rank));
+    // The scene's whole heights on rank 0: 0 when a generated surface stayed on the slabs (docs/mpi.md).
+    distributed.add("rank0_surface_bytes", static_cast<long long>(report.root_surface_bytes));
     root.add("distributed", std::move(distributed));
   }
   std::vector<JsonObject> stages;

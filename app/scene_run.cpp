@@ -4,6 +4,7 @@
 #include <chrono>
 #include <optional>
 #include <sstream>
+#include <variant>
 
 #include "contactbench/app/line_scan_surface.hpp"
 #include "contactbench/app/problems.hpp"
@@ -73,29 +74,38 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
   report.scene = scene;
   report.threads = options.threads;
 
-  // The inputs every preflight reads: the surface (heights from the mean plane) and its moments.
-  std::optional<Surface> made;
+  // The inputs every preflight reads: the surface (heights from the mean plane) and its moments. Run as
+  // several ranks, a generated surface is made on the ranks' slabs, never whole here (app/scene_surface.hpp).
+  const StageRunner& runner = options.runner ? *options.runner : serial_runner();
+  std::optional<SceneSurface> made;
   std::optional<LineScanSurface> line_scan;
   run_stage(report, observer, "surface", [&] {
     if (is_line_scan(scene.surface)) {
       line_scan = read_line_scan_surface(scene.surface);
-      made = line_scan->profile;
+      made.emplace(line_scan->profile);
       report.line_scan = describe(*line_scan);
-    } else {
-      made = make_surface(scene.surface, options.threads);
+      return;
     }
+    if (const auto* generated = std::get_if<GeneratedSurfaceSpec>(&scene.surface.source);
+        generated && generated->refine == 0)  // the refinement is serial (docs/mpi.md)
+      if (auto resident = runner.make_resident_surface(*generated, options.threads)) {
+        made.emplace(std::move(*resident));
+        return;
+      }
+    made.emplace(make_surface(scene.surface, options.threads));
   });
-  const Surface& surface = *made;
+  const SceneSurface& surface = *made;
   report.grid = surface.grid();
   const ScenePlan plan = plan_scene(scene, surface.grid());
   double moments_seconds = 0;
   if (plan.moments)
     moments_seconds = run_stage(report, observer, "moments", [&] {
-      report.moments = line_scan ? line_scan->moments : spectral_moments(surface, options.threads);
+      report.moments = line_scan                    ? line_scan->moments
+                       : surface.resident_moments() ? *surface.resident_moments()
+                                                    : spectral_moments(surface.whole(), options.threads);
     });
 
   // Every preflight, before any stage: one SceneError lists every problem of every method.
-  const StageRunner& runner = options.runner ? *options.runner : serial_runner();
   Problems problems(origin_of(scene));
   check_effects(scene, problems);
   for (const MethodSpec& m : scene.methods) {
@@ -177,6 +187,7 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
     if (inputs.bem) result.seconds += inputs.bem->seconds;
     report.methods.push_back(std::move(result));
   }
+  report.root_surface_bytes = surface.whole_bytes();
   report.seconds = seconds_since(run_start);
   return report;
 }

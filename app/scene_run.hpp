@@ -54,6 +54,9 @@ struct SceneReport {
   // memory one rank held for a BEM solve [bytes] (0 when none ran distributed).
   int ranks = 1;
   std::size_t bytes_per_rank = 0;
+  // Bytes of the scene's whole heights this process held (0 when they stayed on the ranks' slabs,
+  // app/scene_surface.hpp).
+  std::size_t root_surface_bytes = 0;
   double seconds = 0;  // the whole run
   const std::vector<Real>& loads() const { return scene.loads; }
 };

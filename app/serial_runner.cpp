@@ -10,6 +10,7 @@
 #include "contactbench/app/stage_runner.hpp"
 #include "contactbench/app/stages.hpp"
 #include "contactbench/bem/contact_stiffness.hpp"
+#include "contactbench/core/error.hpp"
 #include "contactbench/core/labelling.hpp"
 #include "contactbench/core/topography_io.hpp"
 
@@ -20,13 +21,20 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 class SerialRunner final : public StageRunner {
+  // One process makes no resident surface (make_resident_surface), so every stage's surface is whole here.
+  static const Surface& whole(const StageSurface& surface) {
+    if (!surface.whole) throw Error("internal: a stage of one process was given no heights");
+    return *surface.whole;
+  }
+
  public:
   int ranks() const override { return 1; }
   std::string bem_refusal(const BemStage&) const override { return ""; }
 
-  SolvedLoads solve_loads(const BemStage& stage, const Surface& solved, Real estar,
+  SolvedLoads solve_loads(const BemStage& stage, const StageSurface& given, Real estar,
                           const std::vector<Real>& mean_pressures, const std::set<int>& connectivities,
                           const std::string& fields, const StageContext& context) const override {
+    const Surface& solved = whole(given);
     const auto start = Clock::now();
     const RunObserver quiet;
     const RunObserver& observer = context.observer ? *context.observer : quiet;
@@ -120,9 +128,9 @@ class SerialRunner final : public StageRunner {
     return done;
   }
 
-  SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topology& topology,
+  SweepCurve sweep(const StageSurface& surface, const SweepLevels& levels, const Topology& topology,
                    int threads) const override {
-    return contactbench::sweep(surface, levels, topology, threads);
+    return contactbench::sweep(whole(surface), levels, topology, threads);
   }
 };
 

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "contactbench/app/distributions_csv.hpp"
+#include "contactbench/app/scene_surface.hpp"
+#include "contactbench/app/surface_source.hpp"
 #include "contactbench/bem/adhesive_path.hpp"
 #include "contactbench/bem/adhesive_solver.hpp"
 #include "contactbench/bem/bem_solver.hpp"
@@ -38,6 +40,16 @@ struct SolvedLoads {
   std::size_t bytes_per_rank = 0;  // the largest memory one rank held; 0 when solved by one process
 };
 
+// The surface a stage solves or sweeps: whole in this process, or the scene's surface resident on the ranks'
+// slabs (SceneSurface::resident), of which this process has the grid only.
+struct StageSurface {
+  Grid grid;                       // as solved: its periodicity the stage's boundary
+  const Surface* whole = nullptr;  // null: the resident slabs (a distributed runner's only)
+  // Bytes of whole-surface heights this process holds while the stage runs (the scene's, and the stage's
+  // refined or re-flagged copy): what a distributed runner adds to rank 0's memory.
+  std::size_t root_bytes = 0;
+};
+
 class StageRunner {
  public:
   virtual ~StageRunner() = default;
@@ -49,21 +61,28 @@ class StageRunner {
   // The memory this machine needs for one solve of `solver` on `grid` when the runner spreads it over
   // several processes (every rank on this machine counted), with a few words on how it is spread for the
   // preflight's message; nothing when the solve is this process's alone (the method's own estimate,
-  // app/methods/bem_method.cpp).
+  // app/methods/bem_method.cpp). `root_bytes`: what rank 0 holds whole beside its slab (the surface's
+  // heights unless they stay on the slabs, fields it gathers).
   struct SpreadMemory {
     std::uintmax_t bytes = 0;
     std::string how;  // e.g. "2 ranks, 2 on this machine, about 1.2 GiB each and 256 MiB more on rank 0, ..."
   };
-  virtual std::optional<SpreadMemory> bem_memory(const BemSolverOptions&, const Grid&) const {
+  virtual std::optional<SpreadMemory> bem_memory(const BemSolverOptions&, const Grid&,
+                                                 std::uintmax_t /*root_bytes*/) const {
+    return std::nullopt;
+  }
+  // The scene's generated surface made slab by slab where the stages run, reduced to what this process
+  // needs (app/scene_surface.hpp); nothing when the runner makes it whole here (one process).
+  virtual std::optional<ResidentSurface> make_resident_surface(const GeneratedSurfaceSpec&, int) const {
     return std::nullopt;
   }
   // Every load of `mean_pressures` [Pa] (ascending) on the grid of `solved`, warm-started in order; with a
   // non-empty `fields` prefix the pressure and gap of each load written as it is solved (app/stages.hpp).
-  virtual SolvedLoads solve_loads(const BemStage& stage, const Surface& solved, Real estar,
+  virtual SolvedLoads solve_loads(const BemStage& stage, const StageSurface& solved, Real estar,
                                   const std::vector<Real>& mean_pressures,
                                   const std::set<int>& connectivities, const std::string& fields,
                                   const StageContext& context) const = 0;
-  virtual SweepCurve sweep(const Surface& surface, const SweepLevels& levels, const Topology& topology,
+  virtual SweepCurve sweep(const StageSurface& surface, const SweepLevels& levels, const Topology& topology,
                            int threads) const = 0;
 };
 

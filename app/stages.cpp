@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <optional>
 #include <sstream>
 
@@ -31,6 +32,13 @@ std::string describe(const SweepLevels& levels) {
       return "the paper's " + std::to_string(levels.count) + " levels";
   }
   return "";
+}
+
+std::size_t bytes_of(const Surface& surface) {
+  return static_cast<std::size_t>(surface.heights().size()) * sizeof(Real);
+}
+std::size_t bytes_of(const std::optional<Surface>& surface) {
+  return surface ? bytes_of(*surface) : 0;
 }
 
 }  // namespace
@@ -112,33 +120,51 @@ bool BemStage::operator==(const BemStage& other) const {
          same_settings(bem_settings(), SettingScope::solve, settings, other.settings);
 }
 
-SweepProducts run_sweep_stage(const SweepStage& stage, const Surface& surface, const StageContext& context) {
+SweepProducts run_sweep_stage(const SweepStage& stage, const SceneSurface& surface,
+                              const StageContext& context) {
   const auto start = Clock::now();
   SweepProducts products;
   // The same surface on a finer grid (docs/theory.md section 2): the pixel effect of the cut's area and
   // spot count shrinks, the surface does not change (docs/theory.md section 8).
   std::optional<Surface> refined;
-  if (stage.refine > 0) refined = refine(surface, stage.refine, stage.refine, context.threads);
-  const Surface& swept = refined ? *refined : surface;
+  if (stage.refine > 0) refined = refine(surface.whole(), stage.refine, stage.refine, context.threads);
+  const std::size_t held = surface.whole_bytes() + bytes_of(refined);
+  const StageSurface swept = refined              ? StageSurface{refined->grid(), &*refined, held}
+                             : surface.resident() ? StageSurface{surface.grid(), nullptr, held}
+                                                  : StageSurface{surface.grid(), &surface.whole(), held};
   products.sweep = context.runner().sweep(swept, stage.levels, stage.topology, context.threads);
   products.model = plateau_model(products.sweep);
   products.seconds = seconds_since(start);
   return products;
 }
 
-BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real estar,
+BemProducts run_bem_stage(const BemStage& stage, const SceneSurface& scene_surface, Real estar,
                           const std::vector<Real>& mean_pressures, const std::set<int>& connectivities,
                           const StageContext& context) {
   const auto start = Clock::now();
   BemProducts products;
   const Index refined = stage.settings.refine;
-  Surface solved = refined > 0 ? refine(surface, refined, refined, context.threads) : surface;
-  const Index nx = solved.grid().nx, ny = solved.grid().ny;
-  if (solved.grid().periodic != stage.periodic) solved = solved.with_periodic(stage.periodic);
-  products.points = solved.grid().points();  // with boundary = "mirrored": the patch's, which is judged
+  // The resident slabs solve as they are: no whole copy here (docs/mpi.md).
+  const bool on_slabs = scene_surface.resident() && refined == 0 && !stage.settings.mirrored;
+  std::optional<Surface> solved;
+  Grid solved_grid = scene_surface.grid();
+  if (!on_slabs) {
+    const Surface& surface = scene_surface.whole();
+    solved = refined > 0 ? refine(surface, refined, refined, context.threads) : surface;
+    solved_grid = solved->grid();
+  }
+  const Index nx = solved_grid.nx, ny = solved_grid.ny;
+  if (solved_grid.periodic != stage.periodic) {
+    solved_grid.periodic = stage.periodic;
+    if (solved) solved = solved->with_periodic(stage.periodic);
+  }
+  products.points = solved_grid.points();  // with boundary = "mirrored": the patch's, which is judged
   // boundary = "mirrored" (preflight: non-periodic problems only): the solver sees the periodic even
   // extension; solve_loads hands back the solution and statistics on the original patch.
-  if (stage.settings.mirrored) solved = mirrored_surface(solved);
+  if (stage.settings.mirrored) {
+    solved = mirrored_surface(*solved);
+    solved_grid = solved->grid();
+  }
   products.periodic = stage.periodic;
   products.hardness = stage.hardness;
   products.adhesion = stage.adhesion;
@@ -155,7 +181,11 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
     fields = prefix.string();
   }
   SolvedLoads loads =
-      context.runner().solve_loads(stage, solved, estar, solved_pressures, connectivities, fields, context);
+      context.runner().solve_loads(stage,
+                                   StageSurface{.grid = solved_grid,
+                                                .whole = solved ? &*solved : nullptr,
+                                                .root_bytes = scene_surface.whole_bytes() + bytes_of(solved)},
+                                   estar, solved_pressures, connectivities, fields, context);
   products.solutions = std::move(loads.solutions);
   products.statistics = std::move(loads.statistics);
   products.adhesive = std::move(loads.adhesive);
@@ -166,6 +196,7 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
   if (stage.settings.extrapolate) {
     // The same surface on twice the points a side (the method's preflight refuses a non-periodic one):
     // refined from the scene's surface, not from the first grid (the same trigonometric interpolation).
+    const Surface& surface = scene_surface.whole();
     Surface fine = refine(surface, 2 * nx, 2 * ny, context.threads);
     if (fine.grid().periodic != stage.periodic) fine = fine.with_periodic(stage.periodic);
     products.fine_points = fine.grid().points();
@@ -174,8 +205,11 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
     fine_stage.stiffness = false;
     fine_stage.distributions.reset();  // the first grid's, as the mean gap
     fine_stage.approach_retract.reset();
-    SolvedLoads fine_loads =
-        context.runner().solve_loads(fine_stage, fine, estar, mean_pressures, connectivities, "", context);
+    SolvedLoads fine_loads = context.runner().solve_loads(
+        fine_stage,
+        StageSurface{
+            .grid = fine.grid(), .whole = &fine, .root_bytes = scene_surface.whole_bytes() + bytes_of(fine)},
+        estar, mean_pressures, connectivities, "", context);
     products.fine_solutions = std::move(fine_loads.solutions);
     products.fine_statistics = std::move(fine_loads.statistics);
     products.fine_adhesive = std::move(fine_loads.adhesive);
@@ -190,8 +224,12 @@ BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real es
                           ? surface
                           : refine(surface, products.third_nx, products.third_ny, context.threads);
       if (third.grid().periodic != stage.periodic) third = third.with_periodic(stage.periodic);
-      SolvedLoads third_loads =
-          context.runner().solve_loads(fine_stage, third, estar, mean_pressures, connectivities, "", context);
+      SolvedLoads third_loads = context.runner().solve_loads(
+          fine_stage,
+          StageSurface{.grid = third.grid(),
+                       .whole = &third,
+                       .root_bytes = scene_surface.whole_bytes() + bytes_of(third)},
+          estar, mean_pressures, connectivities, "", context);
       products.third_solutions = std::move(third_loads.solutions);
       products.third_statistics = std::move(third_loads.statistics);
       products.bytes_per_rank = std::max(products.bytes_per_rank, third_loads.bytes_per_rank);

@@ -14,6 +14,7 @@
 #include "contactbench/app/distributions_csv.hpp"
 #include "contactbench/app/methods/bem_settings.hpp"
 #include "contactbench/app/run_observer.hpp"
+#include "contactbench/app/scene_surface.hpp"
 #include "contactbench/bem/adhesive_path.hpp"
 #include "contactbench/bem/adhesive_solver.hpp"
 #include "contactbench/bem/bem_solver.hpp"
@@ -113,10 +114,13 @@ struct StageContext {
 // gap.
 std::string field_path(const std::string& prefix, std::size_t k, const char* what);
 
-SweepProducts run_sweep_stage(const SweepStage& stage, const Surface& surface, const StageContext& context);
+// A stage on the scene's surface as it is (no refinement, no mirror) takes a resident surface's slabs where
+// they are; any other gathers it whole first (SceneSurface::whole).
+SweepProducts run_sweep_stage(const SweepStage& stage, const SceneSurface& surface,
+                              const StageContext& context);
 
 // `mean_pressures` [Pa] ascending; `connectivities` the spot counts the methods sharing the stage ask for.
-BemProducts run_bem_stage(const BemStage& stage, const Surface& surface, Real estar,
+BemProducts run_bem_stage(const BemStage& stage, const SceneSurface& surface, Real estar,
                           const std::vector<Real>& mean_pressures, const std::set<int>& connectivities,
                           const StageContext& context);
 

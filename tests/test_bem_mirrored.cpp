@@ -62,7 +62,8 @@ TEST(BemMirrored, IsThePeriodicSolveOfTheEvenExtensionJudgedOnThePatch) {
   const ContactSolution& truth = direct.solve(load);
   ASSERT_TRUE(truth.converged);
 
-  const BemProducts products = run_bem_stage(mirrored_stage(true), patch, kModulus, {load}, {4}, {});
+  const BemProducts products =
+      run_bem_stage(mirrored_stage(true), SceneSurface(patch), kModulus, {load}, {4}, {});
   ASSERT_EQ(products.solutions.size(), 1u);
   EXPECT_TRUE(products.solutions[0].converged);
   EXPECT_EQ(products.points, n * n);  // the patch is what is judged
@@ -97,8 +98,10 @@ TEST(BemMirrored, FlatPatchInFullContactHasUniformPressureWithoutTheEdgePunch) {
   const Surface flat(Grid{.nx = n, .ny = n, .lx = n * pixel, .ly = n * pixel, .periodic = false},
                      HeightMap::Zero(n, n));
   const Real load = 0.01 * kModulus;
-  const BemProducts mirrored = run_bem_stage(mirrored_stage(true), flat, kModulus, {load}, {4}, {});
-  const BemProducts as_is = run_bem_stage(mirrored_stage(false), flat, kModulus, {load}, {4}, {});
+  const BemProducts mirrored =
+      run_bem_stage(mirrored_stage(true), SceneSurface(flat), kModulus, {load}, {4}, {});
+  const BemProducts as_is =
+      run_bem_stage(mirrored_stage(false), SceneSurface(flat), kModulus, {load}, {4}, {});
   const ContactStatistics& m = mirrored.statistics.at(4)[0];
   const ContactStatistics& a = as_is.statistics.at(4)[0];
   EXPECT_EQ(m.area_fraction, 1.0);

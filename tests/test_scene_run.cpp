@@ -503,8 +503,11 @@ TEST(SceneRun, ABemLoadConvergedOnlyWhenBothOfItsSolvesDid) {
     products.fine_statistics[4].push_back({.area_fraction = 0.018, .area_fraction_corrected = 0.015});
   }
   const SpectralMoments moments{};  // the BEM reads none
-  const MethodCurve curve = scene.methods[0].method->evaluate(
-      {.scene = scene, .surface = surface, .moments = moments, .sweep = nullptr, .bem = &products});
+  const MethodCurve curve = scene.methods[0].method->evaluate({.scene = scene,
+                                                               .surface = SceneSurface(surface),
+                                                               .moments = moments,
+                                                               .sweep = nullptr,
+                                                               .bem = &products});
   EXPECT_EQ(curve.converged, (std::vector<bool>{true, false}));
   EXPECT_EQ(unconverged_loads(curve), (std::vector<std::size_t>{1}));
   for (const auto& [name, values] : curve.columns)

@@ -465,10 +465,21 @@ class BemMethod final : public Method {
         "a solve that fits: fewer points (refine), extrapolate = false, boundary = \"as_is\" or precision = "
         "\"single\"";
     // Spread over MPI ranks, the runner says what the ranks on this machine hold together.
+    // What rank 0 holds whole beside its slab under mpiexec (docs/mpi.md): the scene's heights and the
+    // stage's copy of them, unless the surface stays on the ranks' slabs and the stage solves it as it is;
+    // the pressure and gap it gathers for `fields` or the distributions.
+    const bool on_slabs =
+        check.surface.resident() && settings_.refine == 0 && !settings_.extrapolate && !settings_.mirrored;
+    const auto scene_points = static_cast<std::uintmax_t>(grid.points());
+    std::uintmax_t root_bytes =
+        on_slabs ? 0 : saturating_sum(saturating_product(scene_points, 8), saturating_product(points, 8));
+    if (!settings_.fields.empty() || check.scene.distributions)
+      root_bytes = saturating_sum(root_bytes, saturating_product(points, 16));
     if (check.runner)
       if (const auto spread = check.runner->bem_memory(
               settings_.solver,
-              Grid{.nx = side * nx, .ny = side * ny, .lx = grid.lx, .ly = grid.ly, .periodic = periodic})) {
+              Grid{.nx = side * nx, .ny = side * ny, .lx = grid.lx, .ly = grid.ly, .periodic = periodic},
+              root_bytes)) {
         bytes = spread->bytes;
         what += " (" + spread->how + ")";
         accepted = "a solve that fits: fewer points (refine), or the ranks spread over more machines";
@@ -486,8 +497,7 @@ class BemMethod final : public Method {
   // variation of order E* (height range / pixel) that double precision cannot resolve beside that mean: the
   // answer (area 1) is known but no solve reaches the tolerance, so it is refused with the reason.
   void check_magnitudes(const MethodCheck& check) const {
-    const HeightMap& h = check.surface.heights();
-    const Real range = h.size() ? h.maxCoeff() - h.minCoeff() : 0;
+    const Real range = check.surface.height_range();  // from the slabs' extremes when resident
     const Grid& grid = check.surface.grid();
     const Real estar = check.scene.material.estar;
     const std::string accepted = "quantities within 1e-100 to 1e100 of their SI unit";

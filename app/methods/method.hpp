@@ -20,6 +20,7 @@
 
 #include "contactbench/app/compared_quantity.hpp"
 #include "contactbench/app/scene.hpp"
+#include "contactbench/app/scene_surface.hpp"
 #include "contactbench/app/stages.hpp"
 #include "contactbench/core/load_area_curve.hpp"
 #include "contactbench/core/profile_statistics.hpp"
@@ -62,7 +63,7 @@ struct MethodNeeds {
 struct MethodCheck {
   const Scene& scene;
   const InterfaceSpec& interface;  // as this method runs it: the scene's less what it ignores
-  const Surface& surface;          // heights from the mean plane
+  const SceneSurface& surface;     // heights from the mean plane (whole on demand, app/scene_surface.hpp)
   const SpectralMoments& moments;
   std::string key;  // "methods.<label>"
   Problems& problems;
@@ -79,7 +80,7 @@ struct MethodCheck {
 // What evaluate sees: the inputs and the products of the stages this method declared.
 struct MethodInputs {
   const Scene& scene;
-  const Surface& surface;
+  const SceneSurface& surface;
   const SpectralMoments& moments;
   const SweepProducts* sweep = nullptr;  // when needs().sweep
   const BemProducts* bem = nullptr;      // when needs().bem

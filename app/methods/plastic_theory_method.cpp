@@ -25,7 +25,7 @@ MethodNeeds PlasticTheoryMethod::needs(const SceneContext&) const {
   return {.moments = true, .sweep = std::nullopt, .bem = std::nullopt, .bem_connectivity = 4};
 }
 
-PlasticTheoryInputs PlasticTheoryMethod::inputs(const Scene& scene, const Surface& surface) const {
+PlasticTheoryInputs PlasticTheoryMethod::inputs(const Scene& scene, const SceneSurface& surface) const {
   PlasticTheoryInputs in;
   if (hardness_) in.hardness_over_estar = *hardness_ / scene.material.estar;
   if (scene.material.poisson_ratio) in.poisson_ratio = *scene.material.poisson_ratio;

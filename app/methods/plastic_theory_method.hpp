@@ -20,7 +20,7 @@ struct PlasticTheoryInputs {
   Real hardness_over_estar = kNoHardness;  // H/E*
   Real poisson_ratio = 0.3;                // the scene's material.nu, 0.3 when it gives none
   Real nominal_area = 0;                   // A0 [m^2]
-  const Surface* surface = nullptr;        // heights from the mean plane, for theories that fit its spectrum
+  const SceneSurface* surface = nullptr;   // heights from the mean plane, for theories that fit its spectrum
 };
 
 class PlasticTheoryMethod : public Method {
@@ -44,7 +44,7 @@ class PlasticTheoryMethod : public Method {
   MethodCurve evaluate(const MethodInputs& inputs) const override;
 
  private:
-  PlasticTheoryInputs inputs(const Scene& scene, const Surface& surface) const;
+  PlasticTheoryInputs inputs(const Scene& scene, const SceneSurface& surface) const;
 
   std::string name_, note_;
   Curve curve_;

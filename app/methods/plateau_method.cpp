@@ -86,9 +86,7 @@ void PlateauMethod::complete(MethodCurve& curve, const MethodInputs& in) const {
   // The cut level's mean gap (docs/theory.md section 12.5): outside the spots the surface is undeformed,
   // on them the gap is 0, so u-bar = mean of (z - h)+ over the scene's surface, z the curve's separation.
   if (in.scene.compares(Quantity::mean_gap)) {
-    const HeightMap& h = in.surface.heights();
-    for (const Real z : curve.separation)
-      curve.mean_gap.push_back(std::isfinite(z) ? (z - h).max(0.0).mean() : std::nan(""));
+    curve.mean_gap = in.surface.mean_gaps(curve.separation);
   }
   if (refine_ > 0)
     curve.parameters +=

@@ -262,6 +262,58 @@ with tempfile.TemporaryDirectory() as work:
     if os.path.exists(os.path.join(work, "big")):
         failures.append(f"run {big_scene} on {ranks} ranks: wrote its output folder before the refusal")
 
+    # A generated surface (issue 39): each rank generates its own slab, the moments, the heights' extremes and
+    # the plateau model's mean gap are reduced over the slabs, and the BEM and the sweep take the slabs where
+    # they are, so rank 0 never holds the whole heights (summary.json: rank0_surface_bytes 0) and the curves
+    # equal one process's (the theories' areas and mean gaps to 1e-12: sums in another order). Persson's mean
+    # gap integrates the lattice spectrum, so with it rank 0 gathers the heights: the whole grid's 8 B a point.
+    generated = ('compare = ["area", "mean_gap"]\n[surface]\n'
+                 'generate = { sigma = 1e-6, hurst = 0.7, qr = 1e5, size = 1e-4, grid = 64, seed = 4 }\n'
+                 '[material]\nE = 100e9\nnu = 0.3\n[loads]\nvalues = [1e-3, 1e-2]\n[methods.bem]\n'
+                 '[methods.gw]\nmethod = "gw_mccool"\n[methods.plateau]\nmethod = "plateau"\n')
+    for name, extra, root_bytes in (("slabs", "", 0), ("gathered", '[methods.persson]\nmethod = "persson"\n',
+                                                         64 * 64 * 8)):
+        scene_path = os.path.join(work, f"generated_{name}.toml")
+        with open(scene_path, "w") as f:
+            f.write(f'name = "generated_{name}"\n' + generated + extra)
+        curves = []
+        for distributed in (False, True):
+            out = os.path.join(work, f"generated_{name}" + ("_mpi" if distributed else ""))
+            run(["run", scene_path, "--out", out, "--threads", "1", "--no-plots"], distributed)
+            try:
+                curves.append(rows(os.path.join(out, "curves.csv")))
+            except OSError as e:
+                failures.append(f"run {scene_path}: no curves.csv ({e})")
+        if len(curves) == 2:
+            bem = [[r for r in c if r["method"] == "bem"] for c in curves]
+            same_bem_rows(bem[1], bem[0], f"run with a generated surface ({name}) on {ranks} ranks")
+            theories = [[r for r in c if r["method"] != "bem"] for c in curves]
+            if len(theories[0]) != len(theories[1]) or not theories[0]:
+                failures.append(f"run with a generated surface ({name}) on {ranks} ranks: theory rows differ")
+            for d, s in zip(theories[1], theories[0]):
+                for key in ("area_fraction", "mean_gap"):
+                    if (d.get(key) or "nan") != (s.get(key) or "nan") and \
+                            not relative(d.get(key) or "nan", s.get(key) or "nan") <= 1e-12:
+                        failures.append(f"run with a generated surface ({name}) on {ranks} ranks: {s['method']} "
+                                        f"{key} {d.get(key)} against {s.get(key)}")
+        try:
+            with open(os.path.join(work, f"generated_{name}_mpi", "summary.json")) as f:
+                distributed_summary = json.load(f)["distributed"]
+            if distributed_summary.get("rank0_surface_bytes") != root_bytes:
+                failures.append(f"generated surface ({name}) on {ranks} ranks: rank 0 held "
+                                f"{distributed_summary.get('rank0_surface_bytes')} B of whole heights, expected "
+                                f"{root_bytes}")
+        except (OSError, KeyError, ValueError) as e:
+            failures.append(f"generated surface ({name}) on {ranks} ranks: no readable summary.json ({e})")
+    # A file surface is read whole by rank 0: the summary says so (64 x 50 points, 8 B each).
+    try:
+        with open(os.path.join(work, "run", "summary.json")) as f:
+            held = json.load(f)["distributed"].get("rank0_surface_bytes")
+        if held != 64 * 50 * 8:
+            failures.append(f"run of a file surface on {ranks} ranks: rank0_surface_bytes {held}, expected {64 * 50 * 8}")
+    except (OSError, KeyError, ValueError) as e:
+        failures.append(f"run of a file surface on {ranks} ranks: no readable summary.json ({e})")
+
     # The default wisdom file (the user's cache folder): rank 0's wisdom under mpiexec names FFTW-MPI's solvers,
     # which a process without FFTW-MPI refuses, so it is kept in a file of its own; one process and mpiexec in
     # turn never find their file damaged, and each reuses its own.
