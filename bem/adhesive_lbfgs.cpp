@@ -30,8 +30,7 @@ struct Pair {
 ExponentialLbfgs::ExponentialLbfgs(const Grid& grid, const HeightMap& heights, Real modulus,
                                    const AdhesionLaw& law, int threads)
     : grid_(grid), heights_(heights), law_(law) {
-  if (!grid.periodic)
-    throw Error("adhesive BEM: the projected L-BFGS solves the periodic problem only");
+  if (!grid.periodic) throw Error("adhesive BEM: the projected L-BFGS solves the periodic problem only");
   if (law.model != AdhesionModel::exponential)
     throw Error("adhesive BEM: the projected L-BFGS needs the exponential law");
   // (E*/2)|q| on the periodic grid: the exact inverse of the periodic half-space (both drop q = 0).

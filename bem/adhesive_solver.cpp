@@ -34,10 +34,11 @@ AdhesiveMethodRefusal adhesive_method_refusal(AdhesiveMethod method, AdhesionMod
                 " law's potential has a kink (its attraction is a step)",
             "the exponential law, or adhesive_solver = \"fixed_point\" or \"constrained_cg\""};
   if (!periodic)
-    return {"adhesive_solver = \"projected_lbfgs\" solves the periodic problem only (its elastic energy "
-            "needs the stiffness, the inverse of the half-space operator, which only the periodic one has "
-            "cheaply)",
-            "a periodic problem, or adhesive_solver = \"fixed_point\""};
+    return {
+        "adhesive_solver = \"projected_lbfgs\" solves the periodic problem only (its elastic energy "
+        "needs the stiffness, the inverse of the half-space operator, which only the periodic one has "
+        "cheaply)",
+        "a periodic problem, or adhesive_solver = \"fixed_point\""};
   return {};
 }
 

@@ -1,14 +1,13 @@
-// The exponential law's whole-surface minimisation (adhesive_solver = "projected_lbfgs", bem/adhesive_lbfgs.hpp,
-// docs/theory.md section 10.11) against the non-adhesive solve (w -> 0), the fixed point of section 10.3 on
-// the same grid, Maugis' Dugdale sphere of equal work and peak stress, and on a rough surface; and its
-// refusals.
+// The exponential law's whole-surface minimisation (adhesive_solver = "projected_lbfgs",
+// bem/adhesive_lbfgs.hpp, docs/theory.md section 10.11) against the non-adhesive solve (w -> 0), the fixed
+// point of section 10.3 on the same grid, Maugis' Dugdale sphere of equal work and peak stress, and on a
+// rough surface; and its refusals.
 //
 // The sphere: R = 1 mm, E* = 1 MPa, w = 50 mJ/m^2 (the calibration of issue 34) on a periodic window (the
 // method's problem) that holds the attraction: gaps at the window's edge are hundreds of ranges.
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "contact_shapes.hpp"
@@ -34,7 +33,9 @@ AdhesiveSolverOptions options(AdhesiveMethod method, Real tolerance) {
   return o;
 }
 
-Surface periodic_sphere(Index n, Real side) { return sphere(n, side / n, kRadius).with_periodic(true); }
+Surface periodic_sphere(Index n, Real side) {
+  return sphere(n, side / n, kRadius).with_periodic(true);
+}
 
 TEST(ProjectedLbfgs, RefusesWhatItCannotSolve) {
   auto message = [](const Surface& s, const AdhesionLaw& law) -> std::string {
@@ -66,10 +67,6 @@ TEST(ProjectedLbfgs, VanishingWorkGivesTheNonAdhesiveAnswer) {
   const Real load = 1e-3 * kModulus / 64;  // about 20 % of the window's width in contact
   const AdhesiveSolution& a = adhesive.solve(load);
   const ContactSolution& e = elastic.solve(load);
-  std::printf("w->0 load: contact %ld vs %ld, traction diff %g of %g, evaluations %ld\n",
-              static_cast<long>(a.contact_points), static_cast<long>(e.contact_points),
-              (a.traction - e.pressure).cwiseAbs().maxCoeff(), e.pressure.maxCoeff(),
-              static_cast<long>(a.iterations));
   ASSERT_TRUE(a.converged);
   EXPECT_EQ(a.contact_points, e.contact_points);
   EXPECT_LE((a.traction - e.pressure).cwiseAbs().maxCoeff(), 1e-6 * e.pressure.maxCoeff());
@@ -104,20 +101,39 @@ TEST(ProjectedLbfgs, SphereMatchesTheFixedPointAndMaugis) {
     SCOPED_TRACE("load " + std::to_string(load));
     const AdhesiveSolution& x = fixed.solve(load * scale.load / area);
     const AdhesiveSolution& y = whole.solve(load * scale.load / area);
-    const Real radius_x = std::sqrt(static_cast<Real>(x.contact_points) * dx * dx / M_PI) / scale.radius;
-    const Real radius_y = std::sqrt(static_cast<Real>(y.contact_points) * dx * dx / M_PI) / scale.radius;
-    const Real md = maugis_dugdale_radius_at_load(load, lambda);
-    std::printf(
-        "sphere load %g: fixed %ld pts gap %.9g pull %.9g it %ld (%ld) | whole %ld pts gap %.9g pull %.9g it %ld "
-        "steps %ld | radius %g %g md %g | U %.9g %.9g zone %g res %g %g\n",
-        load, static_cast<long>(x.contact_points), x.mean_gap, x.adhesive_pressure, static_cast<long>(x.iterations),
-        static_cast<long>(x.outer_iterations), static_cast<long>(y.contact_points), y.mean_gap,
-        y.adhesive_pressure, static_cast<long>(y.iterations), static_cast<long>(y.cg_iterations), radius_x,
-        radius_y, md, load_potential(fixed), load_potential(whole), y.zone_pixels, x.attraction_change,
-        y.attraction_change);
     ASSERT_TRUE(x.converged);
     ASSERT_TRUE(y.converged);
+    // The same equilibrium: measured the same contact points, mean gaps within 6e-7 and load potentials
+    // within 1e-9 relative. Both stop at a force imbalance of 1e-6 of the peak stress, which moves a gap by
+    // about 1e-6 ρ; allowed: the same contact set, and 1e-5 of the mean gap and of the potential.
+    EXPECT_EQ(y.contact_points, x.contact_points);
+    EXPECT_NEAR(y.mean_gap, x.mean_gap, 1e-5 * x.mean_gap);
+    EXPECT_NEAR(load_potential(whole), load_potential(fixed), 1e-5 * std::abs(load_potential(fixed)));
+    EXPECT_NEAR(y.mean_pressure, load * scale.load / area, 1e-9 * scale.load / area);
+    EXPECT_GT(y.zone_pixels, 5);  // resolved (measured 9-10 pixels)
+    // Against Maugis' Dugdale sphere: measured -1.5 %, -1.3 % and +0.1 % at P/(πRw) = 1, 0, -1, the law's own
+    // 0.5-0.8 % below (ContactMechanics, issue 34) and about 1 % of grid (the Dugdale law's 1.3 % at this
+    // resolution, tests/test_adhesive_bem.cpp); the issue's 3 % allowed.
+    const Real radius = std::sqrt(static_cast<Real>(y.contact_points) * dx * dx / M_PI) / scale.radius;
+    const Real md = maugis_dugdale_radius_at_load(load, lambda);
+    EXPECT_NEAR(radius, md, 0.03 * md);
   }
+  // The pull-off under load control: tensile loads in steps of 0.02 πRw, each warm from the last, down to the
+  // first that no state in contact holds; the pull-off is between the last held load and that one.
+  Real held = -1;
+  for (Real load = -1.6; load > -2.2; load -= 0.02) {
+    const AdhesiveSolution& y = whole.solve(load * scale.load / area);
+    if (!y.converged || y.contact_points == 0) break;
+    held = load;
+  }
+  // Measured: held at -1.70, not at -1.72: 6.2 % more adhesive than MD's -1.6007 (the fixed point's scan on
+  // 64^2, non-periodic, tests/test_adhesive_limits.cpp: -1.681, 5.0 %). The exponential law of equal work and
+  // peak stress is the more adhesive law (2-5 % in docs/theory.md 10.8, ContactMechanics 2-3 % at 256^2);
+  // this grid and window give a little more, reported as measured. Allowed: more adhesive than MD, and within
+  // 8 %.
+  const Real pull_off = maugis_dugdale_pull_off(lambda).load;
+  EXPECT_LT(held, pull_off);
+  EXPECT_NEAR(held, pull_off, 0.08 * std::abs(pull_off));
 }
 
 // (3) A rough surface at a resolved zone: the surface of scenes/adhesion/surface_A_soft_tabor_0_1.toml
@@ -134,16 +150,16 @@ TEST(ProjectedLbfgs, RoughSurfaceWhereTheZoneIsResolved) {
   AdhesiveBemSolver whole(s, modulus, law, options(AdhesiveMethod::projected_lbfgs, 1e-8), 2);
   const AdhesiveSolution& x = fixed.solve(1e-3 * modulus);
   const AdhesiveSolution& y = whole.solve(1e-3 * modulus);
-  std::printf(
-      "rough: fixed %ld pts %ld attr gap %.9g it %ld (%ld) %.3fs | whole %ld pts %ld attr gap %.9g it %ld steps "
-      "%ld %.3fs | U %.9g %.9g zone %g %g\n",
-      static_cast<long>(x.contact_points), static_cast<long>(x.attractive_points), x.mean_gap,
-      static_cast<long>(x.iterations), static_cast<long>(x.outer_iterations), x.seconds,
-      static_cast<long>(y.contact_points), static_cast<long>(y.attractive_points), y.mean_gap,
-      static_cast<long>(y.iterations), static_cast<long>(y.cg_iterations), y.seconds, load_potential(fixed),
-      load_potential(whole), x.zone_pixels, y.zone_pixels);
   ASSERT_TRUE(x.converged);
   ASSERT_TRUE(y.converged);
+  // Measured: the same 4312 contact and 12037 attractive points, the mean gaps within 2e-6 and the load
+  // potentials to 9 digits (the zone 3.5 pixels). Allowed as for the sphere: the same sets, 1e-5 of the mean
+  // gap and of the potential (a different equilibrium would move the counts by whole pixels).
+  EXPECT_GT(x.zone_pixels, 2);
+  EXPECT_EQ(y.contact_points, x.contact_points);
+  EXPECT_EQ(y.attractive_points, x.attractive_points);
+  EXPECT_NEAR(y.mean_gap, x.mean_gap, 1e-5 * x.mean_gap);
+  EXPECT_NEAR(load_potential(whole), load_potential(fixed), 1e-5 * std::abs(load_potential(fixed)));
 }
 
 }  // namespace
