@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "contactbench/bem/adhesive_constrained_cg.hpp"
+#include "contactbench/bem/adhesive_lbfgs.hpp"
 #include "contactbench/bem/half_space.hpp"
 #include "contactbench/bem/solvers/contact_solver.hpp"
 #include "contactbench/core/error.hpp"
@@ -25,6 +26,22 @@ constexpr Real kWholeSurfaceTolerance = 1e-3;
 
 }  // namespace
 
+AdhesiveMethodRefusal adhesive_method_refusal(AdhesiveMethod method, AdhesionModel model, bool periodic) {
+  if (method != AdhesiveMethod::projected_lbfgs) return {};
+  if (model != AdhesionModel::exponential)
+    return {"adhesive_solver = \"projected_lbfgs\" minimises an energy by its gradient, and the " +
+                std::string(adhesion_model_name(model)) +
+                " law's potential has a kink (its attraction is a step)",
+            "the exponential law, or adhesive_solver = \"fixed_point\" or \"constrained_cg\""};
+  if (!periodic)
+    return {
+        "adhesive_solver = \"projected_lbfgs\" solves the periodic problem only (its elastic energy "
+        "needs the stiffness, the inverse of the half-space operator, which only the periodic one has "
+        "cheaply)",
+        "a periodic problem, or adhesive_solver = \"fixed_point\""};
+  return {};
+}
+
 AdhesiveBemSolver::AdhesiveBemSolver(const Surface& surface, Real modulus, const AdhesionLaw& law,
                                      AdhesiveSolverOptions options, int threads)
     : surface_(surface.centred()), law_(law), options_(std::move(options)) {
@@ -38,6 +55,10 @@ AdhesiveBemSolver::AdhesiveBemSolver(const Surface& surface, Real modulus, const
         "attraction are not solved together); accepted: one of the two");
   if (contact.single_precision && contact.tolerance < kSinglePrecisionTolerance)
     throw Error("adhesive BEM: single precision needs a tolerance >= 1e-6");
+  if (const AdhesiveMethodRefusal refusal =
+          adhesive_method_refusal(options_.method, law_.model, surface_.grid().periodic);
+      !refusal.reason.empty())
+    throw Error("adhesive BEM: " + refusal.reason + "; accepted: " + refusal.accepted);
   engine_ = solver_entry(contact.solver).make(surface_, modulus, threads, contact.single_precision);
   engine_->set_between_iterations(contact.between_iterations);
   half_space_ = make_half_space(surface_.grid(), modulus, threads);
@@ -50,6 +71,8 @@ AdhesiveBemSolver::AdhesiveBemSolver(const Surface& surface, Real modulus, const
   half_space_->apply(unit, lift_);
   self_response_ = lift_(0, 0);
   lift_.setZero();
+  if (options_.method == AdhesiveMethod::projected_lbfgs)
+    whole_ = std::make_unique<ExponentialLbfgs>(surface_.grid(), h, modulus, law_, threads);
 }
 
 AdhesiveBemSolver::~AdhesiveBemSolver() = default;
@@ -119,7 +142,70 @@ Real AdhesiveBemSolver::update_attraction(const ContactSolution& contact) {
   return change;
 }
 
+const AdhesiveSolution& AdhesiveBemSolver::solve_whole(Control control, Real value) {
+  const auto start = std::chrono::steady_clock::now();
+  const BemSolverOptions& options = options_.contact;
+  const HeightMap& h = surface_.heights();
+  const bool load = control == Control::load;
+  AdhesiveSolution& s = solution_;
+  s = AdhesiveSolution{};
+  HeightMap gap;
+  if (warm_ && whole_gap_.size() == h.size()) {
+    gap = whole_gap_;
+  } else if (load && value > 0) {
+    // The fixed point's own first solve, so that both methods leave from the same state: the non-adhesive
+    // contact at the load.
+    engine_->forget();
+    engine_->set_heights(h);
+    const SolveOutcome o = engine_->solve_load(value, std::numeric_limits<Real>::infinity(),
+                                               options.tolerance, options.max_iterations, false);
+    ContactSolution contact;
+    engine_->write(contact);
+    gap = contact.gap;
+    s.iterations += o.iterations;
+    s.outer_iterations = 1;
+  } else {
+    // The rigid flat: touching the highest point (a tensile load), or at the separation (the solver's
+    // projection then holds the mean gap).
+    gap = load ? HeightMap(h.maxCoeff() - h) : HeightMap(value - h);
+  }
+  const LbfgsOutcome r =
+      whole_->solve(load, value, residual_bound(options.tolerance), options.max_iterations, gap);
+  s.iterations += r.evaluations;
+  s.cg_iterations = r.iterations;
+  s.separated = r.separated;
+  s.residual = r.residual;
+  s.attraction_change = r.residual;
+  s.traction = whole_->traction();
+  HeightMap attraction = gap.unaryExpr([&](Real g) { return law_.attraction(g); });
+  // The repulsive pressure: what holds a point at g = 0 against the traction and the attraction.
+  s.pressure = (gap == 0).select((s.traction + attraction).max(0), 0.0);
+  s.gap = gap;
+  s.separation = gap.mean();  // periodic: the separation is the mean gap
+  s.repulsive_pressure = s.pressure.mean();
+  s.adhesive_pressure = attraction.mean();
+  s.mean_pressure = whole_->mean_traction();
+  s.mean_gap = gap.mean();
+  ContactSolution contact;
+  contact.pressure = s.pressure;
+  contact.gap = gap;
+  describe(contact, attraction);
+  s.converged = r.converged && !r.separated;
+  warm_ = !s.separated;
+  whole_gap_ = gap;
+  s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!s.converged && !s.separated && options.warning) {
+    std::ostringstream text;
+    text << "adhesive BEM (projected_lbfgs) did not converge at " << (load ? "P/A0 = " : "separation = ")
+         << value << " after " << r.iterations << " steps (force imbalance " << r.residual
+         << " of the peak stress); the result is marked converged = false";
+    options.warning(text.str());
+  }
+  return s;
+}
+
 const AdhesiveSolution& AdhesiveBemSolver::solve_with(Control control, Real value) {
+  if (whole_) return solve_whole(control, value);
   const auto start = std::chrono::steady_clock::now();
   const BemSolverOptions& options = options_.contact;
   const HeightMap& h = surface_.heights();

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <string_view>
 
 #include "contactbench/bem/bem_solver.hpp"
@@ -27,6 +28,7 @@
 namespace contactbench {
 
 class ContactSolver;
+class ExponentialLbfgs;
 class HalfSpace;
 
 // What an adhesive solve adds to the contact solution of the same load (the scene's columns).
@@ -57,7 +59,9 @@ struct AdhesiveSolution {
   Real zone_pixels = 0;
   Index iterations = 0;        // of the contact solves, summed over the outer iterations
   Index outer_iterations = 0;  // contact solves made
-  Index cg_iterations = 0;     // constrained_cg: the steps of the whole-surface CG before them
+  // constrained_cg: the steps of the whole-surface CG before them; projected_lbfgs: its quasi-Newton steps
+  // (its energy evaluations, one FFT pair each, are in `iterations`, with the start's contact solve).
+  Index cg_iterations = 0;
   Real residual = 0;           // of the last contact solve (BemSolver::solution().residual)
   Real attraction_change = 0;  // the last outer change: points that changed side (Dugdale), max |Δa|/peak
   bool converged = false;
@@ -76,12 +80,30 @@ struct AdhesiveSolution {
 
 // How the adhesive problem is solved (docs/solvers.md "Adhesion"): the fixed point on the attraction around
 // the contact solver alone, or (Dugdale only) first one constrained CG on the whole surface with the zone
-// decided inside it (bem/adhesive_constrained_cg.hpp), whose state the fixed point then checks and settles.
-enum class AdhesiveMethod { fixed_point, constrained_cg };
+// decided inside it (bem/adhesive_constrained_cg.hpp), whose state the fixed point then checks and settles,
+// or (exponential law, periodic only) the total energy minimised over the gap by a projected L-BFGS
+// (bem/adhesive_lbfgs.hpp, docs/theory.md section 10.11).
+enum class AdhesiveMethod { fixed_point, constrained_cg, projected_lbfgs };
 
 inline std::string_view adhesive_method_name(AdhesiveMethod method) {
-  return method == AdhesiveMethod::fixed_point ? "fixed_point" : "constrained_cg";
+  switch (method) {
+    case AdhesiveMethod::fixed_point:
+      return "fixed_point";
+    case AdhesiveMethod::constrained_cg:
+      return "constrained_cg";
+    case AdhesiveMethod::projected_lbfgs:
+      return "projected_lbfgs";
+  }
+  return "fixed_point";
 }
+
+// Why `method` cannot solve this law on this grid (an empty reason: it can), and what is accepted instead:
+// the projected L-BFGS needs a smooth potential (the exponential law) and the periodic stiffness operator.
+// The words preflight (app/methods/bem_method.cpp) and the solver both use.
+struct AdhesiveMethodRefusal {
+  std::string reason, accepted;
+};
+AdhesiveMethodRefusal adhesive_method_refusal(AdhesiveMethod method, AdhesionModel model, bool periodic);
 
 struct AdhesiveSolverOptions {
   BemSolverOptions contact;  // of each contact solve (the solver, tolerance, precision)
@@ -120,6 +142,8 @@ class AdhesiveBemSolver {
  private:
   enum class Control { separation, load };
   const AdhesiveSolution& solve_with(Control control, Real value);
+  // projected_lbfgs: the whole problem as one minimisation (bem/adhesive_lbfgs.hpp).
+  const AdhesiveSolution& solve_whole(Control control, Real value);
   // a from the gap (and, for Dugdale, whether each point is in contact); returns the change (points that
   // changed side, or max |Δa| / peak) after relaxation.
   Real update_attraction(const ContactSolution& contact);
@@ -140,6 +164,8 @@ class AdhesiveBemSolver {
   Real relaxation_ = 1;  // exponential law: the fraction of the new attraction taken
   Real last_change_ = 0;
   bool warm_ = false;
+  std::unique_ptr<ExponentialLbfgs> whole_;  // projected_lbfgs only
+  HeightMap whole_gap_;                      // its last state, the next solve's start
   AdhesiveSolution solution_;
 };
 

@@ -362,11 +362,15 @@ def bem_adhesion(data):
                  "(bench/bench_bem_adhesion.cpp). Ratio: adhesive over non-adhesive time, median of the repetitions.")
     lines.append("")
     lines.append("With a method: segment, constrained_cg rows also give the whole-surface CG's steps (cg), each one "
-                 "convolution more than a step of the contact solver (bem/adhesive_constrained_cg.hpp).")
+                 "convolution more than a step of the contact solver (bem/adhesive_constrained_cg.hpp); "
+                 "projected_lbfgs rows give its quasi-Newton steps (cg) and, as iterations, its energy "
+                 "evaluations (one FFT pair each) with the start's non-adhesive solve (bem/adhesive_lbfgs.hpp). "
+                 "Residual: the force imbalance the adhesive solve stopped at, in units of the law's peak stress "
+                 "(both methods stop at 100 x the tolerance; rows recorded before it was a counter show -).")
     lines.append("")
     lines.append("| case | adhesive [s] | iterations (outer) | non-adhesive [s] | iterations | ratio | zone [px] "
-                 "| A/A0 adhesive / without | converged |")
-    lines.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+                 "| A/A0 adhesive / without | residual | converged |")
+    lines.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for name, row in sorted(median_rows(data).items(), key=lambda item: parse(item[0])[1].get("n", "")):
         lines.append(
             f"| {name.removeprefix('bem_adhesion/')} | {row['seconds']:.3g} | {row['iterations']:.0f} "
@@ -374,7 +378,9 @@ def bem_adhesion(data):
             f"{', cg ' + format(row['cg_iterations'], '.0f') if row.get('cg_iterations', 0) > 0 else ''})"
             f" | {row['elastic_seconds']:.3g} | {row['elastic_iterations']:.0f} "
             f"| {row['ratio']:.2f} | {row['zone_pixels']:.2g} | {row['area_fraction']:.3f} / "
-            f"{row['elastic_area_fraction']:.3f} | {'yes' if row['converged'] >= 1 else 'NO'} |")
+            f"{row['elastic_area_fraction']:.3f} | "
+            f"{format(row['residual'], '.2g') if 'residual' in row else '-'} | "
+            f"{'yes' if row['converged'] >= 1 else 'NO'} |")
     return lines
 
 

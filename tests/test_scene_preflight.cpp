@@ -113,6 +113,27 @@ TEST(Preflight, AdhesionIsRefusedWhereItIsNotModelled) {
   EXPECT_TRUE(has_problem(both, "interface.adhesion", "adhesion and a hardness together")) << all(both);
 }
 
+// The adhesive solver that minimises the exponential law's energy (docs/theory.md 10.11) is refused by name
+// for the Dugdale law (a kink in its potential) and for the non-periodic problem (no stiffness operator).
+TEST(Preflight, AnAdhesiveSolverThatCannotTakeTheLawIsRefusedByName) {
+  const Refusal dugdale =
+      refusal_of("name = \"sticky\"\n" + kSurface +
+                 "[interface]\nadhesion = { model = \"dugdale\", work = 0.05, stress = 1e6 }\n" +
+                 "[loads]\nvalues = [1e-3]\n[methods.bem]\nadhesive_solver = \"projected_lbfgs\"\n");
+  expect_nothing_but_the_inputs(dugdale);
+  ASSERT_EQ(dugdale.problems.size(), 1u) << all(dugdale);
+  EXPECT_TRUE(has_problem(dugdale, "methods.bem.adhesive_solver", "dugdale law's potential has a kink"))
+      << all(dugdale);
+  const Refusal edges =
+      refusal_of("name = \"sticky\"\n" + kSurface +
+                 "[interface]\nadhesion = { model = \"exponential\", work = 0.05, range = 1e-6 }\n" +
+                 "[loads]\nvalues = [1e-3]\n[methods.bem]\nadhesive_solver = \"projected_lbfgs\"\n"
+                 "periodic = false\n");
+  expect_nothing_but_the_inputs(edges);
+  ASSERT_EQ(edges.problems.size(), 1u) << all(edges);
+  EXPECT_TRUE(has_problem(edges, "methods.bem.adhesive_solver", "periodic problem only")) << all(edges);
+}
+
 TEST(Preflight, IgnoringAnEffectTheSceneLacksIsRefused) {
   const Refusal refusal = refusal_of("name = \"elastic\"\n" + kSurface + "[loads]\nvalues = [1e-3]\n" +
                                      "[methods.persson]\nignore = [\"hardness\"]\n");

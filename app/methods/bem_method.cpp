@@ -245,6 +245,12 @@ class BemMethod final : public Method {
                       "error_estimate = \"gci2\", or refine to at least twice the surface's points a side");
     }
     check_memory(check);
+    if (check.interface.adhesion) {
+      const AdhesiveMethodRefusal refusal =
+          adhesive_method_refusal(settings_.adhesive_method, check.interface.adhesion->model,
+                                  settings_.periodic.value_or(check.surface.grid().periodic));
+      if (!refusal.reason.empty()) check.problem("adhesive_solver", refusal.reason, refusal.accepted);
+    }
     if (check.interface.hardness && check.interface.adhesion)
       check.problems.add(0, "interface.adhesion",
                          "the BEM does not solve adhesion and a hardness together (the plastic cap and the "

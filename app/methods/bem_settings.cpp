@@ -153,15 +153,18 @@ SettingTable<BemSettings> make_table() {
   table.push_back(bind_choice(
       Row{.key = "adhesive_solver",
           .kind = SettingKind::choice,
-          .accepted = "`\"fixed_point\"`, `\"constrained_cg\"` (`\"constrained_cg\"`: the Dugdale law only)",
+          .accepted = "`\"fixed_point\"`, `\"constrained_cg\"` (the Dugdale law only), `\"projected_lbfgs\"` "
+                      "(the exponential law, periodic problem only)",
           .default_value = std::string("fixed_point"),
           .doc =
               "with interface.adhesion (unused without it): the fixed point on the attraction around the "
               "contact solver, or first a constrained CG on the whole Dugdale problem whose state the fixed "
-              "point then checks and settles (docs/solvers.md \"Adhesion\"; results/bench/"
-              "bem_adhesion_solvers.md); the exponential law always takes the fixed point",
+              "point then checks and settles, or the exponential law's total energy minimised over the gap "
+              "by a projected L-BFGS (docs/solvers.md \"Adhesion\", docs/theory.md 10.11; results/bench/"
+              "bem_adhesion_solvers.md); constrained_cg with the exponential law takes the fixed point",
           .flag = {"--adhesive-solver"},
-          .choices = {"fixed_point", "constrained_cg"}},
+          .python = true,
+          .choices = {"fixed_point", "constrained_cg", "projected_lbfgs"}},
       [](BemSettings & s) -> auto& { return s.adhesive_method; }));
   table.push_back(bind_choice(
       Row{.key = "load_path",

@@ -218,8 +218,9 @@ class PythonBemSolver {
           "attraction are two fixed points it does not couple); accepted: one of the two");
     const Surface solved = settings.periodic ? surface.with_periodic(*settings.periodic) : surface;
     if (adhesion)
-      adhesive_ = std::make_unique<AdhesiveBemSolver>(solved, modulus, *adhesion,
-                                                      AdhesiveSolverOptions{.contact = options_}, threads);
+      adhesive_ = std::make_unique<AdhesiveBemSolver>(
+          solved, modulus, *adhesion,
+          AdhesiveSolverOptions{.contact = options_, .method = settings.adhesive_method}, threads);
     else
       solver_ = std::make_unique<BemSolver>(solved, modulus, options_, threads);
     threads_ = threads;
