@@ -33,7 +33,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // What rank 0 asks the other ranks to do next (one broadcast int).
-enum class Job : int { stop = 0, bem = 1, sweep = 2, surface = 3, gather_surface = 4, mean_gaps = 5 };
+enum class Job : int { stop = 0, bem = 1, sweep = 2, surface = 3, mean_gaps = 5 };
 
 const MPI_Comm kWorld = MPI_COMM_WORLD;
 
@@ -155,12 +155,6 @@ ResidentSurface surface_job(const GeneratedSurfaceSpec* spec) {
   summary.max_height = extremes[1];
   resident_slab() = ResidentSlab{grid, std::move(local)};
   return summary;
-}
-
-// The resident surface gathered whole on rank 0 (an output or a theory that reads the whole heights).
-HeightMap gather_surface_job() {
-  const ResidentSlab& slab = *resident_slab();
-  return mpi::gather_to_root(slab.local, mpi::slab_of(slab.grid, kWorld), kWorld);
 }
 
 // For each level z, the mean of (z - h)+ over the resident slabs (NaN for a NaN level): each rank's sums,
@@ -375,9 +369,6 @@ void serve() {
           return;
         case Job::surface:
           surface_job(nullptr);
-          break;
-        case Job::gather_surface:
-          gather_surface_job();
           break;
         case Job::mean_gaps:
           mean_gaps_job({});
