@@ -31,4 +31,4 @@ def test_stubs_are_valid_python_with_the_documented_keywords(make_stubs):
     keywords = [a.arg for a in init.args.kwonlyargs]
     # The scene keys of a BEM method that a solver object takes (app/methods/bem_settings.cpp), typed.
     assert keywords == ["hardness", "adhesion", "threads", "tolerance", "max_iterations", "periodic", "precision",
-                        "connectivity", "solver"]
+                        "connectivity", "solver", "adhesive_solver"]
