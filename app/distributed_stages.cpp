@@ -33,7 +33,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // What rank 0 asks the other ranks to do next (one broadcast int).
-enum class Job : int { stop = 0, bem = 1, sweep = 2, surface = 3, mean_gaps = 5 };
+enum class Job : int { stop = 0, bem = 1, sweep = 2, surface = 3, mean_gaps = 4 };
 
 const MPI_Comm kWorld = MPI_COMM_WORLD;
 

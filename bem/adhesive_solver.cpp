@@ -185,7 +185,7 @@ const AdhesiveSolution& AdhesiveBemSolver::solve_whole(Control control, Real val
   s.repulsive_pressure = s.pressure.mean();
   s.adhesive_pressure = attraction.mean();
   s.mean_pressure = whole_->mean_traction();
-  s.mean_gap = gap.mean();
+  s.mean_gap = s.separation;
   ContactSolution contact;
   contact.pressure = s.pressure;
   contact.gap = gap;

@@ -32,6 +32,31 @@ def run(arguments, distributed, expect_status=0):
     return done
 
 
+def scene_curves(scene, name, *options):
+    """Runs `scene` as one process and as the ranks (outputs in work/<name> and work/<name>_mpi) and returns
+    both curves.csv's rows, serial first; fewer than two when a run wrote none (a failure is recorded)."""
+    curves = []
+    for distributed in (False, True):
+        out = os.path.join(work, name + ("_mpi" if distributed else ""))
+        run(["run", scene, "--out", out, "--threads", "1", *options], distributed)
+        try:
+            curves.append(rows(os.path.join(out, "curves.csv")))
+        except OSError as e:
+            failures.append(f"run {scene}: no curves.csv ({e})")
+    return curves
+
+
+def rank0_surface_bytes(folder, what):
+    """summary.json's rank0_surface_bytes of a distributed run's output folder (None, and a failure recorded,
+    when it cannot be read)."""
+    try:
+        with open(os.path.join(folder, "summary.json")) as f:
+            return json.load(f)["distributed"].get("rank0_surface_bytes")
+    except (OSError, KeyError, ValueError) as e:
+        failures.append(f"{what}: no readable summary.json ({e})")
+        return None
+
+
 def field(path):
     with open(path) as f:
         return [float(v) for line in f if not line.startswith("#") for v in line.split()]
@@ -139,14 +164,7 @@ with tempfile.TemporaryDirectory() as work:
     with open(default_scene, "w") as f:
         f.write(f'name = "mpi_default"\n[surface]\nfile = "{surface}"\n[material]\nE = 100e9\nnu = 0.3\n'
                 '[loads]\nvalues = [1e-3, 1e-2]\n[methods.bem]\n')
-    curves = []
-    for distributed in (False, True):
-        out = os.path.join(work, "default_run" + ("_mpi" if distributed else ""))
-        run(["run", default_scene, "--out", out, "--threads", "1"], distributed)
-        try:
-            curves.append(rows(os.path.join(out, "curves.csv")))
-        except OSError as e:
-            failures.append(f"run {default_scene}: no curves.csv ({e})")
+    curves = scene_curves(default_scene, "default_run")
     if len(curves) == 2:
         same_bem_rows(curves[1], curves[0], f"run with the default solver on {ranks} ranks")
 
@@ -159,14 +177,7 @@ with tempfile.TemporaryDirectory() as work:
     with open(hard_scene, "w") as f:
         f.write(f'name = "mpi_hard"\n[surface]\nfile = "{surface}"\n[material]\nE = 100e9\nnu = 0.3\n'
                 '[interface]\nhardness = 1e10\n[loads]\nvalues = [1e-3, 1e-2, 5e-3]\n[methods.bem]\n')
-    hard = []
-    for distributed in (False, True):
-        out = os.path.join(work, "hard_run" + ("_mpi" if distributed else ""))
-        run(["run", hard_scene, "--out", out, "--threads", "1"], distributed)
-        try:
-            hard.append(rows(os.path.join(out, "curves.csv")))
-        except OSError as e:
-            failures.append(f"run {hard_scene}: no curves.csv ({e})")
+    hard = scene_curves(hard_scene, "hard_run")
     if len(hard) == 2:
         bem = [[r for r in rows_ if r["method"] == "bem"] for rows_ in hard]
         same_bem_rows(bem[1], bem[0], f"run with a hardness on {ranks} ranks", iteration_slack=1)
@@ -276,14 +287,7 @@ with tempfile.TemporaryDirectory() as work:
         scene_path = os.path.join(work, f"generated_{name}.toml")
         with open(scene_path, "w") as f:
             f.write(f'name = "generated_{name}"\n' + generated + extra)
-        curves = []
-        for distributed in (False, True):
-            out = os.path.join(work, f"generated_{name}" + ("_mpi" if distributed else ""))
-            run(["run", scene_path, "--out", out, "--threads", "1", "--no-plots"], distributed)
-            try:
-                curves.append(rows(os.path.join(out, "curves.csv")))
-            except OSError as e:
-                failures.append(f"run {scene_path}: no curves.csv ({e})")
+        curves = scene_curves(scene_path, f"generated_{name}", "--no-plots")
         if len(curves) == 2:
             bem = [[r for r in c if r["method"] == "bem"] for c in curves]
             same_bem_rows(bem[1], bem[0], f"run with a generated surface ({name}) on {ranks} ranks")
@@ -296,23 +300,15 @@ with tempfile.TemporaryDirectory() as work:
                             not relative(d.get(key) or "nan", s.get(key) or "nan") <= 1e-12:
                         failures.append(f"run with a generated surface ({name}) on {ranks} ranks: {s['method']} "
                                         f"{key} {d.get(key)} against {s.get(key)}")
-        try:
-            with open(os.path.join(work, f"generated_{name}_mpi", "summary.json")) as f:
-                distributed_summary = json.load(f)["distributed"]
-            if distributed_summary.get("rank0_surface_bytes") != root_bytes:
-                failures.append(f"generated surface ({name}) on {ranks} ranks: rank 0 held "
-                                f"{distributed_summary.get('rank0_surface_bytes')} B of whole heights, expected "
-                                f"{root_bytes}")
-        except (OSError, KeyError, ValueError) as e:
-            failures.append(f"generated surface ({name}) on {ranks} ranks: no readable summary.json ({e})")
+        what = f"generated surface ({name}) on {ranks} ranks"
+        held = rank0_surface_bytes(os.path.join(work, f"generated_{name}_mpi"), what)
+        if held != root_bytes:
+            failures.append(f"{what}: rank 0 held {held} B of whole heights, expected {root_bytes}")
     # A file surface is read whole by rank 0: the summary says so (64 x 50 points, 8 B each).
-    try:
-        with open(os.path.join(work, "run", "summary.json")) as f:
-            held = json.load(f)["distributed"].get("rank0_surface_bytes")
-        if held != 64 * 50 * 8:
-            failures.append(f"run of a file surface on {ranks} ranks: rank0_surface_bytes {held}, expected {64 * 50 * 8}")
-    except (OSError, KeyError, ValueError) as e:
-        failures.append(f"run of a file surface on {ranks} ranks: no readable summary.json ({e})")
+    what = f"run of a file surface on {ranks} ranks"
+    held = rank0_surface_bytes(os.path.join(work, "run"), what)
+    if held != 64 * 50 * 8:
+        failures.append(f"{what}: rank0_surface_bytes {held}, expected {64 * 50 * 8}")
 
     # The default wisdom file (the user's cache folder): rank 0's wisdom under mpiexec names FFTW-MPI's solvers,
     # which a process without FFTW-MPI refuses, so it is kept in a file of its own; one process and mpiexec in
