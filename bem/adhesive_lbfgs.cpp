@@ -61,6 +61,21 @@ Part pass(Index n, int threads, const Body& body) {
   return total;
 }
 
+// One block of the two loops' pass: d = (overwrite ? 0 : scale d) + a v, returning w . d when `dot` (the
+// branches outside the loop, so that it vectorises: it is half the solve's time at 512^2, perf).
+template <bool overwrite, bool dot>
+Real update_block(Real* __restrict d, const Real* __restrict v, const Real* __restrict w, Real scale, Real a,
+                  Index begin, Index end) {
+  Real sum = 0;
+#pragma omp simd reduction(+ : sum)
+  for (Index i = begin; i < end; ++i) {
+    const Real di = (overwrite ? Real(0) : scale * d[i]) + a * v[i];
+    d[i] = di;
+    if constexpr (dot) sum += w[i] * di;
+  }
+  return sum;
+}
+
 }  // namespace
 
 ExponentialLbfgs::ExponentialLbfgs(const Grid& grid, const HeightMap& heights, Real modulus,
@@ -174,16 +189,25 @@ LbfgsOutcome ExponentialLbfgs::solve(bool load, Real value, Real tolerance, Inde
   // two loops below as one pass per pair and loop.
   auto update = [&](Real scale, Real a, const HeightMap* v, const HeightMap* w) {
     Real* const d = direction.data();
-    const Real* const vs = v ? v->data() : nullptr;
+    const Real* const vs = v->data();
     const Real* const ws = w ? w->data() : nullptr;
-    return pass(n, team,
-                [&](Index i, Part& part) {
-                  Real di = scale == 0 ? 0 : scale * d[i];
-                  if (vs) di += a * vs[i];
-                  d[i] = di;
-                  if (ws) part.sum[0] += ws[i] * di;
-                })
-        .sum[0];
+    const Index blocks = (n + kBlock - 1) / kBlock;
+    std::vector<Real> parts(static_cast<std::size_t>(blocks));
+#pragma omp parallel for num_threads(team) schedule(static) if (team > 1 && blocks > 1)
+    for (Index b = 0; b < blocks; ++b) {
+      const Index begin = b * kBlock, end = std::min(n, (b + 1) * kBlock);
+      Real& part = parts[static_cast<std::size_t>(b)];
+      if (scale == 0)
+        part = ws ? update_block<true, true>(d, vs, ws, scale, a, begin, end)
+                  : update_block<true, false>(d, vs, ws, scale, a, begin, end);
+      else
+        part = ws ? update_block<false, true>(d, vs, ws, scale, a, begin, end)
+                  : update_block<false, false>(d, vs, ws, scale, a, begin, end);
+    }
+    Real sum = 0;
+    for (const Real part : parts)
+      sum += part;  // in block order, as pass()
+    return sum;
   };
   // Held points stay on the bound; under separation control the step keeps the mean (removed over the free
   // points). The direction is multiplied by `sign` first; returns direction . projected.
