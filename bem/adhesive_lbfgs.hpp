@@ -64,6 +64,7 @@ class ExponentialLbfgs {
   std::unique_ptr<Convolution<double>> stiffness_;
   HeightMap shifted_, elastic_, gradient_, traction_;
   Real uniform_ = 0;
+  int threads_ = 1;  // the element-wise passes' team: the convolution's (one thread on small grids)
 };
 
 }  // namespace contactbench

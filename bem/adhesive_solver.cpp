@@ -27,6 +27,13 @@ constexpr Real kWholeSurfaceTolerance = 1e-3;
 }  // namespace
 
 AdhesiveMethodRefusal adhesive_method_refusal(AdhesiveMethod method, AdhesionModel model, bool periodic) {
+  // The whole-surface CG moves a two-state zone (a in {0, σ0}, docs/theory.md 10.10): a smooth law has none.
+  if (method == AdhesiveMethod::constrained_cg && model != AdhesionModel::dugdale)
+    return {
+        "adhesive_solver = \"constrained_cg\" moves the Dugdale law's zone of constant attraction inside "
+        "one CG, and the " +
+            std::string(adhesion_model_name(model)) + " law has no such zone (its attraction is smooth)",
+        "the dugdale law, or adhesive_solver = \"fixed_point\" or \"projected_lbfgs\""};
   if (method != AdhesiveMethod::projected_lbfgs) return {};
   if (model != AdhesionModel::exponential)
     return {"adhesive_solver = \"projected_lbfgs\" minimises an energy by its gradient, and the " +
@@ -220,7 +227,7 @@ const AdhesiveSolution& AdhesiveBemSolver::solve_with(Control control, Real valu
   AdhesiveSolution& s = solution_;
   s = AdhesiveSolution{};
   const bool whole_surface_cg =
-      options_.method == AdhesiveMethod::constrained_cg && law_.model == AdhesionModel::dugdale;
+      options_.method == AdhesiveMethod::constrained_cg;  // Dugdale (refused otherwise)
   ContactSolution contact;
   HeightMap used;  // the attraction of the last contact solve
   bool contact_converged = true, settled = false;

@@ -98,7 +98,8 @@ inline std::string_view adhesive_method_name(AdhesiveMethod method) {
 }
 
 // Why `method` cannot solve this law on this grid (an empty reason: it can), and what is accepted instead:
-// the projected L-BFGS needs a smooth potential (the exponential law) and the periodic stiffness operator.
+// the projected L-BFGS needs a smooth potential (the exponential law) and the periodic stiffness operator,
+// the constrained CG the Dugdale law's two-state zone.
 // The words preflight (app/methods/bem_method.cpp) and the solver both use.
 struct AdhesiveMethodRefusal {
   std::string reason, accepted;

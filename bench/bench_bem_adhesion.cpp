@@ -111,7 +111,6 @@ int main(int argc, char** argv) {
           for (const AdhesiveMethod method : {AdhesiveMethod::fixed_point, AdhesiveMethod::constrained_cg,
                                               AdhesiveMethod::projected_lbfgs}) {
             if (!adhesive_method_refusal(method, model, periodic).reason.empty()) continue;
-            if (method == AdhesiveMethod::constrained_cg && model != AdhesionModel::dugdale) continue;
             char tabor_text[16];
             std::snprintf(tabor_text, sizeof tabor_text, "%g", tabor);
             const std::string name = "bem_adhesion/" + std::string(adhesion_model_name(model)) + "/" +

@@ -191,6 +191,25 @@ TEST(AdhesiveBemInput, RefusesBadLawsAndHardness) {
   EXPECT_NE(message(AdhesionLaw::dugdale(0.05, 1e4), capped).find("hardness"), std::string::npos);
 }
 
+// The whole-surface CG moves the Dugdale law's two-state zone; with the exponential law it is refused by name
+// (the key, the law, the accepted values), not run as the fixed point; with the Dugdale law it is accepted.
+TEST(AdhesiveBemInput, ConstrainedCgRefusesTheExponentialLaw) {
+  const Surface s = sphere(16, 1e-6, kRadius);
+  auto message = [&](const AdhesionLaw& law) -> std::string {
+    try {
+      AdhesiveBemSolver(s, kModulus, law, {.contact = {}, .method = AdhesiveMethod::constrained_cg}, 1);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  const std::string refused = message(AdhesionLaw::exponential(0.05, 1e-6));
+  for (const char* word : {"adhesive_solver = \"constrained_cg\"", "exponential", "dugdale",
+                           "\"fixed_point\"", "\"projected_lbfgs\""})
+    EXPECT_NE(refused.find(word), std::string::npos) << word << " in: " << refused;
+  EXPECT_EQ(message(AdhesionLaw::dugdale(0.05, 1e4)), "accepted");
+}
+
 // On a rough surface where the zone is resolved, both methods end on the same equilibrium: the surface of
 // scenes/adhesion/surface_A_soft_tabor_0_1.toml (contactbench generate --sigma 0.5e-6 --hurst 0.5 --qr 3.14e4
 // --size 200e-6 --grid 256 --seed 1, here on 128^2), E* = 3.948 MPa, w = 50 mJ/m^2, σ0 = 50 kPa (δc = 1 μm,

@@ -417,6 +417,15 @@ TEST_F(Cli, BemAdhesionIsTheInterfacesAdhesion) {
   const CommandResult not_a_number = run(common + sticky.string() + " --adhesion dugdale,work=x,stress=1");
   EXPECT_NE(not_a_number.status, 0);
   EXPECT_NE(not_a_number.err.find("is not a number"), std::string::npos) << not_a_number.err;
+  // A solver that cannot take the law is refused naming the flag's key, before any solve (no file written).
+  const auto refused_out = folder_ / "refused.csv";
+  const CommandResult smooth =
+      run("bem " + surface.string() + " --loads 0.001 --modulus 4e6 --out " + refused_out.string() +
+          " --adhesion exponential,work=0.05,range=1e-6 --adhesive-solver constrained_cg");
+  EXPECT_NE(smooth.status, 0);
+  EXPECT_NE(smooth.err.find("adhesive_solver"), std::string::npos) << smooth.err;
+  EXPECT_NE(smooth.err.find("exponential law has no such zone"), std::string::npos) << smooth.err;
+  EXPECT_FALSE(std::filesystem::exists(refused_out));
 }
 
 // --approach-retract: the adhesive path instead of --loads (bem/adhesive_path.hpp): one row per state, down

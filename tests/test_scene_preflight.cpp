@@ -132,6 +132,16 @@ TEST(Preflight, AnAdhesiveSolverThatCannotTakeTheLawIsRefusedByName) {
   expect_nothing_but_the_inputs(edges);
   ASSERT_EQ(edges.problems.size(), 1u) << all(edges);
   EXPECT_TRUE(has_problem(edges, "methods.bem.adhesive_solver", "periodic problem only")) << all(edges);
+  // The whole-surface CG moves the Dugdale law's zone: with the exponential law it is refused, not run as the
+  // fixed point.
+  const Refusal smooth =
+      refusal_of("name = \"sticky\"\n" + kSurface +
+                 "[interface]\nadhesion = { model = \"exponential\", work = 0.05, range = 1e-6 }\n" +
+                 "[loads]\nvalues = [1e-3]\n[methods.bem]\nadhesive_solver = \"constrained_cg\"\n");
+  expect_nothing_but_the_inputs(smooth);
+  ASSERT_EQ(smooth.problems.size(), 1u) << all(smooth);
+  EXPECT_TRUE(has_problem(smooth, "methods.bem.adhesive_solver", "exponential law has no such zone"))
+      << all(smooth);
 }
 
 TEST(Preflight, IgnoringAnEffectTheSceneLacksIsRefused) {

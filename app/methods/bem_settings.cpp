@@ -161,7 +161,7 @@ SettingTable<BemSettings> make_table() {
               "contact solver, or first a constrained CG on the whole Dugdale problem whose state the fixed "
               "point then checks and settles, or the exponential law's total energy minimised over the gap "
               "by a projected L-BFGS (docs/solvers.md \"Adhesion\", docs/theory.md 10.11; results/bench/"
-              "bem_adhesion_solvers.md); constrained_cg with the exponential law takes the fixed point",
+              "bem_adhesion_solvers.md); each is refused by name for a law or grid it cannot solve",
           .flag = {"--adhesive-solver"},
           .python = true,
           .choices = {"fixed_point", "constrained_cg", "projected_lbfgs"}},

@@ -93,6 +93,18 @@ def test_bad_laws_are_refused_naming_the_key(law, named):
         cb.BemSolver(sphere(), MODULUS, adhesion=law)
 
 
+@pytest.mark.parametrize("law, adhesive_solver, named", [
+    ({"model": "exponential", "work": 0.05, "range": 1e-6}, "constrained_cg", "constrained_cg"),
+    (DUGDALE, "projected_lbfgs", "projected_lbfgs"),
+])
+def test_an_adhesive_solver_that_cannot_take_the_law_is_refused(law, adhesive_solver, named):
+    # Refused by name before any solve, never run as another solver (the law and the accepted values named).
+    with pytest.raises(cb.Error, match=named) as error:
+        cb.BemSolver(sphere(), MODULUS, adhesion=law,
+                     adhesive_solver=adhesive_solver)
+    assert law["model"] in str(error.value) and "fixed_point" in str(error.value)
+
+
 def test_unknown_key_is_named():
     with pytest.raises(cb.Error, match="range") as error:
         cb.BemSolver(sphere(), MODULUS, adhesion={"model": "dugdale", "work": 0.05, "stress": 1e7, "range": 1})
