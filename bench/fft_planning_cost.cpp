@@ -7,8 +7,8 @@
 //   OMP_WAIT_POLICY=PASSIVE /tmp/fft_planning_cost 1024 3
 // (lattice side, repetitions). The plans are the convolution's: batched 1D transforms of one chunk, single-
 // threaded (each thread of the solve's team runs its own chunks), on FFTW-aligned buffers of the same shapes:
-// r2c / c2r of 8 rows of n, and c2c forward / backward of a block of 4 columns of n (64 bytes of doubles), and
-// of the 1 column left over (n/2+1 = 4 k + 1 columns).
+// r2c / c2r of 8 rows of n, and c2c forward / backward of a block of 4 columns of n (64 bytes of doubles),
+// and of the 1 column left over (n/2+1 = 4 k + 1 columns).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -61,7 +61,8 @@ struct PlanKind {
 std::vector<PlanKind> kinds(int n) {
   const int h = n / 2 + 1;
   auto c2c = [](Buffers& b, int howmany, int sign, unsigned flags) {
-    return fftw_plan_many_dft(1, &b.n, howmany, b.block, nullptr, 1, b.n, b.block, nullptr, 1, b.n, sign, flags);
+    return fftw_plan_many_dft(1, &b.n, howmany, b.block, nullptr, 1, b.n, b.block, nullptr, 1, b.n, sign,
+                              flags);
   };
   return {
       {"r2c, 8 rows", n / 8,
@@ -73,7 +74,8 @@ std::vector<PlanKind> kinds(int n) {
          return fftw_plan_many_dft_c2r(1, &b.n, 8, b.half, nullptr, 1, h, b.rows, nullptr, 1, b.n, f);
        }},
       {"c2c forward, 4 columns", h / 4, [c2c](Buffers& b, unsigned f) { return c2c(b, 4, FFTW_FORWARD, f); }},
-      {"c2c backward, 4 columns", h / 4, [c2c](Buffers& b, unsigned f) { return c2c(b, 4, FFTW_BACKWARD, f); }},
+      {"c2c backward, 4 columns", h / 4,
+       [c2c](Buffers& b, unsigned f) { return c2c(b, 4, FFTW_BACKWARD, f); }},
       {"c2c forward, 1 column (rest)", h % 4,
        [c2c](Buffers& b, unsigned f) { return c2c(b, 1, FFTW_FORWARD, f); }},
       {"c2c backward, 1 column (rest)", h % 4,
@@ -129,12 +131,15 @@ int main(int argc, char** argv) {
   const int repetitions = argc > 2 ? std::atoi(argv[2]) : 3;
   Buffers b(n);
   const auto plans = kinds(n);
-  std::printf("# FFTW planning of one Convolution<double> at %d^2 periodic (%s), medians of %d\n\n", n, fftw_version,
-              repetitions);
+  std::printf("# FFTW planning of one Convolution<double> at %d^2 periodic (%s), medians of %d\n\n", n,
+              fftw_version, repetitions);
 
-  // 1. Each plan alone, no wisdom: planning seconds at MEASURE, and each plan's execution, estimated / measured.
-  std::printf("| plan | executions per application | plan MEASURE alone [CPU s] | execute ESTIMATE / MEASURE [CPU us] | "
-              "saved per application [ms] | same algorithm |\n|---|---:|---:|---:|---:|---|\n");
+  // 1. Each plan alone, no wisdom: planning seconds at MEASURE, and each plan's execution, estimated /
+  // measured.
+  std::printf(
+      "| plan | executions per application | plan MEASURE alone [CPU s] | execute ESTIMATE / MEASURE [CPU "
+      "us] | "
+      "saved per application [ms] | same algorithm |\n|---|---:|---:|---:|---:|---|\n");
   double saved_total = 0;
   for (const auto& kind : plans) {
     std::vector<double> planning, estimated, measured;
@@ -152,15 +157,17 @@ int main(int argc, char** argv) {
     }
     const double saved = (median(estimated) - median(measured)) * kind.per_application * 1e-3;
     saved_total += saved;
-    std::printf("| %s | %d | %.3f | %.2f / %.2f | %.3f | %s |\n", kind.name, kind.per_application, median(planning),
-                median(estimated), median(measured), saved, same ? "yes" : "no");
+    std::printf("| %s | %d | %.3f | %.2f / %.2f | %.3f | %s |\n", kind.name, kind.per_application,
+                median(planning), median(estimated), median(measured), saved, same ? "yes" : "no");
   }
   std::printf("\nSaved per application of the convolution by the measured plans: %.3f ms\n\n", saved_total);
 
   // 2. The plan sets a convolution makes, in its order, from no wisdom (later plans reuse the sub-plans the
   // earlier ones measured): all six; without the rest plans (the last block run by the 4-column plans); and
   // without the backward c2c too (backward = conj forward conj).
-  std::printf("| plans measured, in order from no wisdom | planning [CPU s], median | each [CPU s] |\n|---|---:|---|\n");
+  std::printf(
+      "| plans measured, in order from no wisdom | planning [CPU s], median | each [CPU s] "
+      "|\n|---|---:|---|\n");
   const std::vector<std::pair<const char*, std::vector<int>>> sets = {
       {"all six (r2c, c2r, c2c fwd/bwd 4 columns, c2c fwd/bwd 1 column)", {0, 1, 2, 3, 4, 5}},
       {"four (no rest plans)", {0, 1, 2, 3}},
@@ -186,9 +193,10 @@ int main(int argc, char** argv) {
 
   // 3. A time limit per plan: planning time, whether the plans are the measured ones, what the wisdom keeps,
   // and what a later run with that wisdom and the same limit gets.
-  std::printf("\n| time limit per plan [s] | planning, 3 plans [CPU s] | plans equal to unlimited MEASURE's | wisdom "
-              "TIMEOUT entries | later run: found by WISDOM_ONLY | later run's planning [CPU s] |\n"
-              "|---:|---:|---|---:|---|---:|\n");
+  std::printf(
+      "\n| time limit per plan [s] | planning, 3 plans [CPU s] | plans equal to unlimited MEASURE's | wisdom "
+      "TIMEOUT entries | later run: found by WISDOM_ONLY | later run's planning [CPU s] |\n"
+      "|---:|---:|---|---:|---|---:|\n");
   fftw_forget_wisdom();
   std::vector<std::string> unlimited;
   for (int k = 0; k < 3; ++k) {
