@@ -117,16 +117,20 @@ CB_KERNEL void load_block(const C* __restrict from, Index stride, Index rows, In
       block[j * length + y] = C(0);
 }
 
+// The block back into the spectrum, conjugated: the column transform back is the forward one between two
+// conjugations (backward(c) = conj(forward(conj c))), the first folded into multiply_column, this the second,
+// so that one measured plan serves both directions (docs/solvers.md, Planning).
 template <class C>
 CB_KERNEL void store_block(const C* __restrict block, Index length, Index rows, Index cols, C* __restrict to,
                            Index stride) {
   for (Index y = 0; y < rows; ++y)
     for (Index j = 0; j < cols; ++j)
-      to[y * stride + j] = block[j * length + y];
+      to[y * stride + j] = std::conj(block[j * length + y]);
 }
 
 // One column (length values, interleaved re, im) times the even multiplier m (m[k] for k <= length/2,
-// m[length - k] beyond); with `energy`, returns sum m |c|^2 of the column before the product.
+// m[length - k] beyond), conjugated (for the transform back, see store_block); with `energy`, returns
+// sum m |c|^2 of the column before the product.
 template <class T>
 CB_KERNEL double multiply_column(std::complex<T>* column, const T* __restrict m, Index length, bool energy) {
   T* __restrict c = reinterpret_cast<T*>(column);
@@ -148,12 +152,12 @@ CB_KERNEL double multiply_column(std::complex<T>* column, const T* __restrict m,
 #pragma omp simd
   for (Index k = 0; k <= half; ++k) {
     c[2 * k] *= m[k];
-    c[2 * k + 1] *= m[k];
+    c[2 * k + 1] *= -m[k];
   }
 #pragma omp simd
   for (Index k = half + 1; k < length; ++k) {
     c[2 * k] *= m[length - k];
-    c[2 * k + 1] *= m[length - k];
+    c[2 * k + 1] *= -m[length - k];
   }
   return sum;
 }
@@ -178,14 +182,15 @@ struct Convolution<T>::Impl {
     double energy = 0;
   };
   std::vector<Partial> partial;
+  // One column plan for every block and both directions (a block of fewer columns runs it on a buffer
+  // padded with zero columns; the transform back is the forward one between conjugations): fewer plans to
+  // measure on a first run (docs/solvers.md, Planning).
   typename F::Plan r2c_full = nullptr, r2c_rest = nullptr, c2r_full = nullptr, c2r_rest = nullptr;
-  typename F::Plan forward_full = nullptr, forward_rest = nullptr, backward_full = nullptr,
-                   backward_rest = nullptr;
+  typename F::Plan columns_forward = nullptr;
 
   ~Impl() {
     auto lock = lock_fftw_planner();
-    for (auto p :
-         {r2c_full, r2c_rest, c2r_full, c2r_rest, forward_full, forward_rest, backward_full, backward_rest})
+    for (auto p : {r2c_full, r2c_rest, c2r_full, c2r_rest, columns_forward})
       F::destroy(p);
   }
 };
@@ -230,17 +235,22 @@ Convolution<T>::Convolution(Index nx, Index ny, bool padded, int threads, FftRig
                              F::alignment_of(reinterpret_cast<T*>(spectrum));
   // Measured plans apply 10-30 % faster than estimated ones (measured at 128^2 to 1024^2) and cost 0.25 s
   // (256^2) to 1.3 s (1024^2, padded) to make, once per shape and process unless FFTW's wisdom holds them
-  // (docs/solvers.md, Planning). `measure` measures lattices of kMinPointsForThreads points and more;
+  // (docs/solvers.md, Planning); a convolution has three (r2c and c2r of a chunk of rows, the c2c of a block
+  // of columns; two more for a last chunk of fewer rows), of which only the column plan is ever measured.
+  // `measure` measures lattices of kMinPointsForThreads points and more;
   // `by_work` takes measured plans the wisdom holds already (FFTW_WISDOM_ONLY: none made otherwise) and
   // else lets choose_fft_rigor decide; small lattices and `estimate` are estimated.
   const int n_x = static_cast<int>(lx_), n_y = static_cast<int>(ly_), nxh = static_cast<int>(m.nxh);
-  const int rest_rows = static_cast<int>(ny_ % kRowsPerChunk), rest_columns = static_cast<int>(m.nxh % B);
-  const bool has_rest_rows = rest_rows && ny_ > kRowsPerChunk, has_rest_columns = rest_columns && m.nxh > B;
+  const int rest_rows = static_cast<int>(ny_ % kRowsPerChunk);
+  const bool has_rest_rows = rest_rows && ny_ > kRowsPerChunk;
   auto* columns = reinterpret_cast<FCx*>(m.columns[0].get());
   const unsigned alignment = aligned ? 0u : FFTW_UNALIGNED;
-  // Every plan at one rigor; false (none kept) when one could not be made.
+  // The column plan at `rigor`, the row plans always estimated: measured rows save 0.5 ms of CPU a
+  // convolution at 1024^2 (8 % of its transforms) and nothing at 2048^2, for about 0.3 s more of a first
+  // run's planning (bench/fft_planning_cost.cpp; docs/solvers.md, Planning). False (none kept) when one
+  // could not be made.
   auto make_plans = [&](unsigned rigor) {
-    const unsigned flags = rigor | alignment;
+    const unsigned flags = FFTW_ESTIMATE | alignment;
     const int full_rows = static_cast<int>(std::min<Index>(kRowsPerChunk, ny_));
     m.r2c_full = F::r2c(n_x, full_rows, m.rows_in[0].get(), n_x, spectrum, nxh, flags);
     m.c2r_full = F::c2r(n_x, full_rows, spectrum, nxh, m.rows_out[0].get(), n_x, flags);
@@ -248,19 +258,12 @@ Convolution<T>::Convolution(Index nx, Index ny, bool padded, int threads, FftRig
       m.r2c_rest = F::r2c(n_x, rest_rows, m.rows_in[0].get(), n_x, spectrum, nxh, flags);
       m.c2r_rest = F::c2r(n_x, rest_rows, spectrum, nxh, m.rows_out[0].get(), n_x, flags);
     }
-    const int full_columns = static_cast<int>(std::min<Index>(B, m.nxh));
-    m.forward_full = F::c2c(n_y, full_columns, columns, FFTW_FORWARD, rigor);
-    m.backward_full = F::c2c(n_y, full_columns, columns, FFTW_BACKWARD, rigor);
-    if (has_rest_columns) {
-      m.forward_rest = F::c2c(n_y, rest_columns, columns, FFTW_FORWARD, rigor);
-      m.backward_rest = F::c2c(n_y, rest_columns, columns, FFTW_BACKWARD, rigor);
-    }
-    const bool made = m.r2c_full && m.c2r_full && m.forward_full && m.backward_full &&
-                      (!has_rest_rows || (m.r2c_rest && m.c2r_rest)) &&
-                      (!has_rest_columns || (m.forward_rest && m.backward_rest));
+    m.columns_forward =
+        F::c2c(n_y, static_cast<int>(std::min<Index>(B, m.nxh)), columns, FFTW_FORWARD, rigor);
+    const bool made =
+        m.r2c_full && m.c2r_full && m.columns_forward && (!has_rest_rows || (m.r2c_rest && m.c2r_rest));
     if (!made)
-      for (auto* plan : {&m.r2c_full, &m.r2c_rest, &m.c2r_full, &m.c2r_rest, &m.forward_full, &m.forward_rest,
-                         &m.backward_full, &m.backward_rest}) {
+      for (auto* plan : {&m.r2c_full, &m.r2c_rest, &m.c2r_full, &m.c2r_rest, &m.columns_forward}) {
         F::destroy(*plan);
         *plan = nullptr;
       }
@@ -355,16 +358,17 @@ double Convolution<T>::apply(Producer produce, Consumer consume, Hook between, b
 #pragma omp for schedule(static)
     for (Index block = 0; block < column_blocks; ++block) {
       const Index c0 = block * B, cols = std::min(B, nxh - c0);
-      const bool full = cols == B || nxh < B;
       load_block(spectrum + c0, nxh, ny, ly, cols, columns);
-      F::execute_c2c(full ? m.forward_full : m.forward_rest, reinterpret_cast<FCx*>(columns));
+      // The last block of fewer columns runs the block's plan too, on zero columns beyond its own.
+      if (cols < B && nxh > B) std::fill(columns + cols * ly, columns + B * ly, Cx(0));
+      F::execute_c2c(m.columns_forward, reinterpret_cast<FCx*>(columns));
       for (Index j = 0; j < cols; ++j) {
         const double sum =
             multiply_column(columns + j * ly, multiplier + (c0 + j) * mult_rows, ly, want_energy);
         energy += m.weights[static_cast<std::size_t>(c0 + j)] * sum;
       }
       if (inverse) {
-        F::execute_c2c(full ? m.backward_full : m.backward_rest, reinterpret_cast<FCx*>(columns));
+        F::execute_c2c(m.columns_forward, reinterpret_cast<FCx*>(columns));  // back: see store_block
         store_block(columns, ly, ny, cols, spectrum + c0, nxh);
       }
     }

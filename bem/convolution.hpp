@@ -9,7 +9,10 @@
 //   1. rows: for each chunk of rows, `produce` writes the input rows into a small per-thread buffer (the
 //      zero padding already in place), and a real-to-complex transform of those rows follows;
 //   2. columns: for each block of columns, copy into a per-thread buffer (zero-padded), transform, multiply
-//      by M, transform back, copy back; the padded half of the result is never stored;
+//      by M, transform back, copy back; the padded half of the result is never stored. One plan serves
+//      every block (a last block of fewer columns is padded with zero columns) and both directions (back
+//      is forward between two conjugations, folded into the multiplication and the copy back); the row plans
+//      are always estimated, so that a first run measures one plan, not six (docs/solvers.md, Planning);
 //   3. rows: complex-to-real of each chunk of rows into a per-thread buffer, which `consume` reads.
 // So the input is read from and the output written to the caller's own arrays: there are no full-size
 // copies, and the non-periodic transform skips the all-zero rows of the padding (3/4 of the work of a
