@@ -33,7 +33,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // What rank 0 asks the other ranks to do next (one broadcast int).
-enum class Job : int { stop = 0, bem = 1, sweep = 2, surface = 3, mean_gaps = 4 };
+enum class Job : int { stop = 0, bem = 1, sweep = 2, surface = 3, mean_gaps = 4, gather_surface = 5 };
 
 const MPI_Comm kWorld = MPI_COMM_WORLD;
 
@@ -155,6 +155,13 @@ ResidentSurface surface_job(const GeneratedSurfaceSpec* spec) {
   summary.max_height = extremes[1];
   resident_slab() = ResidentSlab{grid, std::move(local)};
   return summary;
+}
+
+// The resident surface gathered whole on rank 0 (a method that reads the whole heights): 8 B a point there,
+// the same bits as the slabs (centred on the slabs' mean, so one process's heights to the last bit).
+HeightMap gather_surface_job() {
+  const ResidentSlab& slab = *resident_slab();
+  return mpi::gather_to_root(slab.local, mpi::slab_of(slab.grid, kWorld), kWorld);
 }
 
 // For each level z, the mean of (z - h)+ over the resident slabs (NaN for a NaN level): each rank's sums,
@@ -370,6 +377,9 @@ void serve() {
         case Job::surface:
           surface_job(nullptr);
           break;
+        case Job::gather_surface:
+          gather_surface_job();
+          break;
         case Job::mean_gaps:
           mean_gaps_job({});
           break;
@@ -445,15 +455,18 @@ class DistributedRunner final : public StageRunner {
            " (docs/mpi.md)";
   }
 
-  std::optional<ResidentSurface> make_resident_surface(const GeneratedSurfaceSpec& spec,
-                                                       int threads) const override {
+  std::optional<ResidentSurface> make_resident_surface(const GeneratedSurfaceSpec& spec, int) const override {
     announce(Job::surface);
     ResidentSurface surface = surface_job(&spec);
-    // The whole heights, when a method reads them, are made here by the serial generator (one process's
-    // surface bit for bit, centred as one process centres it): gathering the slabs on 3 ranks gave a
-    // surface whose spectrum differed (Persson's mean gap 0.8 % off, tests/mpi/test_mpi_cli.py), a cause
-    // not found yet (docs/mpi.md "Not done yet").
-    surface.gather = [spec, threads] { return make_surface(SurfaceSpec{spec}, threads); };
+    // The whole heights, when a method reads them, are the slabs gathered (tests/mpi/test_mpi_generation.cpp:
+    // the serial generator's bits on uneven slabs). Rank 0 once made them with the serial generator instead,
+    // when a gathered surface's Persson mean gap was 0.8 % off on 3 ranks: the cause was Persson's sum over
+    // modes of equal |q| (theories/persson_gap.cpp), not the surface.
+    const Grid grid = surface.grid;
+    surface.gather = [grid] {
+      announce(Job::gather_surface);
+      return Surface(grid, gather_surface_job());
+    };
     surface.mean_gaps = [](const std::vector<Real>& levels) {
       announce(Job::mean_gaps);
       return mean_gaps_job(levels);
