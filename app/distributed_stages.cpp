@@ -1,5 +1,6 @@
 #include "contactbench/app/distributed_stages.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -7,6 +8,7 @@
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <optional>
 
 #include <mpi.h>
@@ -18,7 +20,9 @@
 #include "contactbench/bem/solver_registry.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/memory_budget.hpp"
+#include "contactbench/core/scales.hpp"
 #include "contactbench/core/topography_io.hpp"
+#include "contactbench/core/topography_rows.hpp"
 #include "contactbench/mpi/distributed_bem_solver.hpp"
 #include "contactbench/mpi/distributed_contact_statistics.hpp"
 #include "contactbench/mpi/distributed_generation.hpp"
@@ -33,7 +37,15 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // What rank 0 asks the other ranks to do next (one broadcast int).
-enum class Job : int { stop = 0, bem = 1, sweep = 2, surface = 3, mean_gaps = 4 };
+enum class Job : int {
+  stop = 0,
+  bem = 1,
+  sweep = 2,
+  surface = 3,
+  mean_gaps = 4,
+  gather_surface = 5,
+  read_surface = 6
+};
 
 const MPI_Comm kWorld = MPI_COMM_WORLD;
 
@@ -107,6 +119,8 @@ const HeightMap& resident_heights(const Grid& grid) {
   return slab->local;
 }
 
+ResidentSurface keep_resident(const Grid& grid, HeightMap local);
+
 // Each rank generates its slab of the scene's surface (mpi::generate_surface_slab: the serial surface's
 // rows bit for bit), centres it on the mean plane and reduces what the preflights and theories read: the
 // spectral moments and the heights' extremes. The mean is the slabs' sums added in rank order, so it may
@@ -136,7 +150,65 @@ ResidentSurface surface_job(const GeneratedSurfaceSpec* spec) {
   psd.anisotropy = in.number();
   resident_slab().reset();  // the last scene's, freed before the new one is made
   validate(psd, grid);      // the serial generator's refusal, on every rank alike
-  HeightMap local = mpi::generate_surface_slab(grid, psd, seed, kWorld);
+  return keep_resident(grid, mpi::generate_surface_slab(grid, psd, seed, kWorld));
+}
+
+// Each rank's slab of a file's surface, read by rank 0 (its `reader`, open) a bounded buffer at a time and
+// sent to the rank that owns those rows as it is read: rank 0 holds its own slab and one buffer of about
+// 1 MiB (one row when a row is longer), never the whole surface. A defect found while reading (a bad row,
+// missing or extra rows) stops every rank (each chunk is preceded by a broadcast saying whether it came),
+// and rank 0 rethrows the reader's error. Then the slabs are kept as a generated surface's are.
+ResidentSurface read_surface_job(TopographyRowReader* reader) {
+  std::vector<double> packed;
+  if (reader) pack_grid(packed, reader->grid());
+  const std::vector<double> values = broadcast(std::move(packed));
+  Unpacker in(values);
+  const Grid grid = in.grid();
+  resident_slab().reset();  // the last scene's, freed before the new one is made
+  const auto slabs = mpi::all_slabs(grid.nx, grid.ny, kWorld);
+  const int me = mpi::rank_of(kWorld);
+  HeightMap local(slabs[static_cast<std::size_t>(me)].count, grid.nx);
+  const Index chunk_rows = std::max<Index>(1, (Index{1} << 17) / grid.nx);  // 1 MiB of heights
+  std::vector<Real> buffer;
+  std::exception_ptr failure;
+  // Every rank takes part in each step's broadcast: whether rank 0 read it.
+  const auto step_read = [&](const std::function<void()>& read) {
+    int ok = 1;
+    if (is_root() && !failure) try {
+        read();
+      } catch (...) {
+        failure = std::current_exception();
+      }
+    if (is_root()) ok = failure ? 0 : 1;
+    MPI_Bcast(&ok, 1, MPI_INT, 0, kWorld);
+    if (!ok) {
+      if (failure) std::rethrow_exception(failure);
+      throw Error("rank 0 could not read the surface file");
+    }
+  };
+  for (std::size_t r = 0; r < slabs.size(); ++r)
+    for (Index row = 0; row < slabs[r].count; row += chunk_rows) {
+      const Index rows = std::min(chunk_rows, slabs[r].count - row);
+      if (r == 0) {
+        step_read([&] { reader->read(rows, local.data() + row * grid.nx); });
+        continue;
+      }
+      if (is_root()) buffer.resize(static_cast<std::size_t>(rows * grid.nx));
+      step_read([&] { reader->read(rows, buffer.data()); });
+      const int count = static_cast<int>(rows * grid.nx);  // at most 2^17 values (or one row)
+      if (is_root())
+        MPI_Send(buffer.data(), count, MPI_DOUBLE, static_cast<int>(r), 0, kWorld);
+      else if (me == static_cast<int>(r))
+        MPI_Recv(local.data() + row * grid.nx, count, MPI_DOUBLE, 0, 0, kWorld, MPI_STATUS_IGNORE);
+    }
+  step_read([&] { reader->finish(); });
+  std::vector<Real>().swap(buffer);
+  return keep_resident(grid, std::move(local));
+}
+
+// The slabs kept for the stages that follow, centred on the mean plane, reduced to what the preflights and
+// theories read: the moments and the heights' extremes (the same on every rank).
+ResidentSurface keep_resident(const Grid& grid, HeightMap local) {
   // The mean plane: each rank's sum, gathered and added in rank order (the same value on every rank).
   const double sum = local.size() ? local.sum() : 0.0;
   std::vector<double> sums(static_cast<std::size_t>(mpi::size_of(kWorld)));
@@ -155,6 +227,13 @@ ResidentSurface surface_job(const GeneratedSurfaceSpec* spec) {
   summary.max_height = extremes[1];
   resident_slab() = ResidentSlab{grid, std::move(local)};
   return summary;
+}
+
+// The resident surface gathered whole on rank 0 (a method that reads the whole heights): 8 B a point there,
+// the same bits as the slabs (centred on the slabs' mean, so one process's heights to the last bit).
+HeightMap gather_surface_job() {
+  const ResidentSlab& slab = *resident_slab();
+  return mpi::gather_to_root(slab.local, mpi::slab_of(slab.grid, kWorld), kWorld);
 }
 
 // For each level z, the mean of (z - h)+ over the resident slabs (NaN for a NaN level): each rank's sums,
@@ -370,6 +449,12 @@ void serve() {
         case Job::surface:
           surface_job(nullptr);
           break;
+        case Job::gather_surface:
+          gather_surface_job();
+          break;
+        case Job::read_surface:
+          read_surface_job(nullptr);
+          break;
         case Job::mean_gaps:
           mean_gaps_job({});
           break;
@@ -445,19 +530,33 @@ class DistributedRunner final : public StageRunner {
            " (docs/mpi.md)";
   }
 
-  std::optional<ResidentSurface> make_resident_surface(const GeneratedSurfaceSpec& spec,
-                                                       int threads) const override {
+  std::optional<ResidentSurface> make_resident_surface(const GeneratedSurfaceSpec& spec, int) const override {
     announce(Job::surface);
     ResidentSurface surface = surface_job(&spec);
-    // The whole heights, when a method reads them, are made here by the serial generator (one process's
-    // surface bit for bit, centred as one process centres it): gathering the slabs on 3 ranks gave a
-    // surface whose spectrum differed (Persson's mean gap 0.8 % off, tests/mpi/test_mpi_cli.py), a cause
-    // not found yet (docs/mpi.md "Not done yet").
-    surface.gather = [spec, threads] { return make_surface(SurfaceSpec{spec}, threads); };
-    surface.mean_gaps = [](const std::vector<Real>& levels) {
-      announce(Job::mean_gaps);
-      return mean_gaps_job(levels);
-    };
+    // The whole heights, when a method reads them, are the slabs gathered (tests/mpi/test_mpi_generation.cpp:
+    // the serial generator's bits on uneven slabs). Rank 0 once made them with the serial generator instead,
+    // when a gathered surface's Persson mean gap was 0.8 % off on 3 ranks: the cause was Persson's sum over
+    // modes of equal |q| (theories/persson_gap.cpp), not the surface.
+    add_gather(surface);
+    return surface;
+  }
+
+  std::optional<ResidentSurface> read_resident_surface(const FileSurfaceSpec& file,
+                                                       int threads) const override {
+    // Opened and its header checked here, before the other ranks are called: a file that cannot be read in
+    // slabs (its format or options: core/topography_rows.hpp) is read whole by the caller, as before.
+    const std::unique_ptr<TopographyRowReader> reader =
+        TopographyRowReader::open(file.path, read_options(file, threads));
+    if (!reader) return std::nullopt;
+    announce(Job::read_surface);
+    ResidentSurface surface = read_surface_job(reader.get());
+    // What make_surface checks of a file's heights (core/spectrum.hpp, check_summable_heights), from the
+    // slabs' extremes; the sizes were checked with the header.
+    if (const Real range = surface.max_height - surface.min_height; !within_magnitudes(range))
+      throw InputError(file.path, 0,
+                       "spectral moments: " + magnitude_problem("the heights' range", range, "m") +
+                           ": rescale the heights (e.g. to micrometres given in metres)");
+    add_gather(surface);
     return surface;
   }
 
@@ -502,6 +601,19 @@ class DistributedRunner final : public StageRunner {
   }
 
  private:
+  // How rank 0 reads the resident slabs whole (gathered) and their mean gaps below a level.
+  static void add_gather(ResidentSurface& surface) {
+    const Grid grid = surface.grid;
+    surface.gather = [grid] {
+      announce(Job::gather_surface);
+      return Surface(grid, gather_surface_job());
+    };
+    surface.mean_gaps = [](const std::vector<Real>& levels) {
+      announce(Job::mean_gaps);
+      return mean_gaps_job(levels);
+    };
+  }
+
   int ranks_here_ = 1;
 };
 

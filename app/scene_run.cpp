@@ -92,6 +92,12 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
         made.emplace(std::move(*resident));
         return;
       }
+    if (const auto* file = std::get_if<FileSurfaceSpec>(&scene.surface.source);
+        file && !options.whole_file_surface)
+      if (auto resident = runner.read_resident_surface(*file, options.threads)) {
+        made.emplace(std::move(*resident));
+        return;
+      }
     made.emplace(make_surface(scene.surface, options.threads));
   });
   const SceneSurface& surface = *made;

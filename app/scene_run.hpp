@@ -71,6 +71,10 @@ struct RunOptions {
   // files are moved there (app/run_command.cpp). Empty: prefixes are paths as given (relative to the working
   // directory), as `contactbench bem --fields` has them.
   std::filesystem::path fields_folder = {};
+  // Read a surface file whole on this process even where the runner could read it in slabs
+  // (StageRunner::read_resident_surface): `contactbench sweep` writes the heights themselves as its levels,
+  // one process's bit for bit, which the slabs' mean (added in rank order) would move in the last bit.
+  bool whole_file_surface = false;
 };
 
 // Throws SceneError listing every problem the preflights found (then no sweep, solve or theory has run).

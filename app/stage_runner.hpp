@@ -76,6 +76,12 @@ class StageRunner {
   virtual std::optional<ResidentSurface> make_resident_surface(const GeneratedSurfaceSpec&, int) const {
     return std::nullopt;
   }
+  // The scene's file surface read by this process a bounded buffer at a time, each rank's slab sent to it as
+  // it is read (app/distributed_stages.cpp); nothing when the runner is one process, or when the file's
+  // format or reading options need the whole surface (core/topography_rows.hpp): then it is read whole here.
+  virtual std::optional<ResidentSurface> read_resident_surface(const FileSurfaceSpec&, int) const {
+    return std::nullopt;
+  }
   // Every load of `mean_pressures` [Pa] (ascending) on the grid of `solved`, warm-started in order; with a
   // non-empty `fields` prefix the pressure and gap of each load written as it is solved (app/stages.hpp).
   virtual SolvedLoads solve_loads(const BemStage& stage, const StageSurface& solved, Real estar,

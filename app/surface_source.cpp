@@ -219,6 +219,21 @@ void write_surface_keys(const SurfaceSpec& surface, SceneKeys& root) {
   }
 }
 
+TopographyReadOptions read_options(const FileSurfaceSpec& file, int threads) {
+  TopographyReadOptions options;
+  options.lx = file.size_x;
+  options.ly = file.size_y;
+  options.periodic = file.periodic;
+  options.channel = file.channel;
+  options.fill = file.fill;
+  options.level = file.level;
+  options.unit = file.unit;
+  options.crop = file.crop;
+  options.align_rows = file.align_rows;
+  options.threads = threads;
+  return options;
+}
+
 Surface make_surface(const SurfaceSpec& spec, int threads) {
   if (const auto* g = std::get_if<GeneratedSurfaceSpec>(&spec.source)) {
     const Grid grid{.nx = g->grid, .ny = g->grid, .lx = g->size, .ly = g->size, .periodic = true};
@@ -232,17 +247,7 @@ Surface make_surface(const SurfaceSpec& spec, int threads) {
     return generate_surface(grid, psd, g->seed, threads).centred();
   }
   const auto& file = std::get<FileSurfaceSpec>(spec.source);
-  TopographyReadOptions options;
-  options.lx = file.size_x;
-  options.ly = file.size_y;
-  options.periodic = file.periodic;
-  options.channel = file.channel;
-  options.fill = file.fill;
-  options.level = file.level;
-  options.unit = file.unit;
-  options.crop = file.crop;
-  options.align_rows = file.align_rows;
-  options.threads = threads;
+  const TopographyReadOptions options = read_options(file, threads);
   // Levelling "plane" removes the tilt as well; the mean is removed in any case.
   Surface surface = read_topography(file.path, options).centred();
   // The moments stage and every method would refuse heights beyond what sums hold; that is the file's fault,

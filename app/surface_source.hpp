@@ -13,6 +13,7 @@
 #include "contactbench/core/formats/row_alignment.hpp"
 #include "contactbench/core/formats/surface_repair.hpp"
 #include "contactbench/core/surface.hpp"
+#include "contactbench/core/topography_io.hpp"
 #include "contactbench/core/types.hpp"
 
 namespace contactbench {
@@ -65,5 +66,8 @@ void write_surface_keys(const SurfaceSpec& surface, SceneKeys& root);
 
 // The surface the spec describes, its heights centred on their mean plane.
 Surface make_surface(const SurfaceSpec& spec, int threads);
+// The options a file surface is read with (make_surface's, for a reader of slabs:
+// app/distributed_stages.cpp).
+TopographyReadOptions read_options(const FileSurfaceSpec& file, int threads);
 
 }  // namespace contactbench

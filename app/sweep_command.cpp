@@ -56,7 +56,11 @@ void run_sweep(const SweepOptions& o, const CommandContext& context) {
   const RunObserver observer = terminal_observer(command, o.progress);
   SceneReport report;
   try {
-    report = run_scene(scene, {.threads = o.threads, .observer = &observer, .runner = context.runner});
+    report = run_scene(scene, {.threads = o.threads,
+                               .observer = &observer,
+                               .runner = context.runner,
+                               .fields_folder = {},
+                               .whole_file_surface = true});
   } catch (const SceneError& error) {
     rethrow_with_flags(error, command, kFlags);
   }

@@ -1,6 +1,7 @@
 // The project's own text format (docs/formats.md "The text formats"): "# contactbench surface v1", a header
 // line "# nx=... ny=... lx=... ly=... periodic=... unit=m", then ny rows of nx heights in metres as
 // write_surface prints them (shortest round-trip decimals), so reading returns them bit for bit.
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <utility>
@@ -32,6 +33,18 @@ struct ProjectValues {
 // any (its writer writes finite values only).
 ProjectValues read_project_values(const fs::path& path, std::span<const Line> lines,
                                   const TopographyReadOptions& options, const RowSyntax& syntax) {
+  const ProjectHeader header =
+      read_project_header(path, lines.first(std::min<std::size_t>(lines.size(), 2)), options);
+  // Scale 1: multiplying by 1.0 is exact, so the heights stay bit for bit what was written.
+  DataBlock block =
+      parse_data(path, lines.subspan(2), 1.0, header.shape, " after the header", syntax, options.threads);
+  return {std::move(block), header.lx, header.ly, header.periodic, header.quantity, header.unit};
+}
+
+}  // namespace
+
+ProjectHeader read_project_header(const fs::path& path, std::span<const Line> lines,
+                                  const TopographyReadOptions& options) {
   const Line& magic = lines.front();
   if (magic.text != project_magic)
     throw InputError(path, magic.number,
@@ -85,16 +98,14 @@ ProjectValues read_project_values(const fs::path& path, std::span<const Line> li
   check_agrees(path, header.number, "ly", *size_y, options.ly);
 
   const std::string where = " (line " + std::to_string(header.number) + ")";
-  const PromisedShape promised{rows, columns, "ny=" + std::to_string(rows) + where,
-                               "nx=" + std::to_string(columns) + where, header.number};
-  // Scale 1: multiplying by 1.0 is exact, so the heights stay bit for bit what was written.
-  DataBlock block =
-      parse_data(path, lines.subspan(2), 1.0, promised, " after the header", syntax, options.threads);
-  return {std::move(block),       *size_x, *size_y, periodic.value == "true", std::string(quantity.value),
+  return {PromisedShape{rows, columns, "ny=" + std::to_string(rows) + where,
+                        "nx=" + std::to_string(columns) + where, header.number},
+          *size_x,
+          *size_y,
+          periodic.value == "true",
+          std::string(quantity.value),
           std::string(unit.value)};
 }
-
-}  // namespace
 
 RawTopography read_project(const fs::path& path, std::span<const Line> lines,
                            const TopographyReadOptions& options) {

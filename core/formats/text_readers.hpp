@@ -5,8 +5,10 @@
 
 #include <filesystem>
 #include <span>
+#include <string>
 #include <string_view>
 
+#include "contactbench/core/formats/height_rows.hpp"
 #include "contactbench/core/formats/raw_topography.hpp"
 #include "contactbench/core/formats/text_lines.hpp"
 #include "contactbench/core/surface.hpp"
@@ -18,6 +20,19 @@ namespace contactbench::formats {
 // version is refused by read_project.
 inline constexpr std::string_view project_magic = "# contactbench surface v1";
 inline constexpr std::string_view project_prefix = "# contactbench surface";
+
+// The project format's first two lines: the shape its header promises, its sizes (checked against the
+// caller's), periodicity, quantity (empty: heights) and unit. For a reader of its rows in slabs
+// (core/topography_rows.hpp) as for the whole file.
+struct ProjectHeader {
+  PromisedShape shape;
+  Real lx = 0, ly = 0;
+  bool periodic = false;
+  std::string quantity;
+  std::string unit;
+};
+ProjectHeader read_project_header(const std::filesystem::path& path, std::span<const Line> lines,
+                                  const TopographyReadOptions& options);
 
 // The project format's heights as its one channel, "height" (its size and periodicity with it).
 RawTopography read_project(const std::filesystem::path& path, std::span<const Line> lines,
