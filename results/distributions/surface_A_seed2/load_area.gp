@@ -2,24 +2,24 @@
 # the plots; the data blocks below are the curves of curves.csv (load, A/A0, A/A0 -+ its error estimate,
 # A/A_ref - 1, the reference's relative error estimate).
 $method0 << EOD
-0.001 0.010097234475742015 NaN NaN 0 NaN
-0.01 0.09692281405991345 NaN NaN 0 NaN
+0.001 0.010097234475742015 0.008195721942288377 0.011998747009195653 0 0.18832013241070164
+0.01 0.09692281405991345 0.08038438960592856 0.11346123851389833 0 0.1706350007931214
 EOD
 $method1 << EOD
-0.001 0.01642608642578125 NaN NaN 0.6267906291810805 NaN
-0.01 0.12220382690429688 NaN NaN 0.26083655421679985 NaN
+0.001 0.01642608642578125 NaN NaN 0.6267906291810805 0.18832013241070164
+0.01 0.12220382690429688 NaN NaN 0.26083655421679985 0.1706350007931214
 EOD
 $method2 << EOD
-0.001 0.010885238647460936 NaN NaN 0.07804158392201854 NaN
-0.01 0.08457756042480467 NaN NaN -0.1273720099323311 NaN
+0.001 0.010885238647460936 NaN NaN 0.07804158392201854 0.18832013241070164
+0.01 0.08457756042480467 NaN NaN -0.1273720099323311 0.1706350007931214
 EOD
 $method3 << EOD
-0.001 0.0076123205585588005 NaN NaN -0.2460984661842872 NaN
-0.01 0.0760090292462385 NaN NaN -0.2157777301095175 NaN
+0.001 0.0076123205585588005 NaN NaN -0.2460984661842872 0.18832013241070164
+0.01 0.0760090292462385 NaN NaN -0.2157777301095175 0.1706350007931214
 EOD
 $method4 << EOD
-0.001 0.004601243925781159 NaN NaN -0.544306519093385 NaN
-0.01 0.04055488295248759 NaN NaN -0.5815754696575531 NaN
+0.001 0.004601243925781159 NaN NaN -0.544306519093385 0.18832013241070164
+0.01 0.04055488295248759 NaN NaN -0.5815754696575531 0.1706350007931214
 EOD
 set terminal pngcairo enhanced size 1400,1000 font ',11'
 set output '.load_area.png.partial'
@@ -38,7 +38,8 @@ set title '(a) linear axes'
 set ylabel '{/:Italic A} / {/:Italic A}_0'
 set xrange [0:0.0103]
 set yrange [0:0.12831401824951172]
-plot $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
      $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
      $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
      $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
@@ -49,7 +50,8 @@ set format y '10^{%L}'
 set title '(b) logarithmic axes'
 set xrange [0.0007936507936507937:0.0126]
 set yrange [0.0036517808934771103:0.15397682189941406]
-plot $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
      $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
      $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
      $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
@@ -60,7 +62,8 @@ set format y '%g'
 set yrange [*:*]
 set title '(c) relative error against the reference'
 set ylabel '{/:Italic A} / {/:Italic A}_{ref} - 1'
-plot $method1 using 1:5 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+plot $method0 using 1:(-$6):6 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method1 using 1:5 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
      $method2 using 1:5 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
      $method3 using 1:5 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
      $method4 using 1:5 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
@@ -81,7 +84,8 @@ plot 2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title "bem (reference)" 
      2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' title "plateau" noenhanced, \
      2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' title "plateau_hertz (Hertz-consistent plateaus, this project)" noenhanced, \
      2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' title "persson" noenhanced, \
-     2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' title "gw_mccool" noenhanced
+     2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' title "gw_mccool" noenhanced, \
+     2 with filledcurves y1=3 fc rgb '#b0b0b0' fs transparent solid 0.5 title 'bem: its error estimate (area_fraction_error)' noenhanced
 unset multiplot
 set terminal svg enhanced size 1400,1000 dynamic font ',11'
 set output '.load_area.svg.partial'
@@ -100,7 +104,8 @@ set title '(a) linear axes'
 set ylabel '{/:Italic A} / {/:Italic A}_0'
 set xrange [0:0.0103]
 set yrange [0:0.12831401824951172]
-plot $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
      $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
      $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
      $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
@@ -111,7 +116,8 @@ set format y '10^{%L}'
 set title '(b) logarithmic axes'
 set xrange [0.0007936507936507937:0.0126]
 set yrange [0.0036517808934771103:0.15397682189941406]
-plot $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
      $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
      $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
      $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
@@ -122,7 +128,8 @@ set format y '%g'
 set yrange [*:*]
 set title '(c) relative error against the reference'
 set ylabel '{/:Italic A} / {/:Italic A}_{ref} - 1'
-plot $method1 using 1:5 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+plot $method0 using 1:(-$6):6 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method1 using 1:5 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
      $method2 using 1:5 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
      $method3 using 1:5 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
      $method4 using 1:5 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
@@ -143,6 +150,7 @@ plot 2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title "bem (reference)" 
      2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' title "plateau" noenhanced, \
      2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' title "plateau_hertz (Hertz-consistent plateaus, this project)" noenhanced, \
      2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' title "persson" noenhanced, \
-     2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' title "gw_mccool" noenhanced
+     2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' title "gw_mccool" noenhanced, \
+     2 with filledcurves y1=3 fc rgb '#b0b0b0' fs transparent solid 0.5 title 'bem: its error estimate (area_fraction_error)' noenhanced
 unset multiplot
 unset output

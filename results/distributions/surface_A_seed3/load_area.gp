@@ -2,24 +2,24 @@
 # the plots; the data blocks below are the curves of curves.csv (load, A/A0, A/A0 -+ its error estimate,
 # A/A_ref - 1, the reference's relative error estimate).
 $method0 << EOD
-0.001 0.01007590243813708 NaN NaN 0 NaN
-0.01 0.09763059084855003 NaN NaN 0 NaN
+0.001 0.01007590243813708 0.008050906755640188 0.012100898120633972 0 0.20097412563586617
+0.01 0.09763059084855003 0.0807767405268018 0.11448444117029825 0 0.17262878545816504
 EOD
 $method1 << EOD
-0.001 0.0155487060546875 NaN NaN 0.5431576625668757 NaN
-0.01 0.14486312866210938 NaN NaN 0.48378830244742743 NaN
+0.001 0.0155487060546875 NaN NaN 0.5431576625668757 0.20097412563586617
+0.01 0.14486312866210938 NaN NaN 0.48378830244742743 0.17262878545816504
 EOD
 $method2 << EOD
-0.001 0.010810852050781248 NaN NaN 0.07294131887009936 NaN
-0.01 0.10026168823242185 NaN NaN 0.026949518188959187 NaN
+0.001 0.010810852050781248 NaN NaN 0.07294131887009936 0.20097412563586617
+0.01 0.10026168823242185 NaN NaN 0.026949518188959187 0.17262878545816504
 EOD
 $method3 << EOD
-0.001 0.007612320558558798 NaN NaN -0.2445023554668092 NaN
-0.01 0.07600902924623845 NaN NaN -0.2214629801416662 NaN
+0.001 0.007612320558558798 NaN NaN -0.2445023554668092 0.20097412563586617
+0.01 0.07600902924623845 NaN NaN -0.2214629801416662 0.17262878545816504
 EOD
 $method4 << EOD
-0.001 0.0046012439257811545 NaN NaN -0.5433417548421725 NaN
-0.01 0.040554882952487534 NaN NaN -0.5846088546632017 NaN
+0.001 0.0046012439257811545 NaN NaN -0.5433417548421725 0.20097412563586617
+0.01 0.040554882952487534 NaN NaN -0.5846088546632017 0.17262878545816504
 EOD
 set terminal pngcairo enhanced size 1400,1000 font ',11'
 set output '.load_area.png.partial'
@@ -38,7 +38,8 @@ set title '(a) linear axes'
 set ylabel '{/:Italic A} / {/:Italic A}_0'
 set xrange [0:0.0103]
 set yrange [0:0.15210628509521484]
-plot $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
      $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
      $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
      $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
@@ -49,7 +50,8 @@ set format y '10^{%L}'
 set title '(b) logarithmic axes'
 set xrange [0.0007936507936507937:0.0126]
 set yrange [0.003651780893477107:0.1825275421142578]
-plot $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
      $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
      $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
      $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
@@ -60,7 +62,8 @@ set format y '%g'
 set yrange [*:*]
 set title '(c) relative error against the reference'
 set ylabel '{/:Italic A} / {/:Italic A}_{ref} - 1'
-plot $method1 using 1:5 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+plot $method0 using 1:(-$6):6 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method1 using 1:5 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
      $method2 using 1:5 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
      $method3 using 1:5 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
      $method4 using 1:5 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
@@ -81,7 +84,8 @@ plot 2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title "bem (reference)" 
      2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' title "plateau" noenhanced, \
      2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' title "plateau_hertz (Hertz-consistent plateaus, this project)" noenhanced, \
      2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' title "persson" noenhanced, \
-     2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' title "gw_mccool" noenhanced
+     2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' title "gw_mccool" noenhanced, \
+     2 with filledcurves y1=3 fc rgb '#b0b0b0' fs transparent solid 0.5 title 'bem: its error estimate (area_fraction_error)' noenhanced
 unset multiplot
 set terminal svg enhanced size 1400,1000 dynamic font ',11'
 set output '.load_area.svg.partial'
@@ -100,7 +104,8 @@ set title '(a) linear axes'
 set ylabel '{/:Italic A} / {/:Italic A}_0'
 set xrange [0:0.0103]
 set yrange [0:0.15210628509521484]
-plot $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
      $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
      $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
      $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
@@ -111,7 +116,8 @@ set format y '10^{%L}'
 set title '(b) logarithmic axes'
 set xrange [0.0007936507936507937:0.0126]
 set yrange [0.003651780893477107:0.1825275421142578]
-plot $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
+plot $method0 using 1:3:4 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method0 using 1:2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' notitle, \
      $method1 using 1:2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
      $method2 using 1:2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
      $method3 using 1:2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
@@ -122,7 +128,8 @@ set format y '%g'
 set yrange [*:*]
 set title '(c) relative error against the reference'
 set ylabel '{/:Italic A} / {/:Italic A}_{ref} - 1'
-plot $method1 using 1:5 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
+plot $method0 using 1:(-$6):6 with filledcurves fc rgb '#b0b0b0' fs transparent solid 0.5 notitle, \
+     $method1 using 1:5 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' notitle, \
      $method2 using 1:5 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' notitle, \
      $method3 using 1:5 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' notitle, \
      $method4 using 1:5 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' notitle, \
@@ -143,6 +150,7 @@ plot 2 with linespoints lw 3 pt 7 ps 0.8 lc rgb 'black' title "bem (reference)" 
      2 with linespoints lw 1.5 pt 2 ps 0.9 lc rgb '#d55e00' title "plateau" noenhanced, \
      2 with linespoints lw 1.5 pt 3 ps 0.9 lc rgb '#009e73' title "plateau_hertz (Hertz-consistent plateaus, this project)" noenhanced, \
      2 with linespoints lw 1.5 pt 4 ps 0.9 lc rgb '#cc79a7' title "persson" noenhanced, \
-     2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' title "gw_mccool" noenhanced
+     2 with linespoints lw 1.5 pt 5 ps 0.9 lc rgb '#e69f00' title "gw_mccool" noenhanced, \
+     2 with filledcurves y1=3 fc rgb '#b0b0b0' fs transparent solid 0.5 title 'bem: its error estimate (area_fraction_error)' noenhanced
 unset multiplot
 unset output
