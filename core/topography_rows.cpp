@@ -38,12 +38,7 @@ std::unique_ptr<TopographyRowReader> TopographyRowReader::open(const fs::path& p
   }
   if (lines.empty()) throw InputError(path, 0, "is empty");
   const formats::ProjectHeader header = formats::read_project_header(path, lines, options);
-  if (header.unit != "m")
-    throw InputError(
-        path, 2,
-        "is a " + header.quantity + " field [" + header.unit +
-            "] written by contactbench, not heights in metres; draw it with `contactbench plot " +
-            path.string() + "`");
+  formats::require_height_unit(path, header.quantity, header.unit);
   reader->shape_ = header.shape;
   reader->grid_ = Grid{.nx = header.shape.cols,
                        .ny = header.shape.rows,

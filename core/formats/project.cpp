@@ -107,16 +107,20 @@ ProjectHeader read_project_header(const fs::path& path, std::span<const Line> li
           std::string(unit.value)};
 }
 
+// A field in metres (the gap) reads as heights; any other is not a surface.
+void require_height_unit(const fs::path& path, const std::string& quantity, const std::string& unit) {
+  if (unit != "m")
+    throw InputError(
+        path, 2,
+        "is a " + quantity + " field [" + unit +
+            "] written by contactbench, not heights in metres; draw it with `contactbench plot " +
+            path.string() + "`");
+}
+
 RawTopography read_project(const fs::path& path, std::span<const Line> lines,
                            const TopographyReadOptions& options) {
   ProjectValues read = read_project_values(path, lines, options, header_text_syntax());
-  // A field in metres (the gap) reads as heights; any other is not a surface.
-  if (read.unit != "m")
-    throw InputError(
-        path, 2,
-        "is a " + read.quantity + " field [" + read.unit +
-            "] written by contactbench, not heights in metres; draw it with `contactbench plot " +
-            path.string() + "`");
+  require_height_unit(path, read.quantity, read.unit);
   RawTopography raw = single_height_channel(std::move(read.values), "m", read.lx, read.ly);
   raw.periodic = read.periodic;
   return raw;

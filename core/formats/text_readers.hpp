@@ -33,6 +33,9 @@ struct ProjectHeader {
 };
 ProjectHeader read_project_header(const std::filesystem::path& path, std::span<const Line> lines,
                                   const TopographyReadOptions& options);
+// Refuses a project file whose field is not in metres (a pressure map, say) as a surface, naming the file.
+void require_height_unit(const std::filesystem::path& path, const std::string& quantity,
+                         const std::string& unit);
 
 // The project format's heights as its one channel, "height" (its size and periodicity with it).
 RawTopography read_project(const std::filesystem::path& path, std::span<const Line> lines,
