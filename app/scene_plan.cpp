@@ -23,10 +23,12 @@ SceneContext method_context(const SceneContext& scene_context, const Scene& scen
   return context;
 }
 
-ScenePlan plan_scene(const Scene& scene, const Grid& surface) {
+ScenePlan plan_scene(const Scene& scene, const Grid& surface, bool distributed) {
   ScenePlan plan;
-  plan.context = {
-      .surface_points = surface.nx, .surface_periodic = surface.periodic, .load_path = scene.load_path};
+  plan.context = {.surface_points = surface.nx,
+                  .surface_periodic = surface.periodic,
+                  .load_path = scene.load_path,
+                  .distributed = distributed};
   for (const MethodSpec& method : scene.methods) {
     const MethodNeeds needs = method.method->needs(method_context(plan.context, scene, method));
     ScenePlan::Stages stages;
