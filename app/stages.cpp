@@ -79,7 +79,7 @@ std::string BemStage::name() const {
   text << "bem (";
   if (settings.refine > 0) text << "refined to " << settings.refine << " x " << settings.refine << ", ";
   text << solver_name(solver.solver) << ", "
-       << (periodic                        ? "periodic"
+       << (periodic                            ? "periodic"
            : settings.mirrored.value_or(false) ? "non-periodic mirrored"
            : as_is_because.empty()             ? "non-periodic"
                                                : "non-periodic as is (" + as_is_because + ")")

@@ -79,10 +79,10 @@ struct BemProducts {
   double seconds = 0;                                        // refinement + solves + statistics
   Index points = 0;                                          // nodes of the grid solved on
   bool periodic = true;                                      // the boundary solved
-  bool mirrored = false;       // non-periodic, solved as its mirrored extension (BemStage::settings.mirrored)
-  std::string as_is_because;   // BemStage::as_is_because
-  std::optional<Real> hardness;                              // the cap solved with [Pa]; none: elastic
-  std::optional<AdhesionLaw> adhesion;                       // the attraction solved with; none: without
+  bool mirrored = false;      // non-periodic, solved as its mirrored extension (BemStage::settings.mirrored)
+  std::string as_is_because;  // BemStage::as_is_because
+  std::optional<Real> hardness;         // the cap solved with [Pa]; none: elastic
+  std::optional<AdhesionLaw> adhesion;  // the attraction solved with; none: without
   std::vector<Real>
       load_path;  // the path solved (BemStage::load_path): solutions are in its order; empty: none
   std::vector<AdhesiveLoad> adhesive;  // per load, with an attraction
