@@ -339,15 +339,16 @@ class BemMethod final : public Method {
         curve.area_fraction_error.push_back(corrected_area_error(nodes[k], corrected[k]));
     curve.area_fraction_nodes = nodes;
     curve.accepts_unconverged = settings_.allow_unconverged;
+    // The boundary as solved (resolve_boundary); the fallback's reason only when this method left it unset.
     BemStage stage{.settings = settings_,
                    .periodic = products.periodic,
-                   .as_is_because = products.as_is_because,
+                   .as_is_because = settings_.mirrored ? std::string() : products.as_is_because,
                    .hardness = products.hardness,
                    .adhesion = products.adhesion,
                    .load_path = products.load_path,
                    .distributions = std::nullopt,
                    .approach_retract = std::nullopt};
-    stage.settings.mirrored = products.mirrored;  // as solved (resolve_boundary)
+    stage.settings.mirrored = products.mirrored;
     curve.parameters =
         "BEM " + stage.name().substr(4) +
         (settings_.extrapolate ? std::string(", perimeter-corrected area in area_fraction_corrected")
