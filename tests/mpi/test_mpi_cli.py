@@ -337,8 +337,9 @@ with tempfile.TemporaryDirectory() as work:
     csv_surface = os.path.join(work, "surface.csv")
     with open(csv_surface, "w") as f:
         f.write("\n".join(",".join(line.split()) for line in text_lines[2:]) + "\n")
+    # The CSV matrix is a record, not periodic: its BEM declared as is, the one boundary the ranks have.
     file_scene = ('[material]\nE = 100e9\nnu = 0.3\n[loads]\nvalues = [1e-3, 1e-2]\n[methods.bem]\n'
-                  '[methods.plateau]\nmethod = "plateau"\n')
+                  'boundary = "as_is"\n[methods.plateau]\nmethod = "plateau"\n')
     for name, source, root_bytes in (("project", f'file = "{surface}"', 0),
                                      ("csv", f'file = "{csv_surface}"\nsize = [1e-4, 0.78125e-4]', 64 * 50 * 8)):
         scene_path = os.path.join(work, f"file_{name}.toml")
