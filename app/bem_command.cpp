@@ -171,6 +171,10 @@ void run_approach_retract(const BemOptions& o, const Scene& scene, const std::st
                               .bem;
   if (stage.settings.refine > 0 || stage.settings.extrapolate || !stage.settings.fields.empty())
     throw Error("--approach-retract: --refine, --extrapolate and --fields are not taken along a path");
+  // Not through the scene's preflight: a declared mirror, unavailable with adhesion, is refused here.
+  if (stage.settings.mirrored.value_or(false))
+    throw Error(
+        "--approach-retract: --boundary mirrored is not taken with adhesion (the path is solved as is)");
   const RunObserver observer = terminal_observer(command);
   AdhesiveSolverOptions options{.contact = stage.settings.solver, .method = stage.settings.adhesive_method};
   options.contact.warning = observer.warning;

@@ -23,10 +23,12 @@ SceneContext method_context(const SceneContext& scene_context, const Scene& scen
   return context;
 }
 
-ScenePlan plan_scene(const Scene& scene, const Grid& surface) {
+ScenePlan plan_scene(const Scene& scene, const Grid& surface, bool distributed) {
   ScenePlan plan;
-  plan.context = {
-      .surface_points = surface.nx, .surface_periodic = surface.periodic, .load_path = scene.load_path};
+  plan.context = {.surface_points = surface.nx,
+                  .surface_periodic = surface.periodic,
+                  .load_path = scene.load_path,
+                  .distributed = distributed};
   for (const MethodSpec& method : scene.methods) {
     const MethodNeeds needs = method.method->needs(method_context(plan.context, scene, method));
     ScenePlan::Stages stages;
@@ -42,7 +44,11 @@ ScenePlan plan_scene(const Scene& scene, const Grid& surface) {
       if (stage.adhesion) stage.approach_retract = scene.approach_retract;  // an adhesive stage's path
       stages.bem = index_of(plan.bems, PlannedBem{stage, {}},
                             [](const PlannedBem& a, const PlannedBem& b) { return a.stage == b.stage; });
-      plan.bems[static_cast<std::size_t>(stages.bem)].connectivities.insert(needs.bem_connectivity);
+      PlannedBem& planned = plan.bems[static_cast<std::size_t>(stages.bem)];
+      planned.connectivities.insert(needs.bem_connectivity);
+      // A declared "as_is" and an unset boundary that fell back to it are one solve; the shared stage keeps
+      // the fallback's reason, which the unset method's parameters print (the declared one's do not).
+      if (planned.stage.as_is_because.empty()) planned.stage.as_is_because = stage.as_is_because;
     }
     plan.of_method.push_back(stages);
   }

@@ -38,7 +38,8 @@ struct ScenePlan {
 SceneContext method_context(const SceneContext& scene_context, const Scene& scene, const MethodSpec& method);
 
 // Pure: reads the methods' needs for the scene's surface (made already: its grid says whether it is
-// periodic), runs nothing, refuses nothing (the preflight does, app/scene_run.hpp).
-ScenePlan plan_scene(const Scene& scene, const Grid& surface);
+// periodic), runs nothing, refuses nothing (the preflight does, app/scene_run.hpp). `distributed`: the
+// stages run on several MPI ranks (a default the distributed solver lacks resolves otherwise there).
+ScenePlan plan_scene(const Scene& scene, const Grid& surface, bool distributed = false);
 
 }  // namespace contactbench

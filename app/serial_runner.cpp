@@ -61,7 +61,7 @@ class SerialRunner final : public StageRunner {
                                     context.threads));
     // boundary = "mirrored": `solved` is the even extension (app/stages.cpp); everything after the solve is
     // taken on the original patch, its first quarter.
-    const bool mirrored = stage.settings.mirrored;
+    const bool mirrored = stage.settings.mirrored.value_or(false);
     const Grid judged = mirrored ? Grid{.nx = solved.grid().nx / 2,
                                         .ny = solved.grid().ny / 2,
                                         .lx = solved.grid().lx / 2,

@@ -100,17 +100,34 @@ Setting<Owner> bind(Setting<Owner> row, Field field) {
   return row;
 }
 
-// A choice stored as an enum or a bool (the index of its name in `choices`).
+template <class T>
+struct ChoiceField {  // a choice held as T itself
+  using type = T;
+};
+template <class T>
+struct ChoiceField<std::optional<T>> {  // or unset, its default resolved elsewhere (e.g. boundary)
+  using type = T;
+};
+
+// A choice stored as an enum or a bool (the index of its name in `choices`), or as an optional one.
 template <class Owner, class Field>
 Setting<Owner> bind_choice(Setting<Owner> row, Field field) {
   const std::vector<std::string> names = row.choices;
   row.get = [field, names](const Owner& o) -> std::optional<SettingValue> {
-    return SettingValue(names.at(static_cast<std::size_t>(field(const_cast<Owner&>(o)))));
+    const auto& value = field(const_cast<Owner&>(o));  // read only
+    using T = std::decay_t<decltype(value)>;
+    if constexpr (std::is_same_v<T, typename ChoiceField<T>::type>) {
+      return SettingValue(names.at(static_cast<std::size_t>(value)));
+    } else {
+      if (!value) return std::nullopt;
+      return SettingValue(names.at(static_cast<std::size_t>(*value)));
+    }
   };
   row.set = [field, names](Owner& o, const SettingValue& v) {
     auto& value = field(o);
+    using T = typename ChoiceField<std::decay_t<decltype(value)>>::type;
     for (std::size_t k = 0; k < names.size(); ++k)
-      if (names[k] == std::get<std::string>(v)) value = static_cast<std::decay_t<decltype(value)>>(k);
+      if (names[k] == std::get<std::string>(v)) value = static_cast<T>(k);
   };
   return row;
 }

@@ -79,9 +79,10 @@ std::string BemStage::name() const {
   text << "bem (";
   if (settings.refine > 0) text << "refined to " << settings.refine << " x " << settings.refine << ", ";
   text << solver_name(solver.solver) << ", "
-       << (periodic            ? "periodic"
-           : settings.mirrored ? "non-periodic mirrored"
-                               : "non-periodic")
+       << (periodic                            ? "periodic"
+           : settings.mirrored.value_or(false) ? "non-periodic mirrored"
+           : as_is_because.empty()             ? "non-periodic"
+                                               : "non-periodic as is (" + as_is_because + ")")
        << ", tolerance " << solver.tolerance;
   if (solver.single_precision) text << ", single precision";
   if (hardness) text << ", hardness " << *hardness << " Pa";
@@ -145,7 +146,8 @@ BemProducts run_bem_stage(const BemStage& stage, const SceneSurface& scene_surfa
   BemProducts products;
   const Index refined = stage.settings.refine;
   // The resident slabs solve as they are: no whole copy here (docs/mpi.md).
-  const bool on_slabs = scene_surface.resident() && refined == 0 && !stage.settings.mirrored;
+  const bool mirrored = stage.settings.mirrored.value_or(false);  // resolved (resolve_boundary)
+  const bool on_slabs = scene_surface.resident() && refined == 0 && !mirrored;
   std::optional<Surface> solved;
   Grid solved_grid = scene_surface.grid();
   if (!on_slabs) {
@@ -161,11 +163,13 @@ BemProducts run_bem_stage(const BemStage& stage, const SceneSurface& scene_surfa
   products.points = solved_grid.points();  // with boundary = "mirrored": the patch's, which is judged
   // boundary = "mirrored" (preflight: non-periodic problems only): the solver sees the periodic even
   // extension; solve_loads hands back the solution and statistics on the original patch.
-  if (stage.settings.mirrored) {
+  if (mirrored) {
     solved = mirrored_surface(*solved);
     solved_grid = solved->grid();
   }
   products.periodic = stage.periodic;
+  products.mirrored = mirrored;
+  products.as_is_because = stage.as_is_because;
   products.hardness = stage.hardness;
   products.adhesion = stage.adhesion;
   products.load_path = stage.load_path;

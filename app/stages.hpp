@@ -46,8 +46,10 @@ struct SweepProducts {
 // defaults, since labelling is not part of the solve and methods differing only there share it), the
 // boundary resolved against the surface, and the interface's hardness as the method runs it.
 struct BemStage {
-  BemSettings settings;
+  BemSettings settings;  // settings.mirrored resolved (resolve_boundary)
   bool periodic = true;
+  // An unset boundary on a non-periodic problem solved as is: why (resolve_boundary); printed by name().
+  std::string as_is_because;
   std::optional<Real> hardness;         // [Pa]: perfectly plastic pressure cap; absent = purely elastic
   std::optional<AdhesionLaw> adhesion;  // absent: non-adhesive (bem/adhesive_solver.hpp)
   // The scene's load path (loads.path = "as listed"), P/(E* A0) in the order solved; empty: the scene's loads
@@ -77,8 +79,10 @@ struct BemProducts {
   double seconds = 0;                                        // refinement + solves + statistics
   Index points = 0;                                          // nodes of the grid solved on
   bool periodic = true;                                      // the boundary solved
-  std::optional<Real> hardness;                              // the cap solved with [Pa]; none: elastic
-  std::optional<AdhesionLaw> adhesion;                       // the attraction solved with; none: without
+  bool mirrored = false;      // non-periodic, solved as its mirrored extension (BemStage::settings.mirrored)
+  std::string as_is_because;  // BemStage::as_is_because
+  std::optional<Real> hardness;         // the cap solved with [Pa]; none: elastic
+  std::optional<AdhesionLaw> adhesion;  // the attraction solved with; none: without
   std::vector<Real>
       load_path;  // the path solved (BemStage::load_path): solutions are in its order; empty: none
   std::vector<AdhesiveLoad> adhesive;  // per load, with an attraction

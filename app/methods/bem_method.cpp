@@ -140,6 +140,11 @@ class BemMethod final : public Method {
     stage.settings = default_settings(bem_settings());
     copy_settings(bem_settings(), SettingScope::solve, settings_, stage.settings);
     stage.periodic = settings_.periodic.value_or(context.surface_periodic);
+    // Resolved here, so that an unset boundary and its value spelled out share one solve.
+    const ResolvedBoundary boundary = resolve_boundary(
+        settings_, stage.periodic, context.interface.adhesion.has_value(), context.distributed);
+    stage.settings.mirrored = boundary.mirrored;
+    stage.as_is_because = boundary.as_is_because;
     stage.hardness = context.interface.hardness;  // absent, or ignored: purely elastic
     stage.adhesion = context.interface.adhesion;  // absent, or ignored: non-adhesive
     stage.load_path = context.load_path;          // empty: the scene's loads, ascending
@@ -188,7 +193,7 @@ class BemMethod final : public Method {
                     "the extrapolated area is not defined along a load path (the finer grid would flow "
                     "differently)",
                     "extrapolate = false, or loads.path = \"ascending\"");
-    if (settings_.mirrored) {
+    if (settings_.mirrored.value_or(false)) {  // declared: refused where unavailable (unset: falls back)
       // Mirroring a periodic surface would change it (its seams become reflections): refused, not a no-op,
       // so that a scene never reads as mirrored when it was not (docs/solvers.md "Mirrored boundary").
       if (settings_.periodic.value_or(check.surface.grid().periodic))
@@ -334,13 +339,16 @@ class BemMethod final : public Method {
         curve.area_fraction_error.push_back(corrected_area_error(nodes[k], corrected[k]));
     curve.area_fraction_nodes = nodes;
     curve.accepts_unconverged = settings_.allow_unconverged;
+    // The boundary as solved (resolve_boundary); the fallback's reason only when this method left it unset.
     BemStage stage{.settings = settings_,
                    .periodic = products.periodic,
+                   .as_is_because = settings_.mirrored ? std::string() : products.as_is_because,
                    .hardness = products.hardness,
                    .adhesion = products.adhesion,
                    .load_path = products.load_path,
                    .distributions = std::nullopt,
                    .approach_retract = std::nullopt};
+    stage.settings.mirrored = products.mirrored;
     curve.parameters =
         "BEM " + stage.name().substr(4) +
         (settings_.extrapolate ? std::string(", perimeter-corrected area in area_fraction_corrected")
@@ -456,8 +464,12 @@ class BemMethod final : public Method {
     const Index ny = settings_.refine > 0 ? settings_.refine : grid.ny;
     const bool third_finer = settings_.extrapolate && uses_third_grid(settings_.error_estimate) &&
                              !third_grid_is_coarser(nx, ny, grid.nx, grid.ny);
-    const Index side = third_finer ? 4 : settings_.extrapolate || settings_.mirrored ? 2 : 1;
-    const bool periodic = settings_.mirrored || settings_.periodic.value_or(grid.periodic);
+    const bool mirrored =
+        resolve_boundary(settings_, settings_.periodic.value_or(grid.periodic),
+                         check.interface.adhesion.has_value(), check.runner && check.runner->ranks() > 1)
+            .mirrored;
+    const Index side = third_finer ? 4 : settings_.extrapolate || mirrored ? 2 : 1;
+    const bool periodic = mirrored || settings_.periodic.value_or(grid.periodic);
     std::uintmax_t per_point =
         settings_.solver.single_precision ? (periodic ? 115 : 135) : (periodic ? 150 : 175);
     if (settings_.solver.solver == SolverKind::active_set)
@@ -475,7 +487,7 @@ class BemMethod final : public Method {
     // stage's copy of them, unless the surface stays on the ranks' slabs and the stage solves it as it is;
     // the pressure and gap it gathers for `fields` or the distributions.
     const bool on_slabs =
-        check.surface.resident() && settings_.refine == 0 && !settings_.extrapolate && !settings_.mirrored;
+        check.surface.resident() && settings_.refine == 0 && !settings_.extrapolate && !mirrored;
     const auto scene_points = static_cast<std::uintmax_t>(grid.points());
     std::uintmax_t root_bytes =
         on_slabs ? 0 : saturating_sum(saturating_product(scene_points, 8), saturating_product(points, 8));

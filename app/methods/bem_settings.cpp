@@ -79,8 +79,11 @@ SettingTable<BemSettings> make_table() {
   table.push_back(bind_choice(
       Row{.key = "boundary",
           .kind = SettingKind::choice,
-          .accepted = "`\"as_is\"`, `\"mirrored\"` (`\"mirrored\"` only for the non-periodic problem)",
-          .default_value = std::string("as_is"),
+          .accepted = "`\"as_is\"`, `\"mirrored\"` (`\"mirrored\"` only for the non-periodic problem, "
+                      "without adhesion, residual_topography, extrapolate and mpiexec)",
+          .default_text =
+              "`\"mirrored\"` for the non-periodic problem where it is accepted, else `\"as_is\"` (the run's "
+              "parameters say which, and why)",
           .doc =
               "the edges of a non-periodic problem: `\"as_is\"` the finite patch pressed into the half-space "
               "(its edges act like a punch's), `\"mirrored\"` the patch extended evenly to twice its points "
@@ -88,6 +91,7 @@ SettingTable<BemSettings> make_table() {
               "side and solved periodically (4 times the points), every statistic taken on the original "
               "patch (docs/solvers.md \"Mirrored boundary\"; results/studies/edges)",
           .flag = {"--boundary"},
+          .distributed_choices = {"as_is"},
           .choices = {"as_is", "mirrored"}},
       [](BemSettings & s) -> auto& { return s.mirrored; }));
   table.push_back(bind_choice(
@@ -262,14 +266,29 @@ void finish_bem_settings(
       problem("tolerance", "out of range: got " + exact_number(settings.solver.tolerance),
               "a number in [1e-06, 0.01] (single precision cannot resolve less)");
   }
-  if (settings.mirrored && settings.extrapolate)
+  if (settings.mirrored.value_or(false) && settings.extrapolate)
     problem("boundary",
             "boundary = \"mirrored\" and extrapolate = true: the extrapolation's finer grids "
             "are Fourier-refined from a periodic surface, not mirrored",
-            "boundary = \"as_is\" (the default), or extrapolate = false");
+            "boundary = \"as_is\", or extrapolate = false");
   if (settings.node_area && settings.extrapolate)
     problem("area", "area = \"nodes\" and extrapolate = true ask for two different compared areas",
             "area = \"corrected\" (the default) with extrapolate = true, or extrapolate = false");
+}
+
+ResolvedBoundary resolve_boundary(const BemSettings& settings, bool periodic, bool adhesion,
+                                  bool distributed) {
+  if (settings.mirrored) return {.mirrored = *settings.mirrored, .as_is_because = {}};
+  if (periodic) return {};  // no edges: nothing to choose
+  const auto as_is = [](std::string why) {
+    return ResolvedBoundary{.mirrored = false,
+                            .as_is_because = "boundary unset, and \"mirrored\" is not available " + why};
+  };
+  if (adhesion) return as_is("with adhesion");
+  if (!settings.residual_topography.empty()) return as_is("with residual_topography");
+  if (settings.extrapolate) return as_is("with extrapolate = true");
+  if (distributed) return as_is("on the distributed solver (mpiexec)");
+  return {.mirrored = true, .as_is_because = {}};
 }
 
 }  // namespace contactbench

@@ -35,8 +35,9 @@ struct BemSettings {
   bool node_area = false;  // area = "nodes": compared by the node count (a node-based FE model's area)
   bool allow_unconverged = false;  // unconverged loads marked, the run exits 0
   // boundary = "mirrored": a non-periodic surface solved as its periodic even extension to twice the points
-  // a side, judged on the original patch (app/mirrored_boundary.hpp); false: "as_is", the finite patch
-  bool mirrored = false;
+  // a side, judged on the original patch (app/mirrored_boundary.hpp); false: "as_is", the finite patch;
+  // unset: resolve_boundary's default. A stage's settings hold the resolved value.
+  std::optional<bool> mirrored;
   // With interface.adhesion: how the adhesive problem is solved (bem/adhesive_solver.hpp)
   AdhesiveMethod adhesive_method = AdhesiveMethod::fixed_point;
 };
@@ -51,6 +52,18 @@ inline bool third_grid_is_coarser(Index solved_nx, Index solved_ny, Index surfac
   return solved_nx % 2 == 0 && solved_ny % 2 == 0 && solved_nx / 2 >= surface_nx &&
          solved_ny / 2 >= surface_ny;
 }
+
+// The boundary a BEM stage solves (docs/solvers.md "Mirrored boundary"): the declared one when `boundary`
+// is given; unset, "mirrored" on a non-periodic problem where it is available (results/studies/edges: the
+// treatment closest to the periodic truth), else "as_is" with the reason, which the run's parameters print,
+// so that an unset boundary never changes silently. A declared "mirrored" where it is not available is the
+// preflight's refusal, not a fallback.
+struct ResolvedBoundary {
+  bool mirrored = false;
+  std::string as_is_because;  // unset boundary, non-periodic problem, solved as is: why (else empty)
+};
+ResolvedBoundary resolve_boundary(const BemSettings& settings, bool periodic, bool adhesion,
+                                  bool distributed);
 
 // The tolerances a scene, the command line or Python may ask for: in double precision [1e-13, 1e-2] (above,
 // a solve stops far from the solution; below, the relative change of a sum over millions of nodes is

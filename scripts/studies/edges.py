@@ -137,7 +137,7 @@ def main():
           "0.78 um, sigma 0.5 um, qr = 8 x 2 pi/L of the large surface, qs = Nyquist; families {f}; seeds 201 ... "
           "{s}), solved at the mean pressure the large periodic solve carries inside the patch. Error: contact "
           "fraction (node count) inside the judged region against the large solve's in the same region, mean "
-          "[min, max] over surfaces (docs/studies.md).".format(
+          "[min, max] over surfaces and seeds (docs/studies.md).".format(
               p=args.patch, L=args.large, f=", ".join(n for n, _ in FAMILIES), s=200 + args.seeds), "",
           "| treatment | judged region | " + " | ".join("error at {:g}".format(l) for l in LOADS) + " |",
           "|---|---:|" + "---:|" * len(LOADS)]
@@ -150,14 +150,14 @@ def main():
             cells.append("{:+.1f} % [{:+.1f}, {:+.1f}]".format(100 * np.mean(e), 100 * min(e), 100 * max(e)))
         md.append("| {} | {}^2 | {} |".format(t, region, " | ".join(cells)))
     md += ["", "As is: share of the contact and of the load in the outer {} pixels (which are {:.0f} % of the "
-           "patch), non-periodic solve against the periodic truth, mean over surfaces:".format(
+           "patch), non-periodic solve against the periodic truth, mean over surfaces and seeds:".format(
                RING, 100 * (1 - (1 - 2 * RING / args.patch) ** 2)), "",
            "| load | contact share | truth | load share | truth |", "|---:|---:|---:|---:|---:|"]
     for load in LOADS:
         sel = [r for r in rows if r[3] == "as_is" and r[2] == load]
         md.append("| {:g} | {:.1f} % | {:.1f} % | {:.1f} % | {:.1f} % |".format(
             load, *[100 * np.mean([r[i] for r in sel]) for i in (6, 8, 7, 9)]))
-    md += ["", "As is at 2e-2: contact fraction against the distance to the edge, mean over surfaces:", "",
+    md += ["", "As is at 2e-2: contact fraction against the distance to the edge, mean over surfaces and seeds:", "",
            "| pixels from the edge | non-periodic patch | periodic truth | ratio |", "|---|---:|---:|---:|"]
     for (lo, hi), (a, t, n) in sorted(profile.items()):
         md.append("| {}-{} | {:.4f} | {:.4f} | {:.2f} |".format(lo, hi - 1, a / n, t / n, a / t))
