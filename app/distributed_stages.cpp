@@ -15,6 +15,7 @@
 
 #include "contactbench/app/distributions_csv.hpp"
 #include "contactbench/app/load_fields.hpp"
+#include "contactbench/app/mirrored_boundary.hpp"
 #include "contactbench/app/run_observer.hpp"
 #include "contactbench/app/stages.hpp"
 #include "contactbench/bem/solver_registry.hpp"
@@ -26,6 +27,7 @@
 #include "contactbench/mpi/distributed_bem_solver.hpp"
 #include "contactbench/mpi/distributed_contact_statistics.hpp"
 #include "contactbench/mpi/distributed_generation.hpp"
+#include "contactbench/mpi/distributed_mirror.hpp"
 #include "contactbench/mpi/distributed_sweep.hpp"
 #include "contactbench/mpi/environment.hpp"
 #include "contactbench/mpi/slab.hpp"
@@ -266,7 +268,7 @@ Topology topology_of(int connectivity, bool periodic) {
 // ---- The BEM job, run by every rank (rank 0 with the surface and the writer of fields) ----------------
 
 struct BemRequest {
-  Grid grid;
+  Grid grid;  // the problem's: with boundary = "mirrored" the patch, which is judged
   Real estar = 0;
   BemSettings settings;  // its solve settings the distributed solver takes (app/methods/bem_settings.hpp)
   std::optional<Real> hardness;  // the interface's; active_set only (bem_refusal)
@@ -289,6 +291,8 @@ BemRequest broadcast_request(const BemRequest& request) {
     pack_grid(packed, request.grid);
     packed.push_back(request.estar);
     pack_settings(bem_settings(), request.settings, packed);
+    // The boundary as resolved: a setting without a default value, which pack_settings leaves to rank 0.
+    packed.push_back(request.settings.mirrored.value_or(false) ? 1.0 : 0.0);
     packed.insert(packed.end(), {request.hardness ? 1.0 : 0.0, request.hardness.value_or(0.0)});
     packed.insert(
         packed.end(),
@@ -305,6 +309,7 @@ BemRequest broadcast_request(const BemRequest& request) {
   r.grid = in.grid();
   r.estar = in.number();
   in.settings(r.settings);
+  r.settings.mirrored = in.flag();
   const bool capped = in.flag();
   const Real hardness = in.number();
   if (capped) r.hardness = hardness;
@@ -321,6 +326,37 @@ BemRequest broadcast_request(const BemRequest& request) {
   return r;
 }
 
+// A solution on the mirrored extension's slabs made the patch's (app/mirrored_boundary.hpp's patch_of on
+// slabs): its pressure and gap cut to the patch's slabs; the contact and plastic points (p >= hardness, as
+// the solvers count them) and the mean pressure counted there. Collective.
+mpi::DistributedContactSolution on_patch(const mpi::DistributedContactSolution& mirrored,
+                                         mpi::PatchOfMirrored& patch, const Grid& grid,
+                                         std::optional<Real> hardness) {
+  mpi::DistributedContactSolution solved{.pressure = patch.cut(mirrored.pressure),
+                                         .gap = patch.cut(mirrored.gap),
+                                         .mean_pressure = 0,
+                                         .separation = mirrored.separation,
+                                         .contact_points = 0,
+                                         .plastic_points = 0,
+                                         .iterations = mirrored.iterations,
+                                         .change = mirrored.change,
+                                         .residual = mirrored.residual,
+                                         .converged = mirrored.converged};
+  const double cap = hardness.value_or(std::numeric_limits<double>::infinity());
+  double sums[3] = {0, 0, 0};  // contact points, plastic points, pressure
+  for (Index i = 0; i < solved.pressure.size(); ++i) {
+    const double p = solved.pressure.data()[i];
+    sums[0] += p > 0 ? 1 : 0;
+    sums[1] += p >= cap ? 1 : 0;
+    sums[2] += p;
+  }
+  MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_DOUBLE, MPI_SUM, kWorld);
+  solved.contact_points = static_cast<Index>(sums[0]);
+  solved.plastic_points = static_cast<Index>(sums[1]);
+  solved.mean_pressure = sums[2] / static_cast<double>(grid.points());
+  return solved;
+}
+
 // Every load on slabs. Rank 0 passes the surface's heights, the field prefix, a warning sink and what to
 // tell of each load solved (a progress line); the others pass nothing and get nothing back. The only work
 // rank 0 does alone between two collective calls is writing fields: a failure there is broadcast before the
@@ -334,10 +370,21 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
   HeightMap scattered;
   if (!request.resident) scattered = mpi::scatter_from_root(heights ? *heights : HeightMap(), slab, kWorld);
   const HeightMap& local = request.resident ? resident_heights(grid) : scattered;
+  // boundary = "mirrored": the slabs solve the patch's periodic even extension, made from the patch's slabs
+  // (mpi/distributed_mirror.hpp), and everything after a solve is taken on the patch, as one process does
+  // (app/serial_runner.cpp): its fields cut back onto the patch's slabs, counted and labelled there.
+  const bool mirrored = request.settings.mirrored.value_or(false);
+  const HeightMap extension = mirrored ? mpi::mirrored_slab(grid.nx, grid.ny, local, kWorld) : HeightMap();
+  std::optional<mpi::PatchOfMirrored> patch;
+  if (mirrored) patch.emplace(grid.nx, grid.ny, kWorld);
+  const std::uintmax_t held_bytes =
+      static_cast<std::uintmax_t>(local.size() + extension.size()) * sizeof(Real);
+  if (mirrored && !request.resident) HeightMap().swap(scattered);  // the extension holds them now
   BemSolverOptions options = request.settings.solver;
   options.hardness = request.hardness;  // absent: purely elastic (as app/serial_runner.cpp)
   options.warning = warning;
-  mpi::DistributedBemSolver solver(grid, local, request.estar, kWorld, options, request.threads);
+  mpi::DistributedBemSolver solver(mirrored ? mirrored_grid(grid) : grid, mirrored ? extension : local,
+                                   request.estar, kWorld, options, request.threads);
   SolvedLoads result;
   std::exception_ptr failure;
   for (std::size_t k = 0; k < request.mean_pressures.size(); ++k) {
@@ -345,8 +392,11 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
     MPI_Bcast(&go, 1, MPI_INT, 0, kWorld);
     if (!go) break;
     const auto start = Clock::now();
-    const mpi::DistributedContactSolution& solved = solver.solve(request.mean_pressures[k]);
+    const mpi::DistributedContactSolution& as_solved = solver.solve(request.mean_pressures[k]);
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    std::optional<mpi::DistributedContactSolution> patch_solution;
+    if (patch) patch_solution = on_patch(as_solved, *patch, grid, request.hardness);
+    const mpi::DistributedContactSolution& solved = patch_solution ? *patch_solution : as_solved;
     for (const int c : request.connectivities) {
       const ContactStatistics statistics = mpi::distributed_contact_statistics(
           grid, solved.pressure, solved.gap, topology_of(c, grid.periodic), kWorld);
@@ -394,7 +444,7 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
   // solve has made them), its slab of heights, and on rank 0 the whole-surface heights and, when fields or
   // distributions are asked for, the gathered pressure and gap (8 B a point each).
   const bool gathers = request.write_fields || request.measured_load >= 0;
-  unsigned long long bytes = solver.bytes() + static_cast<unsigned long long>(local.size()) * sizeof(Real);
+  unsigned long long bytes = solver.bytes() + held_bytes;
   if (is_root())
     bytes += static_cast<unsigned long long>(request.root_surface_bytes) +
              (gathers ? static_cast<unsigned long long>(grid.points()) * 2 * sizeof(Real) : 0ULL);
@@ -580,11 +630,12 @@ class DistributedRunner final : public StageRunner {
                        .distribution_bins = stage.distributions ? stage.distributions->bins : 0,
                        .mean_pressures = mean_pressures,
                        .connectivities = {connectivities.begin(), connectivities.end()}};
-    // A progress line per load as one process says it (app/serial_runner.cpp), from rank 0.
+    // A progress line per load as one process says it (app/serial_runner.cpp: the grid solved), from rank 0.
+    const Grid shown = stage.settings.mirrored.value_or(false) ? mirrored_grid(solved.grid) : solved.grid;
     const auto start = Clock::now();
     const auto load_solved = [&](std::size_t k, const ContactSolution& solution) {
-      observer.solved(bem_load_progress(stage.name(), solved.grid.nx, solved.grid.ny, k,
-                                        mean_pressures.size(), mean_pressures[k] / estar,
+      observer.solved(bem_load_progress(stage.name(), shown.nx, shown.ny, k, mean_pressures.size(),
+                                        mean_pressures[k] / estar,
                                         static_cast<long long>(solution.iterations), solution.seconds,
                                         std::chrono::duration<double>(Clock::now() - start).count()));
     };

@@ -2,6 +2,11 @@
 
 namespace contactbench {
 
+Grid mirrored_grid(const Grid& patch) {
+  return Grid{
+      .nx = 2 * patch.nx, .ny = 2 * patch.ny, .lx = 2 * patch.lx, .ly = 2 * patch.ly, .periodic = true};
+}
+
 Surface mirrored_surface(const Surface& patch) {
   const Grid& grid = patch.grid();
   const Index nx = grid.nx, ny = grid.ny;
@@ -11,18 +16,16 @@ Surface mirrored_surface(const Surface& patch) {
   extended.block(0, nx, ny, nx) = h.rowwise().reverse();
   extended.block(ny, 0, ny, nx) = h.colwise().reverse();
   extended.block(ny, nx, ny, nx) = h.reverse();
-  return Surface(Grid{.nx = 2 * nx, .ny = 2 * ny, .lx = 2 * grid.lx, .ly = 2 * grid.ly, .periodic = true},
-                 std::move(extended));
+  return Surface(mirrored_grid(grid), std::move(extended));
 }
 
-ContactSolution patch_of(const ContactSolution& mirrored, Index nx, Index ny) {
+ContactSolution patch_of(const ContactSolution& mirrored, Index nx, Index ny, std::optional<Real> hardness) {
   ContactSolution patch = mirrored;
   patch.pressure = mirrored.pressure.block(0, 0, ny, nx);
   patch.gap = mirrored.gap.block(0, 0, ny, nx);
-  if (mirrored.plastic_overlap.size() > 0) {
+  if (mirrored.plastic_overlap.size() > 0)
     patch.plastic_overlap = mirrored.plastic_overlap.block(0, 0, ny, nx);
-    patch.plastic_points = (patch.plastic_overlap.array() > 0).count();
-  }
+  patch.plastic_points = hardness ? (patch.pressure.array() >= *hardness).count() : 0;
   patch.contact_points = (patch.pressure.array() > 0).count();
   patch.mean_pressure = patch.pressure.mean();
   return patch;

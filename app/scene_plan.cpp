@@ -23,12 +23,10 @@ SceneContext method_context(const SceneContext& scene_context, const Scene& scen
   return context;
 }
 
-ScenePlan plan_scene(const Scene& scene, const Grid& surface, bool distributed) {
+ScenePlan plan_scene(const Scene& scene, const Grid& surface) {
   ScenePlan plan;
-  plan.context = {.surface_points = surface.nx,
-                  .surface_periodic = surface.periodic,
-                  .load_path = scene.load_path,
-                  .distributed = distributed};
+  plan.context = {
+      .surface_points = surface.nx, .surface_periodic = surface.periodic, .load_path = scene.load_path};
   for (const MethodSpec& method : scene.methods) {
     const MethodNeeds needs = method.method->needs(method_context(plan.context, scene, method));
     ScenePlan::Stages stages;

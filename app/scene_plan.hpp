@@ -38,8 +38,8 @@ struct ScenePlan {
 SceneContext method_context(const SceneContext& scene_context, const Scene& scene, const MethodSpec& method);
 
 // Pure: reads the methods' needs for the scene's surface (made already: its grid says whether it is
-// periodic), runs nothing, refuses nothing (the preflight does, app/scene_run.hpp). `distributed`: the
-// stages run on several MPI ranks (a default the distributed solver lacks resolves otherwise there).
-ScenePlan plan_scene(const Scene& scene, const Grid& surface, bool distributed = false);
+// periodic), runs nothing, refuses nothing (the preflight does, app/scene_run.hpp). The plan is the same on
+// one process and on MPI ranks, where a stage the ranks cannot run is refused by name.
+ScenePlan plan_scene(const Scene& scene, const Grid& surface);
 
 }  // namespace contactbench

@@ -102,7 +102,7 @@ SceneReport run_scene(const Scene& scene, const RunOptions& options) {
   });
   const SceneSurface& surface = *made;
   report.grid = surface.grid();
-  const ScenePlan plan = plan_scene(scene, surface.grid(), runner.ranks() > 1);
+  const ScenePlan plan = plan_scene(scene, surface.grid());
   double moments_seconds = 0;
   if (plan.moments)
     moments_seconds = run_stage(report, observer, "moments", [&] {

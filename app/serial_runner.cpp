@@ -34,7 +34,13 @@ class SerialRunner final : public StageRunner {
   SolvedLoads solve_loads(const BemStage& stage, const StageSurface& given, Real estar,
                           const std::vector<Real>& mean_pressures, const std::set<int>& connectivities,
                           const std::string& fields, const StageContext& context) const override {
-    const Surface& solved = whole(given);
+    // boundary = "mirrored": the solver sees the patch's periodic even extension (app/mirrored_boundary.hpp);
+    // everything after the solve is taken on the patch, the extension's first quarter.
+    const bool mirrored = stage.settings.mirrored.value_or(false);
+    const Grid& judged = given.grid;
+    const std::optional<Surface> extension =
+        mirrored ? std::optional<Surface>(mirrored_surface(whole(given))) : std::nullopt;
+    const Surface& solved = extension ? *extension : whole(given);
     const auto start = Clock::now();
     const RunObserver quiet;
     const RunObserver& observer = context.observer ? *context.observer : quiet;
@@ -59,15 +65,6 @@ class SerialRunner final : public StageRunner {
       labellers.emplace(c, Labeller(Topology::for_surface(c == 8 ? Connectivity::eight : Connectivity::four,
                                                           stage.periodic),
                                     context.threads));
-    // boundary = "mirrored": `solved` is the even extension (app/stages.cpp); everything after the solve is
-    // taken on the original patch, its first quarter.
-    const bool mirrored = stage.settings.mirrored.value_or(false);
-    const Grid judged = mirrored ? Grid{.nx = solved.grid().nx / 2,
-                                        .ny = solved.grid().ny / 2,
-                                        .lx = solved.grid().lx / 2,
-                                        .ly = solved.grid().ly / 2,
-                                        .periodic = false}
-                                 : solved.grid();
     // The stiffness solves of the stage: planned once, to the stage tolerance (bem/contact_stiffness.hpp;
     // docs/solvers.md, "The stiffness solve").
     std::optional<ContactStiffnessSolver> stiffness_solver;
@@ -96,7 +93,7 @@ class SerialRunner final : public StageRunner {
                         std::to_string(response.residual) + "; its stiffness is left out (NaN)");
         stiffness = response.converged ? response.stiffness : std::nan("");
       }
-      if (mirrored) solution = patch_of(solution, judged.nx, judged.ny);
+      if (mirrored) solution = patch_of(solution, judged.nx, judged.ny, stage.hardness);
       for (auto& [c, labeller] : labellers)
         done.statistics[c].push_back(contact_statistics(solution, labeller));
       if (stiffness) done.stiffness.push_back(*stiffness);

@@ -7,7 +7,6 @@
 #include <optional>
 #include <sstream>
 
-#include "contactbench/app/mirrored_boundary.hpp"
 #include "contactbench/app/stage_runner.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/theories/plateau_model.hpp"
@@ -147,7 +146,7 @@ BemProducts run_bem_stage(const BemStage& stage, const SceneSurface& scene_surfa
   const Index refined = stage.settings.refine;
   // The resident slabs solve as they are: no whole copy here (docs/mpi.md).
   const bool mirrored = stage.settings.mirrored.value_or(false);  // resolved (resolve_boundary)
-  const bool on_slabs = scene_surface.resident() && refined == 0 && !mirrored;
+  const bool on_slabs = scene_surface.resident() && refined == 0;
   std::optional<Surface> solved;
   Grid solved_grid = scene_surface.grid();
   if (!on_slabs) {
@@ -160,13 +159,9 @@ BemProducts run_bem_stage(const BemStage& stage, const SceneSurface& scene_surfa
     solved_grid.periodic = stage.periodic;
     if (solved) solved = solved->with_periodic(stage.periodic);
   }
-  products.points = solved_grid.points();  // with boundary = "mirrored": the patch's, which is judged
-  // boundary = "mirrored" (preflight: non-periodic problems only): the solver sees the periodic even
-  // extension; solve_loads hands back the solution and statistics on the original patch.
-  if (mirrored) {
-    solved = mirrored_surface(*solved);
-    solved_grid = solved->grid();
-  }
+  // boundary = "mirrored" (preflight: non-periodic problems only): the runner solves the periodic even
+  // extension of this patch and hands back the solution and statistics on the patch, which is judged.
+  products.points = solved_grid.points();
   products.periodic = stage.periodic;
   products.mirrored = mirrored;
   products.as_is_because = stage.as_is_because;

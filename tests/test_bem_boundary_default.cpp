@@ -31,10 +31,10 @@ BemSettings unset_boundary() {
 TEST(BemBoundaryDefault, UnsetResolvesMirroredOnlyForANonPeriodicProblemWithoutWhatTheMirrorLacks) {
   const BemSettings plain = unset_boundary();
   // Periodic: no edges, nothing to choose, nothing to explain.
-  const ResolvedBoundary periodic = resolve_boundary(plain, true, false, false);
+  const ResolvedBoundary periodic = resolve_boundary(plain, true, false);
   EXPECT_FALSE(periodic.mirrored);
   EXPECT_TRUE(periodic.as_is_because.empty()) << periodic.as_is_because;
-  const ResolvedBoundary record = resolve_boundary(plain, false, false, false);
+  const ResolvedBoundary record = resolve_boundary(plain, false, false);
   EXPECT_TRUE(record.mirrored);
   EXPECT_TRUE(record.as_is_because.empty()) << record.as_is_because;
 
@@ -49,10 +49,9 @@ TEST(BemBoundaryDefault, UnsetResolvesMirroredOnlyForANonPeriodicProblemWithoutW
     const char* named;
   };
   const std::vector<Case> cases = {
-      {"adhesion", resolve_boundary(plain, false, true, false), "adhesion"},
-      {"residual_topography", resolve_boundary(residual, false, false, false), "residual_topography"},
-      {"extrapolate", resolve_boundary(extrapolated, false, false, false), "extrapolate = true"},
-      {"distributed", resolve_boundary(plain, false, false, true), "mpiexec"},
+      {"adhesion", resolve_boundary(plain, false, true), "adhesion"},
+      {"residual_topography", resolve_boundary(residual, false, false), "residual_topography"},
+      {"extrapolate", resolve_boundary(extrapolated, false, false), "extrapolate = true"},
   };
   for (const Case& c : cases) {
     EXPECT_FALSE(c.resolved.mirrored) << c.what;
@@ -60,14 +59,14 @@ TEST(BemBoundaryDefault, UnsetResolvesMirroredOnlyForANonPeriodicProblemWithoutW
     EXPECT_TRUE(contains(c.resolved.as_is_because, "boundary unset")) << c.resolved.as_is_because;
   }
   // The same on a periodic problem: still nothing to choose or explain.
-  EXPECT_TRUE(resolve_boundary(extrapolated, true, true, true).as_is_because.empty());
+  EXPECT_TRUE(resolve_boundary(extrapolated, true, true).as_is_because.empty());
 }
 
 TEST(BemBoundaryDefault, ADeclaredBoundaryIsKeptAsDeclared) {
   BemSettings as_is = unset_boundary();
   as_is.mirrored = false;
   for (const bool periodic : {true, false}) {
-    const ResolvedBoundary kept = resolve_boundary(as_is, periodic, false, false);
+    const ResolvedBoundary kept = resolve_boundary(as_is, periodic, false);
     EXPECT_FALSE(kept.mirrored);
     EXPECT_TRUE(kept.as_is_because.empty()) << "declared, not a fallback: " << kept.as_is_because;
   }
@@ -76,19 +75,19 @@ TEST(BemBoundaryDefault, ADeclaredBoundaryIsKeptAsDeclared) {
   BemSettings mirrored = unset_boundary();
   mirrored.mirrored = true;
   mirrored.extrapolate = true;
-  EXPECT_TRUE(resolve_boundary(mirrored, false, true, true).mirrored);
-  EXPECT_TRUE(resolve_boundary(mirrored, true, false, false).mirrored);
+  EXPECT_TRUE(resolve_boundary(mirrored, false, true).mirrored);
+  EXPECT_TRUE(resolve_boundary(mirrored, true, false).mirrored);
 }
 
-TEST(BemBoundaryDefault, TheDistributedSolverRefusesOnlyADeclaredOrResolvedMirror) {
+// The ranks mirror on their slabs (mpi/distributed_mirror.hpp): no boundary is refused under mpiexec.
+TEST(BemBoundaryDefault, TheDistributedSolverTakesEveryBoundary) {
   const BemSettings defaults = default_settings(bem_settings());
   BemSettings settings = unset_boundary();
   EXPECT_TRUE(undistributed_settings(bem_settings(), settings, defaults).empty());
-  settings.mirrored = false;
-  EXPECT_TRUE(undistributed_settings(bem_settings(), settings, defaults).empty());
-  settings.mirrored = true;
-  EXPECT_EQ(undistributed_settings(bem_settings(), settings, defaults),
-            std::vector<std::string>{"boundary = \"mirrored\""});
+  for (const bool mirrored : {false, true}) {
+    settings.mirrored = mirrored;
+    EXPECT_TRUE(undistributed_settings(bem_settings(), settings, defaults).empty()) << mirrored;
+  }
 }
 
 // The small scene's 32 x 32 surface is periodic; `periodic = false` makes the BEM treat it as a finite
@@ -166,8 +165,8 @@ TEST(BemBoundaryDefault, AFallbackToAsIsSaysWhyInTheUnsetMethodsParameters) {
   EXPECT_FALSE(contains(declared, "mirrored")) << declared;
 }
 
-// Adhesion and the distributed solver, planned only (the planner runs nothing): as is, the reason named.
-TEST(BemBoundaryDefault, ThePlanFallsBackWithAdhesionAndOnTheDistributedSolver) {
+// Adhesion, planned only (the planner runs nothing): as is, the reason named; without it, mirrored.
+TEST(BemBoundaryDefault, ThePlanFallsBackWithAdhesion) {
   const Grid grid{.nx = 32, .ny = 32, .lx = 200e-6, .ly = 200e-6, .periodic = true};
   const Scene adhesive =
       parse_scene(record_scene("adhesive",
@@ -181,12 +180,9 @@ TEST(BemBoundaryDefault, ThePlanFallsBackWithAdhesionAndOnTheDistributedSolver) 
   EXPECT_TRUE(contains(with_adhesion.bems[0].stage.as_is_because, "adhesion"));
 
   const Scene record = parse_scene(record_scene("record", "[methods.bem]\nperiodic = false\n"), "test.toml");
-  const ScenePlan serial = plan_scene(record, grid);
-  const ScenePlan distributed = plan_scene(record, grid, true);
-  EXPECT_TRUE(serial.bems[0].stage.settings.mirrored.value_or(false));
-  EXPECT_FALSE(distributed.bems[0].stage.settings.mirrored.value_or(true));
-  EXPECT_TRUE(contains(distributed.bems[0].stage.as_is_because, "mpiexec"))
-      << distributed.bems[0].stage.as_is_because;
+  const ScenePlan plan = plan_scene(record, grid);
+  EXPECT_TRUE(plan.bems[0].stage.settings.mirrored.value_or(false));
+  EXPECT_TRUE(plan.bems[0].stage.as_is_because.empty()) << plan.bems[0].stage.as_is_because;
 }
 
 // Declared "mirrored" where the mirror is unavailable: refused naming the key, before any solve.

@@ -141,8 +141,8 @@ class BemMethod final : public Method {
     copy_settings(bem_settings(), SettingScope::solve, settings_, stage.settings);
     stage.periodic = settings_.periodic.value_or(context.surface_periodic);
     // Resolved here, so that an unset boundary and its value spelled out share one solve.
-    const ResolvedBoundary boundary = resolve_boundary(
-        settings_, stage.periodic, context.interface.adhesion.has_value(), context.distributed);
+    const ResolvedBoundary boundary =
+        resolve_boundary(settings_, stage.periodic, context.interface.adhesion.has_value());
     stage.settings.mirrored = boundary.mirrored;
     stage.as_is_because = boundary.as_is_because;
     stage.hardness = context.interface.hardness;  // absent, or ignored: purely elastic
@@ -464,10 +464,9 @@ class BemMethod final : public Method {
     const Index ny = settings_.refine > 0 ? settings_.refine : grid.ny;
     const bool third_finer = settings_.extrapolate && uses_third_grid(settings_.error_estimate) &&
                              !third_grid_is_coarser(nx, ny, grid.nx, grid.ny);
-    const bool mirrored =
-        resolve_boundary(settings_, settings_.periodic.value_or(grid.periodic),
-                         check.interface.adhesion.has_value(), check.runner && check.runner->ranks() > 1)
-            .mirrored;
+    const bool mirrored = resolve_boundary(settings_, settings_.periodic.value_or(grid.periodic),
+                                           check.interface.adhesion.has_value())
+                              .mirrored;
     const Index side = third_finer ? 4 : settings_.extrapolate || mirrored ? 2 : 1;
     const bool periodic = mirrored || settings_.periodic.value_or(grid.periodic);
     std::uintmax_t per_point =
@@ -484,15 +483,17 @@ class BemMethod final : public Method {
         "\"single\"";
     // Spread over MPI ranks, the runner says what the ranks on this machine hold together.
     // What rank 0 holds whole beside its slab under mpiexec (docs/mpi.md): the scene's heights and the
-    // stage's copy of them, unless the surface stays on the ranks' slabs and the stage solves it as it is;
-    // the pressure and gap it gathers for `fields` or the distributions.
-    const bool on_slabs =
-        check.surface.resident() && settings_.refine == 0 && !settings_.extrapolate && !mirrored;
+    // stage's copy of them (the patch's when mirrored: the ranks extend it on their slabs), unless the
+    // surface stays on the ranks' slabs and the stage solves it at its grid; the pressure and gap it gathers
+    // for `fields` or the distributions (the patch's when mirrored).
+    const bool on_slabs = check.surface.resident() && settings_.refine == 0 && !settings_.extrapolate;
     const auto scene_points = static_cast<std::uintmax_t>(grid.points());
+    const std::uintmax_t judged_points = mirrored ? points / 4 : points;
     std::uintmax_t root_bytes =
-        on_slabs ? 0 : saturating_sum(saturating_product(scene_points, 8), saturating_product(points, 8));
+        on_slabs ? 0
+                 : saturating_sum(saturating_product(scene_points, 8), saturating_product(judged_points, 8));
     if (!settings_.fields.empty() || check.scene.distributions)
-      root_bytes = saturating_sum(root_bytes, saturating_product(points, 16));
+      root_bytes = saturating_sum(root_bytes, saturating_product(judged_points, 16));
     if (check.runner)
       if (const auto spread = check.runner->bem_memory(
               settings_.solver,

@@ -80,7 +80,7 @@ SettingTable<BemSettings> make_table() {
       Row{.key = "boundary",
           .kind = SettingKind::choice,
           .accepted = "`\"as_is\"`, `\"mirrored\"` (`\"mirrored\"` only for the non-periodic problem, "
-                      "without adhesion, residual_topography, extrapolate and mpiexec)",
+                      "without adhesion, residual_topography and extrapolate)",
           .default_text =
               "`\"mirrored\"` for the non-periodic problem where it is accepted, else `\"as_is\"` (the run's "
               "parameters say which, and why)",
@@ -91,7 +91,7 @@ SettingTable<BemSettings> make_table() {
               "side and solved periodically (4 times the points), every statistic taken on the original "
               "patch (docs/solvers.md \"Mirrored boundary\"; results/studies/edges)",
           .flag = {"--boundary"},
-          .distributed_choices = {"as_is"},
+          .distributed = true,
           .choices = {"as_is", "mirrored"}},
       [](BemSettings & s) -> auto& { return s.mirrored; }));
   table.push_back(bind_choice(
@@ -276,8 +276,7 @@ void finish_bem_settings(
             "area = \"corrected\" (the default) with extrapolate = true, or extrapolate = false");
 }
 
-ResolvedBoundary resolve_boundary(const BemSettings& settings, bool periodic, bool adhesion,
-                                  bool distributed) {
+ResolvedBoundary resolve_boundary(const BemSettings& settings, bool periodic, bool adhesion) {
   if (settings.mirrored) return {.mirrored = *settings.mirrored, .as_is_because = {}};
   if (periodic) return {};  // no edges: nothing to choose
   const auto as_is = [](std::string why) {
@@ -287,7 +286,6 @@ ResolvedBoundary resolve_boundary(const BemSettings& settings, bool periodic, bo
   if (adhesion) return as_is("with adhesion");
   if (!settings.residual_topography.empty()) return as_is("with residual_topography");
   if (settings.extrapolate) return as_is("with extrapolate = true");
-  if (distributed) return as_is("on the distributed solver (mpiexec)");
   return {.mirrored = true, .as_is_because = {}};
 }
 

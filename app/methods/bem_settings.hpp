@@ -62,8 +62,7 @@ struct ResolvedBoundary {
   bool mirrored = false;
   std::string as_is_because;  // unset boundary, non-periodic problem, solved as is: why (else empty)
 };
-ResolvedBoundary resolve_boundary(const BemSettings& settings, bool periodic, bool adhesion,
-                                  bool distributed);
+ResolvedBoundary resolve_boundary(const BemSettings& settings, bool periodic, bool adhesion);
 
 // The tolerances a scene, the command line or Python may ask for: in double precision [1e-13, 1e-2] (above,
 // a solve stops far from the solution; below, the relative change of a sum over millions of nodes is

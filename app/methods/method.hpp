@@ -44,7 +44,6 @@ struct SceneContext {
       {};  // the scene file's folder: relative paths of its keys resolve against it
   InterfaceSpec interface = {};
   std::vector<Real> load_path = {};  // the scene's loads.path = "as listed" (Scene::load_path); empty: none
-  bool distributed = false;          // the stages run on several MPI ranks (StageRunner::ranks() > 1)
 };
 
 // The stages one method needs; the planner unites them over the scene (app/scene_plan.hpp).

@@ -8,8 +8,9 @@ distributed solver takes the serial iteration step for step; only the order of i
 they agree to round-off: 1e-12 leaves a factor of 1e3 over what 1-3 ranks showed); the sweep's rows equal.
 A run's summary records the ranks and the memory per rank. The default solver (active_set) is distributed: a
 command or scene that names no solver equals one process, with a hardness too (plastic counts equal). What has
-no distributed version is refused. The non-periodic problem is compared as is (`--boundary as_is`): the ranks
-have no mirrored boundary, so a boundary left unset falls back to as is there, saying why in the CSV's header.
+no distributed version is refused. The non-periodic problem is compared as is and mirrored (the ranks extend
+the patch on their slabs, mpi/distributed_mirror.hpp), and a boundary left unset is mirrored under mpiexec as in
+one process.
 """
 import json
 import os
@@ -97,18 +98,16 @@ with tempfile.TemporaryDirectory() as work:
     loads = "1e-3,1e-2,5e-2"
     # None: the default solver (active_set), named by no flag.
     for solver in ("polonsky_keer", "preconditioned_cg", None):
-        for boundary in ("--periodic", "--non-periodic"):
+        for boundary in (["--periodic"], ["--non-periodic", "--boundary", "as_is"],
+                         ["--non-periodic", "--boundary", "mirrored"]):
             outputs = {}
             for distributed in (False, True):
-                name = f"{solver or 'default'}{boundary}{'_mpi' if distributed else ''}"
+                name = f"{solver or 'default'}{'_'.join(boundary)}{'_mpi' if distributed else ''}"
                 out, fields = os.path.join(work, name + ".csv"), os.path.join(work, name)
-                # The non-periodic problem as is: the distributed solver has no mirror (docs/mpi.md), so one
-                # process is asked for the same problem (the unset boundary is checked below).
-                run(["bem", surface, "--loads", loads] + (["--solver", solver] if solver else []) +
-                    [boundary] + (["--boundary", "as_is"] if boundary == "--non-periodic" else []) +
+                run(["bem", surface, "--loads", loads] + (["--solver", solver] if solver else []) + boundary +
                     ["--threads", "1", "--out", out, "--fields", fields], distributed)
                 outputs[distributed] = (out, fields)
-            what = f"bem {solver or 'default solver'} {boundary} on {ranks} ranks"
+            what = f"bem {solver or 'default solver'} {' '.join(boundary)} on {ranks} ranks"
             same_bem_rows(rows(outputs[True][0]), rows(outputs[False][0]), what)
             for k in (1, 2, 3):
                 for kind in ("pressure", "gap"):
@@ -119,23 +118,21 @@ with tempfile.TemporaryDirectory() as work:
                     if len(d) != len(s) or worst > 1e-12:
                         failures.append(f"{what}: {kind} field of load {k} off by {worst:.3g} of its largest value")
 
-    # The boundary left unset on the non-periodic problem (app/methods/bem_settings.hpp, resolve_boundary): one
-    # process solves the mirror; the ranks, which have none, solve it as is and say why in the CSV's header
-    # (a declared mirror is refused there, naming the key: below).
+    # The boundary left unset on the non-periodic problem (app/methods/bem_settings.hpp, resolve_boundary): the
+    # mirror, under mpiexec as in one process (the default never changes on the ranks), and said so.
     bem_unset = {}
     for distributed in (False, True):
         out = os.path.join(work, f"unset_boundary{'_mpi' if distributed else ''}.csv")
         run(["bem", surface, "--loads", loads, "--non-periodic", "--threads", "1", "--out", out], distributed)
         with open(out) as f:
             bem_unset[distributed] = f.read()
-    if "non-periodic mirrored" not in bem_unset[False]:
-        failures.append(f"bem --non-periodic, boundary unset, one process: not mirrored:\n{bem_unset[False]}")
-    if "non-periodic as is (boundary unset" not in bem_unset[True] or "mpiexec" not in bem_unset[True]:
-        failures.append(f"bem --non-periodic, boundary unset, {ranks} ranks: the fallback to as is not said:\n"
-                        f"{bem_unset[True]}")
-    as_is_rows = rows(os.path.join(work, "default--non-periodic.csv"))
-    same_bem_rows(rows(os.path.join(work, "unset_boundary_mpi.csv")), as_is_rows,
-                  f"bem --non-periodic, boundary unset, on {ranks} ranks against --boundary as_is")
+    for distributed in (False, True):
+        if "non-periodic mirrored" not in bem_unset[distributed]:
+            failures.append(f"bem --non-periodic, boundary unset, {ranks if distributed else 1} rank(s): not "
+                            f"mirrored:\n{bem_unset[distributed]}")
+    mirrored_rows = rows(os.path.join(work, "default--non-periodic_--boundary_mirrored.csv"))
+    same_bem_rows(rows(os.path.join(work, "unset_boundary_mpi.csv")), mirrored_rows,
+                  f"bem --non-periodic, boundary unset, on {ranks} ranks against --boundary mirrored in one process")
 
     for levels in ("exact", "40", "paper"):
         outs = []
@@ -273,8 +270,6 @@ with tempfile.TemporaryDirectory() as work:
                               (["run", hard_path_scene, "--out", os.path.join(work, "refused")],
                                'loads.path = "as listed" with interface.hardness'),
                               (["bem", surface, "--loads", "1e-3", "--float"], 'precision = "single"'),
-                              (["bem", surface, "--loads", "1e-3", "--non-periodic", "--boundary", "mirrored"],
-                               'boundary = "mirrored"'),
                               (["bem", surface, "--loads", "1e-3", "--float", "--solver", "preconditioned_cg"], 'precision = "single"'),
                               (["stats", surface], "has no distributed stages")):
         done = run(arguments, distributed=True, expect_status=1)
@@ -337,9 +332,10 @@ with tempfile.TemporaryDirectory() as work:
     csv_surface = os.path.join(work, "surface.csv")
     with open(csv_surface, "w") as f:
         f.write("\n".join(",".join(line.split()) for line in text_lines[2:]) + "\n")
-    # The CSV matrix is a record, not periodic: its BEM declared as is, the one boundary the ranks have.
+    # The CSV matrix is a record, not periodic: its BEM's boundary left unset, so mirrored, the extension made
+    # on the ranks' slabs from the file's (project) or from rank 0's whole heights (CSV).
     file_scene = ('[material]\nE = 100e9\nnu = 0.3\n[loads]\nvalues = [1e-3, 1e-2]\n[methods.bem]\n'
-                  'boundary = "as_is"\n[methods.plateau]\nmethod = "plateau"\n')
+                  '[methods.plateau]\nmethod = "plateau"\n')
     for name, source, root_bytes in (("project", f'file = "{surface}"', 0),
                                      ("csv", f'file = "{csv_surface}"\nsize = [1e-4, 0.78125e-4]', 64 * 50 * 8)):
         scene_path = os.path.join(work, f"file_{name}.toml")

@@ -13,8 +13,8 @@ Each scene falls in one of two classes, decided from its own keys (read with tom
              once under mpiexec, `--threads 1 --quiet --no-plots`, a generated surface at `--grid 32` (app/scene_grid_override.hpp: every refine
              scaled alike; the least grid the error names when 32 cannot carry the spectrum), a surface read
              from a file on the crop px:0,0,64,64 of that file (a copy of the scene with that crop, the file
-             path made absolute, and `boundary = "as_is"` declared in its BEMs, since the ranks have no mirrored
-             boundary; the whole 650 x 650 record takes 15 s a run). The BEM rows of curves.csv
+             path made absolute: the whole 650 x 650 record takes 15 s a run; its BEMs' boundary as the scene
+             says, so a record's unset boundary is mirrored on the ranks as in one process). The BEM rows of curves.csv
              must agree: areas, spots, iterations and convergence equal; separation, mean gap and largest
              pressure to a bound that follows each BEM's own tolerance (pressure_bound below: 1e-12 where
              it is 1e-8 or tighter; above that 10x the round-off sensitivity of the serial solver itself,
@@ -137,15 +137,6 @@ def runnable_copy(path, scene, work):
     text, count = re.subn(r'(?m)^file = ".*"$', f'file = "{absolute}"\ncrop = "px:0,0,64,64"', text)
     if count != 1:
         failures.append(f"{path}: cannot make a cropped copy (file = ... not found on a line of its own)")
-    # A record (not periodic): its BEMs with no `boundary` would be mirrored by one process and solved as is
-    # by the ranks, which have no mirror (they say so in the parameters: test_mpi_cli.py). Both are asked for
-    # the same problem, as is.
-    if not surface.get("periodic", False):
-        for label, method in scene.get("methods", {}).items():
-            if method.get("method", label) == "bem" and "boundary" not in method:
-                text, count = re.subn(rf'(?m)^\[methods\.{re.escape(label)}\]$', rf'\g<0>\nboundary = "as_is"', text)
-                if count != 1:
-                    failures.append(f"{path}: cannot declare boundary = \"as_is\" in [methods.{label}]")
     copy = os.path.join(work, "cropped_" + os.path.basename(path))
     with open(copy, "w") as f:
         f.write(text)
