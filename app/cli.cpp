@@ -5,7 +5,6 @@
 #include <string>
 
 #include <omp.h>
-#include <unistd.h>
 
 #if CONTACTBENCH_WITH_MPI
 #include "contactbench/app/distributed_stages.hpp"
@@ -33,27 +32,6 @@ void add_progress_option(CLI::App& command, bool& progress) {
   command.add_flag("--progress", progress,
                    "one line per stage and per load solved on stderr, even when it is not a terminal "
                    "(default: on a terminal, for stages longer than 2 s; otherwise none)");
-}
-
-RunObserver terminal_observer(const std::string& command, bool progress) {
-  RunObserver observer;
-  // Under mpiexec only rank 0 speaks, and its stderr is a pipe to the launcher, which prints it on the
-  // launcher's terminal or log: it says what one process on a terminal says (docs/mpi.md).
-  const bool terminal = ::isatty(STDERR_FILENO) != 0 || mpi_launch().ranks > 1;
-  if (progress || terminal) {
-    observer.stage_finished = [command, progress](const std::string& stage, double seconds) {
-      if (progress || seconds > kProgressAfterSeconds)
-        std::cerr << command << ": " << stage_done_line(stage, seconds) << '\n';
-    };
-    observer.load_solved = [command, progress](const LoadProgress& load) {
-      if (progress || load.stage_seconds > kProgressAfterSeconds)
-        std::cerr << command << ": " << progress_line(load) << '\n';
-    };
-  }
-  observer.warning = [command](const std::string& text) {
-    std::cerr << command << ": warning: " << text << '\n';
-  };
-  return observer;
 }
 
 int run_cli(int argc, char** argv) {

@@ -32,13 +32,7 @@ void add_run_command(CLI::App& parent, const CommandContext& context);
 void add_convert_command(CLI::App& parent);
 void add_plot_command(CLI::App& parent);
 
-// The observer of a command's run on stderr, one short line each, prefixed by the command ("contactbench
-// run"): warnings always; with `progress` (--progress) every stage done and every load solved
-// (app/run_observer.hpp progress_line); without it the same only when stderr is a terminal and only for
-// stages that have run longer than kProgressAfterSeconds; nothing when stderr is a file or a pipe.
-RunObserver terminal_observer(const std::string& command, bool progress = false);
-
-// --progress: the option that sets `progress` for terminal_observer.
+// --progress: the option that sets `progress` for terminal_observer (app/run_observer.hpp).
 void add_progress_option(CLI::App& command, bool& progress);
 
 // Threads for a command: --threads if given, else what OpenMP would use (the machine's cores).

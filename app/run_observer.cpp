@@ -1,5 +1,11 @@
 #include "contactbench/app/run_observer.hpp"
 
+#include <iostream>
+
+#include <unistd.h>
+
+#include "contactbench/app/mpi_launch.hpp"
+
 #include <sstream>
 
 namespace contactbench {
@@ -40,6 +46,27 @@ std::string progress_line(const LoadProgress& load) {
   line.precision(4);
   line << load.load_value << ", " << load.iterations << " iterations in " << seconds_text(load.seconds);
   return line.str();
+}
+
+RunObserver terminal_observer(const std::string& command, bool progress) {
+  RunObserver observer;
+  // Under mpiexec only rank 0 speaks, and its stderr is a pipe to the launcher, which prints it on the
+  // launcher's terminal or log: it says what one process on a terminal says (docs/mpi.md).
+  const bool terminal = ::isatty(STDERR_FILENO) != 0 || mpi_launch().ranks > 1;
+  if (progress || terminal) {
+    observer.stage_finished = [command, progress](const std::string& stage, double seconds) {
+      if (progress || seconds > kProgressAfterSeconds)
+        std::cerr << command << ": " << stage_done_line(stage, seconds) << '\n';
+    };
+    observer.load_solved = [command, progress](const LoadProgress& load) {
+      if (progress || load.stage_seconds > kProgressAfterSeconds)
+        std::cerr << command << ": " << progress_line(load) << '\n';
+    };
+  }
+  observer.warning = [command](const std::string& text) {
+    std::cerr << command << ": warning: " << text << '\n';
+  };
+  return observer;
 }
 
 std::string stage_done_line(const std::string& stage, double seconds) {

@@ -59,4 +59,10 @@ LoadProgress bem_load_progress(const std::string& stage, long long nx, long long
 // "surface: done in 1.3 s".
 std::string stage_done_line(const std::string& stage, double seconds);
 
+// The observer of a command's run on stderr, one short line each, prefixed by the command ("contactbench
+// run"): warnings always; with `progress` (--progress) every stage done and every load solved
+// (progress_line above); without it the same only when stderr is a terminal and only for
+// stages that have run longer than kProgressAfterSeconds; nothing when stderr is a file or a pipe.
+RunObserver terminal_observer(const std::string& command, bool progress = false);
+
 }  // namespace contactbench

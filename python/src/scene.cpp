@@ -7,12 +7,12 @@
 #include <optional>
 
 #include "bindings.hpp"
-#include "contactbench/app/cli.hpp"
 #include "contactbench/app/comparison.hpp"
 #include "contactbench/app/load_area_plots.hpp"
 #include "contactbench/app/output_folder.hpp"
 #include "contactbench/app/provenance.hpp"
 #include "contactbench/app/report_writers.hpp"
+#include "contactbench/app/run_observer.hpp"
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/scene_run.hpp"
 
