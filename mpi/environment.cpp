@@ -1,6 +1,9 @@
 #include "contactbench/mpi/environment.hpp"
 
+#include <malloc.h>
 #include <mpi.h>
+
+#include <limits>
 
 #include <fftw3-mpi.h>
 
@@ -14,6 +17,14 @@ bool fftw_mpi_ready = false;
 }
 
 Environment::Environment(int& argc, char**& argv) {
+  // FFTW-MPI's transposes allocate a scratch buffer of the slab's size at every transform and free it after.
+  // glibc serves blocks above 32 MiB by a fresh mmap and unmaps them at free, so every transform of a large
+  // slab faulted its buffer in again, page by page, zeroed by the kernel: at 4096^2 on 2 ranks 2.0 million
+  // minor faults and 9 s of system time a 66 s solve. Kept in the heap (no mmap, no trimming of its top), the
+  // buffer is reused: 0.18 million faults, 2.6 s, the solve 55 s (docs/mpi.md). The peak is unchanged; the
+  // process keeps it until it exits, which a solve's process does soon after.
+  mallopt(M_MMAP_MAX, 0);
+  mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
   // lock_fftw_planner() initialises FFTW's threads, which must come before fftw_mpi_init.

@@ -5,7 +5,8 @@
 namespace contactbench::mpi {
 
 // Owns MPI and FFTW-MPI for a program's lifetime (one per process, in main): MPI_Init_thread (funneled: only
-// the main thread calls MPI), then fftw_mpi_init; on destruction MPI_Finalize.
+// the main thread calls MPI), then fftw_mpi_init; on destruction MPI_Finalize. It also keeps large freed
+// blocks in the process's heap (docs/mpi.md "Scratch buffers of the transposes").
 class Environment {
  public:
   Environment(int& argc, char**& argv);
