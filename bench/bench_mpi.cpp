@@ -12,10 +12,11 @@
 //
 //   mpiexec -n RANKS bench_mpi --n 1024 --tolerance 1e-8 [--reference active_set] [--reference-threads 2] ...
 // solves to the tolerance instead (the time a load costs, iterations as they come) and prints: ranks,
-// threads, n, solver, iterations, s/load, the serial reference's solver, threads, iterations and s/load, and
-// the ratio of the two times. The reference runs on rank 0 while the others wait without spinning
-// (quiet_barrier), so that a reference on 2 threads has both cores. --no-serial leaves the reference out (a
-// grid rank 0 cannot hold whole).
+// threads, n, solver, iterations, s/load, the serial reference's solver, threads, iterations and s/load, the
+// ratio of the two times, and the time rank 0 spent inside MPI's all-to-all exchanges during the solve (the
+// global transposes, timed inside it: mpi_call_clock.hpp) and inside its reductions, each with its share.
+// The reference runs on rank 0 while the others wait without spinning (quiet_barrier), so that a reference
+// on 2 threads has both cores. --no-serial leaves the reference out (a grid rank 0 cannot hold whole).
 //
 //   mpiexec -n RANKS bench_mpi --n 4096 --solver active_set --memory [--iterations 10]
 // the memory a rank holds for one cold load (docs/mpi.md "Memory a point"): for each rank, its slab's
@@ -43,6 +44,7 @@
 #include "contactbench/mpi/distributed_bem_solver.hpp"
 #include "contactbench/mpi/distributed_generation.hpp"
 #include "contactbench/mpi/environment.hpp"
+#include "mpi_call_clock.hpp"
 
 using namespace contactbench;
 
@@ -133,6 +135,7 @@ void quiet_barrier(MPI_Comm comm) {
 struct TimedSolves {
   double seconds = 0;  // the median over the repetitions, of one load
   Index iterations = 0;
+  bench::MpiCallTimes in_mpi;  // this rank's time inside MPI calls, of the repetition with the median time
 };
 
 // --tolerance: each solve to the tolerance, the distributed one against the serial `reference` on
@@ -143,19 +146,29 @@ void per_load_row(const Grid& grid, const HeightMap& local, const Surface* surfa
   const int rank = mpi::rank_of(comm);
   TimedSolves distributed, serial;
   std::vector<double> times;
+  std::vector<bench::MpiCallTimes> in_mpi;
   for (int r = 0; r < repetitions; ++r) {
     mpi::DistributedBemSolver solver(grid, local, modulus, comm, options, threads);
     MPI_Barrier(comm);
+    bench::reset_mpi_call_times();
     const auto start = std::chrono::steady_clock::now();
     distributed.iterations = solver.solve(load).iterations;
+    in_mpi.push_back(bench::mpi_call_times());
     MPI_Barrier(comm);
     times.push_back(seconds_since(start));
   }
   distributed.seconds = median(times);
+  const auto median_repetition = std::find(times.begin(), times.end(), distributed.seconds) - times.begin();
+  distributed.in_mpi = in_mpi[static_cast<std::size_t>(median_repetition)];
+  char in_mpi_columns[96];
+  std::snprintf(
+      in_mpi_columns, sizeof in_mpi_columns, "%.3g | %.0f %% | %.3g | %.0f %%",
+      distributed.in_mpi.exchange_seconds, 100 * distributed.in_mpi.exchange_seconds / distributed.seconds,
+      distributed.in_mpi.reduction_seconds, 100 * distributed.in_mpi.reduction_seconds / distributed.seconds);
   if (rank == 0 && !surface) {
-    std::printf("| %d | %d | %ld | %s | %ld | %.3g | - | - | - | - | - |\n", mpi::size_of(comm), threads,
+    std::printf("| %d | %d | %ld | %s | %ld | %.3g | - | - | - | - | - | %s |\n", mpi::size_of(comm), threads,
                 static_cast<long>(grid.nx), std::string(solver_name(options.solver)).c_str(),
-                static_cast<long>(distributed.iterations), distributed.seconds);
+                static_cast<long>(distributed.iterations), distributed.seconds, in_mpi_columns);
   } else if (rank == 0) {
     BemSolverOptions reference_options = options;
     reference_options.solver = reference;
@@ -167,11 +180,12 @@ void per_load_row(const Grid& grid, const HeightMap& local, const Surface* surfa
       times.push_back(seconds_since(start));
     }
     serial.seconds = median(times);
-    std::printf("| %d | %d | %ld | %s | %ld | %.3g | %s | %d | %ld | %.3g | %.3g |\n", mpi::size_of(comm),
-                threads, static_cast<long>(grid.nx), std::string(solver_name(options.solver)).c_str(),
-                static_cast<long>(distributed.iterations), distributed.seconds,
-                std::string(solver_name(reference)).c_str(), reference_threads,
-                static_cast<long>(serial.iterations), serial.seconds, distributed.seconds / serial.seconds);
+    std::printf("| %d | %d | %ld | %s | %ld | %.3g | %s | %d | %ld | %.3g | %.3g | %s |\n",
+                mpi::size_of(comm), threads, static_cast<long>(grid.nx),
+                std::string(solver_name(options.solver)).c_str(), static_cast<long>(distributed.iterations),
+                distributed.seconds, std::string(solver_name(reference)).c_str(), reference_threads,
+                static_cast<long>(serial.iterations), serial.seconds, distributed.seconds / serial.seconds,
+                in_mpi_columns);
   }
   quiet_barrier(comm);
 }
