@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Fuzzes every parser of untrusted input with libFuzzer (the `fuzz` preset: clang, ASan + UBSan + LeakSanitizer):
+# Fuzzes every parser of untrusted input with libFuzzer (the fuzz targets of the `asan` preset's build: clang,
+# ASan + UBSan + LeakSanitizer, assertions on; only they are built here when that build does not exist yet):
 # the topography readers (fuzz_topography) and the scene parser (fuzz_scene), each for SECONDS, seeded with the
 # project's own files. Any crashing, leaking or hanging input is copied to fuzz/regressions/<target>/, where the
 # test suite replays it (tests/test_fuzz_regressions.cpp). Writes results/fuzz.md (executions, crashes, leaks)
@@ -14,10 +15,11 @@ seconds=${1:-60}
 record=${2:-}
 seed=${CB_FUZZ_SEED:-41}
 echo "fuzz: libFuzzer seed $seed (CB_FUZZ_SEED overrides it)"
-cmake --preset fuzz >/dev/null
-cmake --build --preset fuzz -j "$(nproc)" --target fuzz_topography fuzz_scene >/dev/null
+scripts/install-deps.sh asan
+cmake --preset asan >/dev/null
+cmake --build --preset asan -j "$(nproc)" --target fuzz_topography fuzz_scene >/dev/null
 
-work=build/fuzz/runs
+work=build/asan/fuzz-runs
 rm -rf "$work"
 mkdir -p "$work"
 # Seed corpora: small real inputs (libFuzzer mutates them; large files only slow each execution down).
@@ -58,7 +60,7 @@ for target in topography scene; do
   log="$work/$target.log"
   set +e
   # Bounded: 2 GiB of memory, 1 GiB for one allocation, 10 s for one input; inputs up to 64 KiB.
-  "build/fuzz/fuzz/fuzz_$target" "$work/corpus_$target" -max_total_time="$seconds" -seed="$seed" -rss_limit_mb=2048 \
+  "build/asan/fuzz/fuzz_$target" "$work/corpus_$target" -max_total_time="$seconds" -seed="$seed" -rss_limit_mb=2048 \
     -malloc_limit_mb=1024 -timeout=10 -max_len=65536 -print_final_stats=1 \
     -artifact_prefix="$work/artifacts_$target/" >"$log" 2>&1
   code=$?

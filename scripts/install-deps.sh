@@ -22,8 +22,9 @@ packages=(
   python3-matplotlib              # optional: the plots of examples/python/
 )
 
-# `install-deps.sh fuzz`: also clang with libFuzzer and its OpenMP runtime (the fuzz preset; CI runs it).
-if [[ "${1:-}" == "fuzz" ]]; then
+# `install-deps.sh asan`: also clang with its sanitizer runtimes, libFuzzer and its OpenMP runtime (the asan
+# preset, whose build has the fuzz targets; scripts/test.sh asan and scripts/fuzz.sh). `fuzz` is the same.
+if [[ "${1:-}" == "asan" || "${1:-}" == "fuzz" ]]; then
   packages+=(clang-14 libclang-rt-14-dev libomp-14-dev)
 fi
 

@@ -4,15 +4,17 @@
 # command; .ci/run calls it verbatim.
 # Usage: scripts/test.sh [preset: release|debug|asan]
 # With CB_CI=1 (set by .ci/run) it also runs what only CI runs:
-#   - CB_CI_ASAN=1: the suite under AddressSanitizer + UBSan with assertions on (preset asan: -O1 -g1 without
-#     NDEBUG, so assert() and Eigen's bounds checks run, and _GLIBCXX_ASSERTIONS for the C++ library's), the
-#     Python module's tests and the MPI tests included (see run_suite below for how). -O1 -g1 (ASan's own
+#   - CB_CI_ASAN=1: the suite under AddressSanitizer + UBSan with assertions on (preset asan: clang 14, -O1 -g1
+#     without NDEBUG, so assert() and Eigen's bounds checks run, and _GLIBCXX_ASSERTIONS for the C++ library's),
+#     the Python module's tests and the MPI tests included (see run_suite below for how). -O1 -g1 (ASan's own
 #     advice: -O1; line tables only, enough for the reports' stacks) instead of -O2 -g: compiling three of the
 #     heaviest files took 0.45-0.59 of the time (timed side by side, 2026-11-28), the build being CI's longest
-#     stage (17.6 of 45 min at -O2 -g). The fuzz preset compiles the same way.
+#     stage (17.6 of 45 min at -O2 -g). The same build has the libFuzzer targets (CB_BUILD_FUZZERS), so the
+#     fuzz run below builds nothing more: one clang build serves both (it was a g++ build for the suite and a
+#     second, clang build for the fuzzers, 18.2 + ~7 min of CI's 44.8);
 #   - CB_CI_DEBUG=1 (off in .ci/run since the asan preset has the assertions): the whole suite of the debug
 #     preset (no optimisation): 2-3 minutes of tests on 2 cores after a build of 5-6 minutes;
-#   - a short fuzz run of each parser (preset fuzz, scripts/fuzz.sh; seeded, CB_FUZZ_SEED).
+#   - a short fuzz run of each parser (scripts/fuzz.sh, from the asan preset's build; seeded, CB_FUZZ_SEED).
 # `scripts/test.sh asan` or `scripts/test.sh debug` runs one of them by hand.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -33,22 +35,29 @@ run_suite() {
     configure=(-DCB_BUILD_BENCHMARKS=OFF)
     skip='^(format_check|layer_check)$'
   fi
+  [[ "$name" == asan ]] && scripts/install-deps.sh asan  # clang 14, its sanitizer runtimes and libomp
   cmake --preset "$name" "${configure[@]}"
   cmake --build --preset "$name" -j "$jobs"
   stage_done "build of preset $name"
   case "$name" in
     asan)
       # The Python module under AddressSanitizer: the interpreter is not instrumented, so the ASan runtime
-      # must be loaded first (LD_PRELOAD, else "ASan runtime does not come first"), and with it the C++
-      # runtime (else ASan's interceptor of __cxa_throw finds no real one, as python3 does not link
-      # libstdc++, and the first C++ exception aborts: "CHECK failed: asan_interceptors.cpp:320"). Leak
-      # detection is off for these tests only: CPython keeps interned objects and module state to the end by
-      # design, which LeakSanitizer reports as leaks (every other test keeps leak detection on).
+      # must be loaded first (LD_PRELOAD, else "ASan runtime does not come first"; clang's shared runtime,
+      # which every target of the preset links, CMakeLists.txt), and with it the C++ runtime (else ASan's
+      # interceptor of __cxa_throw finds no real one, as python3 does not link libstdc++, and the first C++
+      # exception aborts: "CHECK failed: asan_interceptors.cpp"). Leak detection is off for these tests only:
+      # CPython keeps interned objects and module state to the end by design, which LeakSanitizer reports as
+      # leaks (every other test keeps leak detection on).
       ctest --preset asan -j "$jobs" -E "^python_|$skip"
       if ctest --preset asan -N -R '^python_' | grep -q 'Total Tests: [1-9]'; then
         local compiler preload
         compiler=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' build/asan/CMakeCache.txt)
-        preload="$("$compiler" -print-file-name=libasan.so) $("$compiler" -print-file-name=libstdc++.so)"
+        if "$compiler" --version | grep -q clang; then
+          preload="$("$compiler" -print-runtime-dir)/libclang_rt.asan-x86_64.so"
+        else  # g++ (a by-hand -DCMAKE_CXX_COMPILER=g++ configure of the preset)
+          preload=$("$compiler" -print-file-name=libasan.so)
+        fi
+        preload="$preload $("$compiler" -print-file-name=libstdc++.so)"
         echo "test.sh: the Python tests under AddressSanitizer (LD_PRELOAD=$preload, detect_leaks=0)"
         LD_PRELOAD="$preload" ASAN_OPTIONS=detect_leaks=0 ctest --preset asan -j "$jobs" -R '^python_'
       fi
@@ -74,8 +83,9 @@ if [[ "${CB_CI:-}" == "1" ]]; then
     echo "test.sh: CI: the debug suite (assertions on)"
     run_suite debug again
   fi
+  # From the asan preset's build (built above when CB_CI_ASAN=1; else fuzz.sh builds its fuzz targets alone).
   echo "test.sh: CI: a short fuzz run of every parser"
-  scripts/install-deps.sh fuzz
+  scripts/install-deps.sh asan
   scripts/fuzz.sh "${CB_FUZZ_SECONDS:-15}"
   stage_done "fuzz run"
 fi
