@@ -38,7 +38,7 @@ ChunkRange chunks_of(int rank, int ranks, Index chunks) {
 // nx/2 + 1 values to real rows of nx, any number of rows at a time, each row as in the serial pass.
 class GeneratorPlans {
  public:
-  GeneratorPlans(Index nx, Index ny) : nx_(nx), ny_(ny) {
+  GeneratorPlans(Index nx, Index ny) {
     const Index nxh = nx / 2 + 1;
     std::vector<Complex> scratch_spectrum(
         static_cast<std::size_t>(std::max(ny, kChunk) * std::max(nxh, kChunk)));
@@ -79,7 +79,6 @@ class GeneratorPlans {
   }
 
  private:
-  Index nx_, ny_;
   std::vector<fftw_plan> columns_, rows_;
 };
 
