@@ -74,9 +74,10 @@ TEST(Convolution, PlainArraysInPlaceAndTheProductAgreeWithTheOperator) {
       EXPECT_EQ((in_place - u).abs().maxCoeff(), 0) << periodic << " " << nx;
 
       auto convolution = make_half_space_convolution<double>(grid, kModulus);
-      auto produce = [&](Index first, Index rows, double* buffer, Index ld, int) {
+      // The width by value: a lambda may not capture a structured binding before C++20 as clang 14 has it.
+      auto produce = [&, width = nx](Index first, Index rows, double* buffer, Index ld, int) {
         for (Index r = 0; r < rows; ++r)
-          for (Index x = 0; x < nx; ++x)
+          for (Index x = 0; x < width; ++x)
             buffer[r * ld + x] = p(first + r, x);
       };
       const double product = convolution->apply(Convolution<double>::Producer(produce),
