@@ -10,8 +10,10 @@
 #     advice: -O1; line tables only, enough for the reports' stacks) instead of -O2 -g: compiling three of the
 #     heaviest files took 0.45-0.59 of the time (timed side by side, 2026-11-28), the build being CI's longest
 #     stage (17.6 of 45 min at -O2 -g). The same build has the libFuzzer targets (CB_BUILD_FUZZERS), so the
-#     fuzz run below builds nothing more: one clang build serves both (it was a g++ build for the suite and a
-#     second, clang build for the fuzzers, 18.2 + ~7 min of CI's 44.8);
+#     fuzz run below builds nothing more: one clang build serves both. Timed from fresh clones with
+#     `/usr/bin/time -v .ci/run`: before (a g++ build for the suite, a clang build for the fuzzers; bb46578) the
+#     sanitizer build, suite and fuzz stage took 18.2 + 7.6 + 8.1 min of 56.5; after (b8a2e50, a slower day:
+#     the release build 13.6 min against 11.0) 16.3 + 7.9 + 0.7 of 50.5;
 #   - CB_CI_DEBUG=1 (off in .ci/run since the asan preset has the assertions): the whole suite of the debug
 #     preset (no optimisation): 2-3 minutes of tests on 2 cores after a build of 5-6 minutes;
 #   - a short fuzz run of each parser (scripts/fuzz.sh, from the asan preset's build; seeded, CB_FUZZ_SEED).
