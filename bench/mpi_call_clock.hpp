@@ -10,10 +10,8 @@
 namespace contactbench::bench {
 
 struct MpiCallTimes {
-  double exchange_seconds = 0;  // inside MPI_Alltoall, MPI_Alltoallv, MPI_Sendrecv
-  long exchanges = 0;
+  double exchange_seconds = 0;   // inside MPI_Alltoall, MPI_Alltoallv, MPI_Sendrecv
   double reduction_seconds = 0;  // inside MPI_Allreduce, MPI_Allgather, MPI_Bcast
-  long reductions = 0;
 };
 
 // This process's times since the last reset.

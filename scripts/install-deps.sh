@@ -23,8 +23,8 @@ packages=(
 )
 
 # `install-deps.sh asan`: also clang with its sanitizer runtimes, libFuzzer and its OpenMP runtime (the asan
-# preset, whose build has the fuzz targets; scripts/test.sh asan and scripts/fuzz.sh). `fuzz` is the same.
-if [[ "${1:-}" == "asan" || "${1:-}" == "fuzz" ]]; then
+# preset, whose build has the fuzz targets; scripts/test.sh asan and scripts/fuzz.sh).
+if [[ "${1:-}" == "asan" ]]; then
   packages+=(clang-14 libclang-rt-14-dev libomp-14-dev)
 fi
 

@@ -88,9 +88,9 @@ if [[ "${CB_CI:-}" == "1" ]]; then
     echo "test.sh: CI: the debug suite (assertions on)"
     run_suite debug again
   fi
-  # From the asan preset's build (built above when CB_CI_ASAN=1; else fuzz.sh builds its fuzz targets alone).
+  # From the asan preset's build (built above when CB_CI_ASAN=1; else fuzz.sh installs clang and builds its
+  # fuzz targets alone).
   echo "test.sh: CI: a short fuzz run of every parser"
-  scripts/install-deps.sh asan
   scripts/fuzz.sh "${CB_FUZZ_SECONDS:-15}"
   stage_done "fuzz run"
 fi
