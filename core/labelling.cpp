@@ -15,6 +15,24 @@
 
 namespace contactbench {
 
+namespace labelling_detail {
+
+// A run of a band: columns [start, end) hold foreground in at least one of the band's rows, the columns on
+// either side hold none. Its provisional label covers every foreground point of the band in those columns.
+struct Run {
+  std::int32_t start, end, label;
+};
+
+// The runs of one band: [begin, end) in the run buffer, in increasing order of columns.
+struct Band {
+  Index begin = 0, end = 0;
+};
+
+}  // namespace labelling_detail
+
+using labelling_detail::Band;
+using labelling_detail::Run;
+
 namespace {
 
 // Rows [first, last) of the map, labelled by one thread with provisional labels from [base, ...).
@@ -143,17 +161,6 @@ inline Index count_bits(const Bits* a, const Bits* b, Index start, Index end) {
     count += count_bits(a[w], b[w]);
   return count;
 }
-
-// A run of a band: columns [start, end) hold foreground in at least one of the band's rows, the columns on
-// either side hold none. Its provisional label covers every foreground point of the band in those columns.
-struct Run {
-  std::int32_t start, end, label;
-};
-
-// The runs of one band: [begin, end) in the run buffer, in increasing order of columns.
-struct Band {
-  Index begin = 0, end = 0;
-};
 
 // First pass over one stripe for 8-connectivity: the runs of its bands (from runs + first_run on), their
 // provisional labels (a new one for a run that touches no run of the band above, in raster order of the

@@ -56,8 +56,6 @@ void radix_sort(TimedPoint* points, TimedPoint* scratch, Index count) {
   if (from != points) std::copy(from, from + count, points);
 }
 
-constexpr Index kPrefetchDistance = 16;
-
 }  // namespace
 
 // A stable counting sort into 2048 buckets by a linear map of the height (monotone, even for any distribution

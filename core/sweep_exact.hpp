@@ -13,6 +13,10 @@
 
 namespace contactbench::sweep_detail {
 
+// How many points ahead the sweeps prefetch a point's neighbours (core/sweep_exact.cpp,
+// core/sweep_levels.cpp).
+inline constexpr Index kPrefetchDistance = 16;
+
 // A double's bits as an unsigned key whose ascending order is the doubles' descending order (-0.0 counts
 // as +0.0, so that equal heights always have equal keys), and back.
 JoinTime descending_key(Real height);

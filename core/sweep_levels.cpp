@@ -8,10 +8,6 @@
 
 namespace contactbench::sweep_detail {
 
-namespace {
-constexpr Index kPrefetchDistance = 16;  // as core/sweep.cpp's exact sweep
-}
-
 std::vector<Real> fixed_levels(Real top, Real bottom, Index count) {
   if (count < 1) throw Error("sweep: the number of levels must be at least 1, got " + std::to_string(count));
   std::vector<Real> z(static_cast<std::size_t>(count) + 1);

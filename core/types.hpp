@@ -3,6 +3,7 @@
 
 #include <complex>
 #include <cstddef>
+#include <numbers>
 
 #include <Eigen/Core>
 
@@ -11,6 +12,10 @@ namespace contactbench {
 using Real = double;
 using Index = std::ptrdiff_t;
 using Complex = std::complex<Real>;
+
+// pi as a Real, for the formulas of docs/theory.md (one definition: files that each defined their own clashed
+// when compiled together, CMAKE_UNITY_BUILD).
+inline constexpr Real pi = std::numbers::pi;
 
 // Heights on an Nx x Ny grid, row-major with x fastest: rows are y, columns are x.
 // heights(iy, ix) is the height at (x, y) = (ix * dx, iy * dy).

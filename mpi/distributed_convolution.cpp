@@ -6,15 +6,11 @@
 #include <string>
 
 #include "contactbench/core/error.hpp"
+#include "contactbench/mpi/message_count.hpp"
 
 namespace contactbench::mpi {
 
 namespace {
-
-int checked_int(Index values) {
-  if (values > INT_MAX) throw Error("mpi: more than 2^31 values between two ranks in one exchange");
-  return static_cast<int>(values);
-}
 
 // How many rows two row ranges share, below `limit`.
 Index shared_rows(Index start_a, Index count_a, Index start_b, Index count_b, Index limit) {
@@ -57,10 +53,10 @@ DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MP
     const Index out =
         shared_rows(slab_.start, slab_.count, transform_slabs[r].start, transform_slabs[r].count, ny);
     const Index in = shared_rows(grid_slabs[r].start, grid_slabs[r].count, mine.start, mine.count, ny);
-    send_counts_.push_back(checked_int(out * nx));
-    send_offsets_.push_back(checked_int(sent));
-    receive_counts_.push_back(checked_int(in * nx));
-    receive_offsets_.push_back(checked_int(received));
+    send_counts_.push_back(message_count(out * nx, "an exchange of the distributed convolution"));
+    send_offsets_.push_back(message_count(sent, "an exchange of the distributed convolution"));
+    receive_counts_.push_back(message_count(in * nx, "an exchange of the distributed convolution"));
+    receive_offsets_.push_back(message_count(received, "an exchange of the distributed convolution"));
     sent += out * nx;
     received += in * nx;
   }

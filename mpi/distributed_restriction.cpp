@@ -7,6 +7,7 @@
 
 #include "contactbench/bem/solvers/block_average.hpp"
 #include "contactbench/core/error.hpp"
+#include "contactbench/mpi/message_count.hpp"
 #include "contactbench/mpi/slab.hpp"
 
 namespace contactbench::mpi {
@@ -17,12 +18,6 @@ namespace {
 Index overlap(Index start, Index count, Index other_start, Index other_count) {
   return std::max<Index>(0,
                          std::min(start + count, other_start + other_count) - std::max(start, other_start));
-}
-
-int message_size(Index values) {
-  if (values > INT_MAX)
-    throw Error("mpi: the coarse level's restriction moves more than 2^31 values between two ranks");
-  return static_cast<int>(values);
 }
 
 }  // namespace
@@ -47,13 +42,15 @@ HeightMap restrict_to_coarse_slab(const Grid& grid, const HeightMap& local, MPI_
   for (std::size_t r = 0; r < ranks; ++r) {
     const Slab& needs = coarse_slabs[r];
     const Index sent = overlap(fine.start, fine.count, 2 * needs.start, 2 * needs.count);
-    send_counts[r] = message_size(sent * nx);
-    send_offsets[r] = message_size(sent > 0 ? (std::max(fine.start, 2 * needs.start) - fine.start) * nx : 0);
+    send_counts[r] = message_count(sent * nx, "the coarse level's restriction");
+    send_offsets[r] = message_count(sent > 0 ? (std::max(fine.start, 2 * needs.start) - fine.start) * nx : 0,
+                                    "the coarse level's restriction");
     const Slab& has = fine_slabs[r];
     const Index received = overlap(has.start, has.count, 2 * coarse.start, 2 * coarse.count);
-    receive_counts[r] = message_size(received * nx);
+    receive_counts[r] = message_count(received * nx, "the coarse level's restriction");
     receive_offsets[r] =
-        message_size(received > 0 ? (std::max(has.start, 2 * coarse.start) - 2 * coarse.start) * nx : 0);
+        message_count(received > 0 ? (std::max(has.start, 2 * coarse.start) - 2 * coarse.start) * nx : 0,
+                      "the coarse level's restriction");
   }
   std::vector<double> fine_rows(static_cast<std::size_t>(std::max<Index>(2 * coarse.count * nx, 1)));
   MPI_Alltoallv(local.data(), send_counts.data(), send_offsets.data(), MPI_DOUBLE, fine_rows.data(),

@@ -5,15 +5,11 @@
 #include <string>
 
 #include "contactbench/core/error.hpp"
+#include "contactbench/mpi/message_count.hpp"
 
 namespace contactbench::mpi {
 
 namespace {
-
-int message_size(Index values) {
-  if (values > INT_MAX) throw Error("mpi: a row exchange moves more than 2^31 values between two ranks");
-  return static_cast<int>(values);
-}
 
 // The rank owning global row y (slabs in rank order), or -1.
 int owner_of(const std::vector<Slab>& layout, Index y) {
@@ -52,8 +48,8 @@ RowExchange::RowExchange(const std::vector<Slab>& layout, int rank,
     from[static_cast<std::size_t>(owner_of(layout, y))].push_back(y);
   Index received = 0;
   for (std::size_t r = 0; r < ranks; ++r) {
-    receive_counts_.push_back(message_size(static_cast<Index>(from[r].size()) * nx));
-    receive_offsets_.push_back(message_size(received * nx));
+    receive_counts_.push_back(message_count(static_cast<Index>(from[r].size()) * nx, "a row exchange"));
+    receive_offsets_.push_back(message_count(received * nx, "a row exchange"));
     for (const Index y : from[r])
       received_at_[static_cast<std::size_t>(y)] = received++;
   }
@@ -67,8 +63,8 @@ RowExchange::RowExchange(const std::vector<Slab>& layout, int rank,
           send_rows_.push_back(y - slab_.start);
           ++rows;
         }
-    send_counts_.push_back(message_size(rows * nx));
-    send_offsets_.push_back(message_size(sent * nx));
+    send_counts_.push_back(message_count(rows * nx, "a row exchange"));
+    send_offsets_.push_back(message_count(sent * nx, "a row exchange"));
     sent += rows;
   }
   send_buffer_.resize(static_cast<std::size_t>(std::max<Index>(sent * nx, 1)));

@@ -6,9 +6,7 @@
 
 namespace contactbench::reference {
 
-namespace {
-constexpr Real pi = std::numbers::pi;
-}
+namespace {}
 
 Real HertzSphere::contact_radius(Real load) const {
   return std::cbrt(3 * load * radius / (4 * modulus));

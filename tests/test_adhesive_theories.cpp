@@ -27,6 +27,7 @@
 #include "contactbench/theories/pastewka_robbins_criterion.hpp"
 #include "contactbench/theories/plateau_hertz.hpp"
 #include "contactbench/theories/plateau_model.hpp"
+#include "run_scene_text.hpp"
 #include "small_scene.hpp"
 
 namespace contactbench {
@@ -364,15 +365,11 @@ const std::string kStickyScene = "name = \"sticky_theories\"\n" + kSmallSurfaceA
                                  "[loads]\nvalues = [1e-3, 1e-2]\n[interface]\n"
                                  "adhesion = { model = \"dugdale\", work = 1.0, stress = 1e8 }\n";
 
-SceneReport run_text(const std::string& text) {
-  return run_scene(parse_scene(text, "test.toml"), {.threads = 1, .observer = nullptr});
-}
-
 // They run, converge and answer finite areas at least GW's (the non-adhesive summits at the same load),
 // and the comparison judges them against the adhesive BEM. No bound on how close they come: that is what the
 // scene measures.
 TEST(AdhesiveTheoryMethods, RunBesideTheAdhesiveBem) {
-  const SceneReport report = run_text(kStickyScene + R"(
+  const SceneReport report = run_scene_text(kStickyScene + R"(
 [methods.bem]
 [methods.fuller_tabor]
 [methods.maugis_gw]
@@ -415,7 +412,7 @@ ignore = ["adhesion"]
 
 bool refused_with(const std::string& text, const std::string& key_path, const std::string& words) {
   try {
-    run_text(text);
+    run_scene_text(text);
   } catch (const SceneError& error) {
     for (const std::string& problem : error.problems())
       if (problem.find(": " + key_path + ": ") != std::string::npos &&

@@ -41,7 +41,7 @@ std::string scene_with(const std::string& top, const std::string& interface, con
 }
 
 const std::string kAdhesion = "[interface]\nadhesion = { model = \"dugdale\", work = 0.05, stress = 1e5 }\n";
-const std::string kPath = "approach_retract = { from = 2.5e-6, to = 0.5e-6, steps = 12 }\n";
+const std::string kApproachRetract = "approach_retract = { from = 2.5e-6, to = 0.5e-6, steps = 12 }\n";
 
 std::string refusal(const std::string& text) {
   try {
@@ -54,7 +54,7 @@ std::string refusal(const std::string& text) {
 
 TEST(ApproachRetractScene, TheRunsPathIsTheLibrarysPath) {
   const Scene scene = parse_scene(
-      scene_with(kPath, kAdhesion,
+      scene_with(kApproachRetract, kAdhesion,
                  "[methods.bem]\n[methods.bem_plain]\nmethod = \"bem\"\nignore = [\"adhesion\"]\n"),
       "test.toml");
   ASSERT_TRUE(scene.approach_retract.has_value());
@@ -136,11 +136,11 @@ TEST(ApproachRetractScene, NothingRunsWithoutTheKey) {
 
 TEST(ApproachRetractScene, RefusedNamingTheKey) {
   // No adhesion: nothing to jump.
-  std::string why = refusal(scene_with(kPath, "", "[methods.bem]\n"));
+  std::string why = refusal(scene_with(kApproachRetract, "", "[methods.bem]\n"));
   EXPECT_NE(why.find("approach_retract"), std::string::npos) << why;
   EXPECT_NE(why.find("no interface.adhesion"), std::string::npos) << why;
   // Every BEM ignores the adhesion.
-  why = refusal(scene_with(kPath, kAdhesion, "[methods.bem]\nignore = [\"adhesion\"]\n"));
+  why = refusal(scene_with(kApproachRetract, kAdhesion, "[methods.bem]\nignore = [\"adhesion\"]\n"));
   EXPECT_NE(why.find("every bem method of this scene ignores"), std::string::npos) << why;
   // The turn must lie below the start.
   why = refusal(scene_with("approach_retract = { from = 1e-6, to = 2e-6, steps = 12 }\n", kAdhesion,

@@ -13,6 +13,7 @@
 #include "contactbench/app/scene_error.hpp"
 #include "contactbench/app/scene_plan.hpp"
 #include "contactbench/app/scene_run.hpp"
+#include "run_scene_text.hpp"
 #include "small_scene.hpp"
 
 namespace contactbench {
@@ -97,10 +98,6 @@ std::string record_scene(const std::string& name, const std::string& methods) {
          methods;
 }
 
-SceneReport run_text(const std::string& text) {
-  return run_scene(parse_scene(text, "test.toml"), {.threads = 1, .observer = nullptr});
-}
-
 const std::vector<Real>& column(const MethodCurve& curve, const std::string& name) {
   const auto found = std::find_if(curve.columns.begin(), curve.columns.end(),
                                   [&](const auto& c) { return c.first == name; });
@@ -117,11 +114,11 @@ std::size_t bem_stages(const SceneReport& report) {
 // End to end: an unset boundary on a non-periodic problem is the declared mirror's solve, bit for bit (the
 // same stage: same solver, grid and iteration; compared with ==, no tolerance), and its parameters say so.
 TEST(BemBoundaryDefault, UnsetOnARecordIsTheMirroredSolveBitForBitAndSaysSo) {
-  const SceneReport unset = run_text(record_scene("unset", "[methods.bem]\nperiodic = false\n"));
+  const SceneReport unset = run_scene_text(record_scene("unset", "[methods.bem]\nperiodic = false\n"));
   const SceneReport mirrored =
-      run_text(record_scene("mirrored", "[methods.bem]\nperiodic = false\nboundary = \"mirrored\"\n"));
+      run_scene_text(record_scene("mirrored", "[methods.bem]\nperiodic = false\nboundary = \"mirrored\"\n"));
   const SceneReport as_is =
-      run_text(record_scene("as_is", "[methods.bem]\nperiodic = false\nboundary = \"as_is\"\n"));
+      run_scene_text(record_scene("as_is", "[methods.bem]\nperiodic = false\nboundary = \"as_is\"\n"));
   const MethodCurve& u = unset.methods[0].curve;
   const MethodCurve& m = mirrored.methods[0].curve;
   EXPECT_EQ(u.area_fraction, m.area_fraction);
@@ -140,9 +137,9 @@ TEST(BemBoundaryDefault, UnsetOnARecordIsTheMirroredSolveBitForBitAndSaysSo) {
 
   // In one scene, unset and declared "mirrored" share one solve.
   const SceneReport both =
-      run_text(record_scene("both",
-                            "[methods.bem]\nperiodic = false\n[methods.bem_m]\nmethod = \"bem\"\n"
-                            "periodic = false\nboundary = \"mirrored\"\nconnectivity = 8\n"));
+      run_scene_text(record_scene("both",
+                                  "[methods.bem]\nperiodic = false\n[methods.bem_m]\nmethod = \"bem\"\n"
+                                  "periodic = false\nboundary = \"mirrored\"\nconnectivity = 8\n"));
   EXPECT_EQ(bem_stages(both), 1u);
   EXPECT_EQ(both.methods[0].curve.area_fraction, m.area_fraction);
 }
@@ -151,11 +148,11 @@ TEST(BemBoundaryDefault, UnsetOnARecordIsTheMirroredSolveBitForBitAndSaysSo) {
 // (its finer grids are Fourier refinements of a periodic surface). A declared "as_is" beside it shares the
 // solve and reads as declared.
 TEST(BemBoundaryDefault, AFallbackToAsIsSaysWhyInTheUnsetMethodsParameters) {
-  const SceneReport report =
-      run_text(record_scene("fallback",
-                            "[methods.bem]\nperiodic = false\nextrapolate = true\nerror_estimate = \"gci2\"\n"
-                            "[methods.bem_declared]\nmethod = \"bem\"\nperiodic = false\nextrapolate = true\n"
-                            "error_estimate = \"gci2\"\nboundary = \"as_is\"\nconnectivity = 8\n"));
+  const SceneReport report = run_scene_text(
+      record_scene("fallback",
+                   "[methods.bem]\nperiodic = false\nextrapolate = true\nerror_estimate = \"gci2\"\n"
+                   "[methods.bem_declared]\nmethod = \"bem\"\nperiodic = false\nextrapolate = true\n"
+                   "error_estimate = \"gci2\"\nboundary = \"as_is\"\nconnectivity = 8\n"));
   EXPECT_EQ(bem_stages(report), 1u);
   const std::string& unset = report.methods[0].curve.parameters;
   const std::string& declared = report.methods[1].curve.parameters;
@@ -189,7 +186,7 @@ TEST(BemBoundaryDefault, ThePlanFallsBackWithAdhesion) {
 TEST(BemBoundaryDefault, ADeclaredMirrorWhereUnavailableIsRefusedNamingTheKey) {
   const auto refusal = [](const std::string& text) -> std::string {
     try {
-      run_text(text);
+      run_scene_text(text);
     } catch (const SceneError& error) {
       return error.what();
     }

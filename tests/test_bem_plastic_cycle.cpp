@@ -15,15 +15,14 @@
 #include "contactbench/core/generation.hpp"
 #include "each_solver.hpp"
 #include "reference_solutions.hpp"
+#include "test_constants.hpp"
 
 namespace contactbench {
 namespace {
 
 class PlasticCycle : public EachSolver {};
 
-constexpr Real pi = std::numbers::pi;
-constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* [Pa]
-constexpr Real kTolerance = 1e-10;                 // of every solve here
+constexpr Real kTolerance = 1e-10;  // of every solve here
 
 // A reloaded state solves the same problem as the first (docs/theory.md section 6.7), so the two differ only
 // at nodes whose pressure is within the solver's tolerance of 0, where the sign is the round-off's: a few
@@ -52,15 +51,15 @@ TEST_P(PlasticCycle, SphereYieldsWhereHertzPeakReachesTheHardness) {
   // margins leave room for that while still placing yield at p0 = H.
   const Index n = 128;
   const Real dx = 1e-6, radius = 1e-3;
-  const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
+  const reference::HertzSphere hertz{.radius = radius, .modulus = testing::kPaperModulus};
   const Real hardness = 0.9 * hertz.peak_pressure(hertz.load_of_contact_radius(24 * dx));
-  const Real yield_load =
-      std::pow(pi, 3) * radius * radius * std::pow(hardness, 3) / (6 * kModulus * kModulus);
+  const Real yield_load = std::pow(pi, 3) * radius * radius * std::pow(hardness, 3) /
+                          (6 * testing::kPaperModulus * testing::kPaperModulus);
   EXPECT_NEAR(hertz.peak_pressure(yield_load), hardness, 1e-12 * hardness);  // the formula, checked
   const Surface surface = sphere(n, dx, radius);
   const Real area = surface.grid().nominal_area();
   for (const auto& [factor, plastic] : {std::pair{0.85, false}, std::pair{1.2, true}}) {
-    BemSolver solver(surface, kModulus,
+    BemSolver solver(surface, testing::kPaperModulus,
                      {.tolerance = kTolerance, .hardness = hardness, .solver = GetParam()});
     const ContactSolution& s = solver.solve(factor * yield_load / area);
     ASSERT_TRUE(s.converged) << factor;
@@ -74,12 +73,12 @@ TEST_P(PlasticCycle, SphereUnloadsOnItsFlattenedCapAndReloadsToTheSameState) {
   // gives the loaded state again.
   const Index n = 128;
   const Real dx = 1e-6, radius = 1e-3;
-  const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
+  const reference::HertzSphere hertz{.radius = radius, .modulus = testing::kPaperModulus};
   const Real hardness = 0.7 * hertz.peak_pressure(hertz.load_of_contact_radius(24 * dx));
   const Surface surface = sphere(n, dx, radius);
   const Real area = surface.grid().nominal_area();
   const Real top = hertz.load_of_contact_radius(24 * dx) / area, low = 0.5 * top;
-  BemSolver solver(surface, kModulus,
+  BemSolver solver(surface, testing::kPaperModulus,
                    {.tolerance = kTolerance,
                     .hardness = hardness,
                     .keep_plastic_deformation = true,
@@ -108,10 +107,10 @@ TEST_P(PlasticCycle, RoughSurfaceShakesDownOnReloading) {
   // gives the first loading's area and pressure (the deformed surface's elastic solution is the loaded
   // state), and the second reloading changes the surface no more (the overlap is zero to the tolerance).
   const Surface surface = rough_surface(64);
-  const Real top = 0.02 * kModulus * 0.05;  // P/A0: a few % of contact
-  BemSolver elastic(surface, kModulus, {.tolerance = kTolerance, .solver = GetParam()});
+  const Real top = 0.02 * testing::kPaperModulus * 0.05;  // P/A0: a few % of contact
+  BemSolver elastic(surface, testing::kPaperModulus, {.tolerance = kTolerance, .solver = GetParam()});
   const Real hardness = 0.3 * elastic.solve(top).pressure.maxCoeff();
-  BemSolver solver(surface, kModulus,
+  BemSolver solver(surface, testing::kPaperModulus,
                    {.tolerance = kTolerance,
                     .hardness = hardness,
                     .keep_plastic_deformation = true,
@@ -156,14 +155,14 @@ TEST_P(PlasticCycle, RoughSurfaceShakesDownOnReloading) {
 TEST_P(PlasticCycle, WithoutKeepingTheDeformationEveryLoadSeesTheGivenSurface) {
   // The default: the surface stays as given, so a load solved after a higher one equals its cold solve.
   const Surface surface = rough_surface(64);
-  const Real top = 0.02 * kModulus * 0.05;
-  BemSolver elastic(surface, kModulus, {.tolerance = kTolerance, .solver = GetParam()});
+  const Real top = 0.02 * testing::kPaperModulus * 0.05;
+  BemSolver elastic(surface, testing::kPaperModulus, {.tolerance = kTolerance, .solver = GetParam()});
   const Real hardness = 0.3 * elastic.solve(top).pressure.maxCoeff();
   const BemSolverOptions options{.tolerance = kTolerance, .hardness = hardness, .solver = GetParam()};
-  BemSolver stepped(surface, kModulus, options);
+  BemSolver stepped(surface, testing::kPaperModulus, options);
   stepped.solve(top);
   const ContactSolution after = stepped.solve(0.5 * top);
-  BemSolver cold(surface, kModulus, options);
+  BemSolver cold(surface, testing::kPaperModulus, options);
   const ContactSolution& fresh = cold.solve(0.5 * top);
   ASSERT_TRUE(after.converged && fresh.converged);
   EXPECT_EQ(stepped.surface().heights().matrix(), surface.centred().heights().matrix());

@@ -14,16 +14,13 @@
 #include "contactbench/app/scene_error.hpp"
 #include "contactbench/app/scene_run.hpp"
 #include "contactbench/core/topography_io.hpp"
+#include "run_scene_text.hpp"
 #include "small_scene.hpp"
 
 namespace contactbench {
 namespace {
 
 namespace fs = std::filesystem;
-
-SceneReport run_text(const std::string& text, const fs::path& origin = "test.toml") {
-  return run_scene(parse_scene(text, origin), {.threads = 1, .observer = nullptr});
-}
 
 const std::vector<Real>& column(const std::vector<std::pair<std::string, std::vector<Real>>>& columns,
                                 const std::string& name) {
@@ -71,9 +68,9 @@ TEST(PlasticPath, TheBemReportsEveryStepAndShakesDown) {
   fs::remove_all(folder);
   fs::create_directories(folder);
   const SceneReport report =
-      run_text("name = \"p\"\nreference = \"\"\n" + kSmallSurfaceAndMaterial + kPath +
-                   "[methods.bem]\ntolerance = 1e-10\nresidual_topography = \"residual.txt\"\n",
-               folder / "scene.toml");
+      run_scene_text("name = \"p\"\nreference = \"\"\n" + kSmallSurfaceAndMaterial + kPath +
+                         "[methods.bem]\ntolerance = 1e-10\nresidual_topography = \"residual.txt\"\n",
+                     folder / "scene.toml");
   const MethodCurve& curve = report.methods.at(0).curve;
   const auto& path = curve.path_columns;
   ASSERT_FALSE(path.empty());
@@ -101,7 +98,7 @@ TEST(PlasticPath, TheBemReportsEveryStepAndShakesDown) {
   // the given surface nowhere above it; a scene on it runs.
   const Surface residual = read_topography(folder / "residual.txt");
   EXPECT_EQ(residual.grid().nx, 32);
-  const SceneReport on_residual = run_text(
+  const SceneReport on_residual = run_scene_text(
       "name = \"r\"\nreference = \"\"\n[surface]\nfile = \"residual.txt\"\n[material]\nE = 100e9\nnu = "
       "0.3\n[loads]\nvalues = [1e-3]\n[methods.bem]\n",
       folder / "again.toml");
@@ -112,7 +109,7 @@ TEST(PlasticPath, TheBemReportsEveryStepAndShakesDown) {
 TEST(PlasticPath, RefusesWhatItCannotSolveBeforeAnyStage) {
   const auto problems = [](const std::string& text) {
     try {
-      run_text(text);
+      run_scene_text(text);
     } catch (const SceneError& e) {
       return std::string(e.what());
     }

@@ -18,15 +18,13 @@
 #include "contactbench/core/spectrum.hpp"
 #include "each_solver.hpp"
 #include "reference_solutions.hpp"
+#include "test_constants.hpp"
 #include "tolerances.hpp"
 
 namespace contactbench {
 namespace {
 
 class BemValidation : public EachSolver {};
-
-constexpr Real pi = std::numbers::pi;
-constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* of the paper's material [Pa]
 
 // h = D cos(2 pi x/lambda) cos(2 pi y/lambda) on n x n periodic points over one wavelength.
 Surface bisinusoid(Index n, Real lambda, Real amplitude) {
@@ -83,11 +81,12 @@ constexpr Index kBisinusoidPoints = 128;
 constexpr Real kLambda = 100e-6, kAmplitude = 1e-6;
 // p* and JGH's two asymptotes: tests/reference_solutions.hpp (two Hertz contacts a cell at small loads, the
 // crests at (0, 0) and (lambda/2, lambda/2); two non-contact islands around the saddles near full contact).
-const reference::Bisinusoid kBisinusoid{.amplitude = kAmplitude, .wavelength = kLambda, .modulus = kModulus};
+const reference::Bisinusoid kBisinusoid{
+    .amplitude = kAmplitude, .wavelength = kLambda, .modulus = testing::kPaperModulus};
 const Real kFullContact = kBisinusoid.full_contact_pressure();  // p*
 
 TEST_P(BemValidation, BisinusoidAtSmallLoadIsTwoHertzContacts) {
-  BemSolver solver(bisinusoid(kBisinusoidPoints, kLambda, kAmplitude), kModulus,
+  BemSolver solver(bisinusoid(kBisinusoidPoints, kLambda, kAmplitude), testing::kPaperModulus,
                    {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
   Labeller labeller(Topology::for_surface(Connectivity::four, true));
   std::vector<Real> deviation;
@@ -115,7 +114,7 @@ TEST_P(BemValidation, BisinusoidAtSmallLoadIsTwoHertzContacts) {
 }
 
 TEST_P(BemValidation, BisinusoidNearFullContactLeavesTwoShrinkingIslands) {
-  BemSolver solver(bisinusoid(kBisinusoidPoints, kLambda, kAmplitude), kModulus,
+  BemSolver solver(bisinusoid(kBisinusoidPoints, kLambda, kAmplitude), testing::kPaperModulus,
                    {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
   Labeller labeller(Topology::for_surface(Connectivity::four, true));
   std::vector<Real> deviation;
@@ -148,7 +147,7 @@ TEST(BemOperator, HalfSpaceIsSymmetricAndPositiveOnSignedFields) {
   std::normal_distribution<Real> normal(0, 1e8);
   for (const bool periodic : {false, true}) {
     const Grid grid{.nx = 15, .ny = 9, .lx = 15e-6, .ly = 13.5e-6, .periodic = periodic};
-    const auto half_space = make_half_space(grid, kModulus);
+    const auto half_space = make_half_space(grid, testing::kPaperModulus);
     HeightMap p1(grid.ny, grid.nx), p2(grid.ny, grid.nx), u1, u2;
     for (Index i = 0; i < p1.size(); ++i) {
       p1.data()[i] = normal(random);
@@ -184,9 +183,10 @@ TEST_P(BemValidation, TwoSolutionsAreReciprocal) {
   {  // periodic: surface A on 64 x 64 points, 239 and 1016 contact nodes
     const Surface surface = surface_a(64, 3);
     const Real gbar = rms_gradient(surface);
-    BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
-    const ContactSolution s1 = solver.solve(0.02 * kModulus * gbar);
-    const ContactSolution s2 = solver.solve(0.1 * kModulus * gbar);
+    BemSolver solver(surface, testing::kPaperModulus,
+                     {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    const ContactSolution s1 = solver.solve(0.02 * testing::kPaperModulus * gbar);
+    const ContactSolution s2 = solver.solve(0.1 * testing::kPaperModulus * gbar);
     expect_admissible(s1, solver.surface(), "surface A, low load");
     expect_admissible(s2, solver.surface(), "surface A, high load");
     ASSERT_LT(s1.contact_points, s2.contact_points);  // the contact sets differ: the identity is not trivial
@@ -194,7 +194,8 @@ TEST_P(BemValidation, TwoSolutionsAreReciprocal) {
   }
   {  // non-periodic: a sphere on 64 x 64 points, 29 and 89 contact nodes
     const Surface surface = sphere_cap(64, 64, 1e-6, 1e-3);
-    BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver solver(surface, testing::kPaperModulus,
+                     {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const ContactSolution s1 = solver.solve(1e6);
     const ContactSolution s2 = solver.solve(5e6);
     expect_admissible(s1, solver.surface(), "sphere, low load");
@@ -218,10 +219,11 @@ TEST_P(BemValidation, TheGapIsThatOfThePressure) {
     const Surface surface = surface_a(128, 5).with_periodic(periodic);
     const HeightMap& h = surface.heights();
     const Real range = h.maxCoeff() - h.minCoeff();
-    BemSolver solver(surface, kModulus, {.tolerance = 1e-10, .max_iterations = 20000, .solver = GetParam()});
-    const auto half_space = make_half_space(surface.grid(), kModulus);
+    BemSolver solver(surface, testing::kPaperModulus,
+                     {.tolerance = 1e-10, .max_iterations = 20000, .solver = GetParam()});
+    const auto half_space = make_half_space(surface.grid(), testing::kPaperModulus);
     for (const Real ratio : {0.005, 0.05}) {
-      const ContactSolution& s = solver.solve(ratio * rms_gradient(surface) * kModulus);
+      const ContactSolution& s = solver.solve(ratio * rms_gradient(surface) * testing::kPaperModulus);
       ASSERT_TRUE(s.converged) << periodic << " " << ratio;
       HeightMap u;
       half_space->apply(s.pressure, u);
@@ -244,12 +246,14 @@ TEST_P(BemValidation, WorkOfTheLoadIsTheElasticEnergy) {
   const Surface surface = sphere_cap(n, n, dx, radius);
   const Grid& grid = surface.grid();
   const Real pixel = grid.dx() * grid.dy();
-  BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
-  const auto half_space = make_half_space(grid, kModulus);
+  BemSolver solver(surface, testing::kPaperModulus,
+                   {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+  const auto half_space = make_half_space(grid, testing::kPaperModulus);
   std::vector<Real> load, approach, energy;
   for (Index k = 0; k <= intervals; ++k) {
     const Real delta = delta_max * (0.25 + 0.75 * static_cast<Real>(k) / static_cast<Real>(intervals));
-    const Real force = reference::HertzSphere{.radius = radius, .modulus = kModulus}.load_of_approach(delta);
+    const Real force =
+        reference::HertzSphere{.radius = radius, .modulus = testing::kPaperModulus}.load_of_approach(delta);
     const ContactSolution& s = solver.solve(force / grid.nominal_area());
     expect_admissible(s, solver.surface(), "load " + std::to_string(k));
     HeightMap u;
@@ -265,9 +269,9 @@ TEST_P(BemValidation, WorkOfTheLoadIsTheElasticEnergy) {
   // The trapezoid rule's leading error (Euler-Maclaurin) is (h^2/12) (P'(b) - P'(a)), with Hertz's stiffness
   // P' = 2 E* a: with h = 3 delta_max/32 it is 1.42e-3 of the work (the rule overestimates a convex P).
   const Real h = 0.75 * delta_max / static_cast<Real>(intervals);
-  const Real trapezoid_error = h * h / 12 * 2 * kModulus * (a_max - a_max / 2);
-  const Real hertz_work =
-      8.0 / 15.0 * kModulus * std::sqrt(radius) * (std::pow(delta_max, 2.5) - std::pow(delta_max / 4, 2.5));
+  const Real trapezoid_error = h * h / 12 * 2 * testing::kPaperModulus * (a_max - a_max / 2);
+  const Real hertz_work = 8.0 / 15.0 * testing::kPaperModulus * std::sqrt(radius) *
+                          (std::pow(delta_max, 2.5) - std::pow(delta_max / 4, 2.5));
   EXPECT_NEAR(trapezoid_error / hertz_work, 1.42e-3, 1e-5);
   // Less that term, work and energy agree to the next Euler-Maclaurin term, O(h^4) ~ 1e-6, plus the grid's
   // error in the curvature of P(delta), which is of the order of the stiffness' discretisation error (a
@@ -284,14 +288,15 @@ TEST_P(BemValidation, HertzConvergesUnderGridRefinement) {
   // One Hertz problem (R = 1 mm, a = 16 um) on grids of 32, 64, 128 points over 4a: 8, 16, 32 pixels per
   // contact radius. Errors against Hertz (docs/theory.md section 7) of the pressure field (relative L2), the
   // peak pressure p0 and the approach delta = a^2/R.
-  const reference::HertzSphere hertz{.radius = 1e-3, .modulus = kModulus};
+  const reference::HertzSphere hertz{.radius = 1e-3, .modulus = testing::kPaperModulus};
   const Real radius = hertz.radius, a = 16e-6, load = hertz.load_of_contact_radius(a);
   const Real p0 = hertz.peak_pressure(load), delta = hertz.approach(load);
   std::vector<Real> field, peak, approach;
   for (const Index n : {32, 64, 128}) {
     const Real dx = 4 * a / static_cast<Real>(n);
     const Surface surface = sphere_cap(n, n, dx, radius);
-    BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver solver(surface, testing::kPaperModulus,
+                     {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const ContactSolution& s = solver.solve(load / surface.grid().nominal_area());
     expect_admissible(s, solver.surface(), "n = " + std::to_string(n));
     Real error = 0, norm = 0;
@@ -341,7 +346,7 @@ Surface spike_on_a_flat(bool periodic) {
 Real spike_compliance(const Surface& surface) {
   HeightMap unit = HeightMap::Zero(kSpikeGrid, kSpikeGrid), u;
   unit(kSpikeRow, kSpikeColumn) = 1;
-  make_half_space(surface.grid(), kModulus)->apply(unit, u);
+  make_half_space(surface.grid(), testing::kPaperModulus)->apply(unit, u);
   return u(kSpikeRow, kSpikeColumn) - (surface.grid().periodic ? u.mean() : 0);
 }
 
@@ -353,10 +358,11 @@ TEST_P(BemValidation, ASingleSpikeCarriesTheWholeLoad) {
     const Real compliance = spike_compliance(surface);
     if (!periodic) {  // Love's centre of a square (docs/theory.md section 7): 1.122200 dx/E*, 7 printed
                       // digits
-      EXPECT_NEAR(compliance * kModulus / surface.grid().dx(), 1.122200, 5e-7);
+      EXPECT_NEAR(compliance * testing::kPaperModulus / surface.grid().dx(), 1.122200, 5e-7);
     }
     const Real touching = kSpikeHeight / compliance;  // the spike's pressure that brings it to the flat
-    BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver solver(surface, testing::kPaperModulus,
+                     {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const Real pbar = 0.3 * touching / static_cast<Real>(kSpikeGrid * kSpikeGrid);
     const ContactSolution& s = solver.solve(pbar);
     expect_admissible(s, solver.surface(), periodic ? "periodic" : "non-periodic");
@@ -386,7 +392,8 @@ TEST_P(BemValidation, ASpikePressedIntoTheFlatConverges) {
     for (const Real factor : {1.5, 3.0, 10.0}) {
       const Surface surface = spike_on_a_flat(periodic);
       const Real touching = kSpikeHeight / spike_compliance(surface);
-      BemSolver solver(surface, kModulus, {.tolerance = 1e-10, .max_iterations = 2000, .solver = GetParam()});
+      BemSolver solver(surface, testing::kPaperModulus,
+                       {.tolerance = 1e-10, .max_iterations = 2000, .solver = GetParam()});
       const ContactSolution& s = solver.solve(factor * touching / static_cast<Real>(kSpikeGrid * kSpikeGrid));
       const std::string what = std::string(periodic ? "periodic" : "non-periodic") + ", " +
                                std::to_string(factor) + " x the touching load";
@@ -407,8 +414,10 @@ TEST_P(BemValidation, AWarmStartFromOneContactNodeStillFindsThePenetration) {
     const Surface surface = spike_on_a_flat(periodic);
     const Real touching = kSpikeHeight / spike_compliance(surface);
     const Real nodes = static_cast<Real>(kSpikeGrid * kSpikeGrid);
-    BemSolver warm(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
-    BemSolver cold(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver warm(surface, testing::kPaperModulus,
+                   {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver cold(surface, testing::kPaperModulus,
+                   {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const char* what = periodic ? "periodic" : "non-periodic";
     ASSERT_EQ(warm.solve(0.3 * touching / nodes).contact_points, 1) << what;
     const ContactSolution& w = warm.solve(10 * touching / nodes);
@@ -430,14 +439,15 @@ TEST_P(BemValidation, AnExtrapolatedLoadPathGivesTheSameAnswers) {
     const Surface surface = spike_on_a_flat(periodic);
     const Real touching = kSpikeHeight / spike_compliance(surface);
     const Real nodes = static_cast<Real>(kSpikeGrid * kSpikeGrid);
-    BemSolver path(surface, kModulus,
+    BemSolver path(surface, testing::kPaperModulus,
                    {.tolerance = 1e-12,
                     .max_iterations = 20000,
                     .solver = GetParam(),
                     .load_path = LoadPathStart::extrapolated});
     const char* what = periodic ? "periodic" : "non-periodic";
     for (const Real factor : {0.3, 3.0, 6.0, 12.0}) {
-      BemSolver cold(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+      BemSolver cold(surface, testing::kPaperModulus,
+                     {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
       const ContactSolution& p = path.solve(factor * touching / nodes);
       const ContactSolution& c = cold.solve(factor * touching / nodes);
       expect_admissible(p, path.surface(), what);
@@ -455,11 +465,12 @@ TEST_P(BemValidation, ACoarseStartGivesTheSameAnswer) {
   // tolerance::solver_consistency. The hierarchy really ran: the coarse levels report their iterations.
   for (const bool periodic : {true, false}) {
     const Surface surface = surface_a(128, 11).with_periodic(periodic);
-    const Real load = 0.05 * kModulus * rms_gradient(surface) / 2;
+    const Real load = 0.05 * testing::kPaperModulus * rms_gradient(surface) / 2;
     BemSolver coarse(
-        surface, kModulus,
+        surface, testing::kPaperModulus,
         {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam(), .coarse_start = true});
-    BemSolver cold(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver cold(surface, testing::kPaperModulus,
+                   {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     const ContactSolution& c = cold.solve(load);
     const ContactSolution& s = coarse.solve(load);
     const char* what = periodic ? "periodic" : "non-periodic";
@@ -479,10 +490,13 @@ TEST_P(BemValidation, AWarmStartedCurveGivesTheColdAnswersInBothDirections) {
   // all stop at 1e-12: tolerance::solver_consistency.
   for (const bool periodic : {true, false}) {
     const Surface surface = surface_a(128, 11).with_periodic(periodic);
-    const Real unit = kModulus * rms_gradient(surface) / 2;  // pct / 100 * unit: about pct % contact
-    BemSolver warm(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    const Real unit =
+        testing::kPaperModulus * rms_gradient(surface) / 2;  // pct / 100 * unit: about pct % contact
+    BemSolver warm(surface, testing::kPaperModulus,
+                   {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     for (const Real pct : {2.0, 5.0, 12.0, 30.0, 10.0, 3.0}) {
-      BemSolver cold(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+      BemSolver cold(surface, testing::kPaperModulus,
+                     {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
       const ContactSolution& c = cold.solve(pct / 100 * unit);
       const ContactSolution& w = warm.solve(pct / 100 * unit);
       const std::string what =
@@ -505,9 +519,9 @@ TEST(ActiveSetSinglePrecision, ALargeContactSetConverges) {
   const Grid grid = paper::grid();
   const Surface surface = synthesize(grid, generate_coefficients(grid, paper::surface_a(), 1), 512, 512);
   BemSolver solver(
-      surface, kModulus,
+      surface, testing::kPaperModulus,
       {.tolerance = 1e-6, .max_iterations = 500, .single_precision = true, .solver = SolverKind::active_set});
-  const ContactSolution& s = solver.solve(0.03 * kModulus);
+  const ContactSolution& s = solver.solve(0.03 * testing::kPaperModulus);
   EXPECT_TRUE(s.converged) << s.iterations << " iterations";
   EXPECT_LT(s.iterations, 150);
 }
@@ -519,9 +533,9 @@ TEST(ActiveSetExtendedFilter, CutsTheIterationsOnARoughSurface) {
   // iterations, and 36 with the residual left at zero off the set (the filter as it was); at most 30 tells
   // the two apart with room for a few iterations of platform difference (the counts are deterministic).
   const Surface surface = surface_a(256, 1).with_periodic(false);
-  BemSolver solver(surface, kModulus,
+  BemSolver solver(surface, testing::kPaperModulus,
                    {.tolerance = 1e-6, .max_iterations = 20000, .solver = SolverKind::active_set});
-  const ContactSolution& s = solver.solve(0.05 * rms_gradient(surface) * kModulus);
+  const ContactSolution& s = solver.solve(0.05 * rms_gradient(surface) * testing::kPaperModulus);
   ASSERT_TRUE(s.converged);
   EXPECT_LE(s.iterations, 30) << "iterations";
 }
@@ -536,9 +550,9 @@ TEST(ActiveSetColdStart, KeepsNoMoreNodesThanTheCoarseLevelTouches) {
   Index iterations = 0;
   for (const bool periodic : {true, false}) {
     const Surface surface = surface_a(256, 1).with_periodic(periodic);
-    BemSolver solver(surface, kModulus,
+    BemSolver solver(surface, testing::kPaperModulus,
                      {.tolerance = 1e-6, .max_iterations = 20000, .solver = SolverKind::active_set});
-    const ContactSolution& s = solver.solve(0.005 * rms_gradient(surface) * kModulus);
+    const ContactSolution& s = solver.solve(0.005 * rms_gradient(surface) * testing::kPaperModulus);
     ASSERT_TRUE(s.converged);
     iterations += s.iterations;
   }
@@ -557,14 +571,14 @@ TEST(ActiveSetWarmStart, ACurveCostsLessThanColdSolves) {
   const Surface surface = surface_a(256, 1);
   const BemSolverOptions options{
       .tolerance = 1e-8, .max_iterations = 20000, .solver = SolverKind::active_set};
-  BemSolver warm(surface, kModulus, options);
+  BemSolver warm(surface, testing::kPaperModulus, options);
   Index warm_iterations = 0, cold_iterations = 0;
   for (int k = 1; k <= 10; ++k) {
-    BemSolver cold(surface, kModulus, options);
-    const ContactSolution& c = cold.solve(0.001 * k * kModulus);
+    BemSolver cold(surface, testing::kPaperModulus, options);
+    const ContactSolution& c = cold.solve(0.001 * k * testing::kPaperModulus);
     ASSERT_TRUE(c.converged);
     cold_iterations += c.iterations;
-    const ContactSolution& w = warm.solve(0.001 * k * kModulus);
+    const ContactSolution& w = warm.solve(0.001 * k * testing::kPaperModulus);
     ASSERT_TRUE(w.converged);
     warm_iterations += w.iterations;
   }
@@ -576,8 +590,9 @@ TEST_P(BemValidation, AContactFractionOf1e4OnARandomSurface) {
   // kappa ~ 2-3 times the load), cold-started from the uniform pressure over all 65536 nodes.
   const Surface surface = surface_a(256, 11);
   const Real gbar = rms_gradient(surface);
-  BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
-  const Real load = 3e-5 * kModulus * gbar;
+  BemSolver solver(surface, testing::kPaperModulus,
+                   {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+  const Real load = 3e-5 * testing::kPaperModulus * gbar;
   const ContactSolution& s = solver.solve(load);
   expect_admissible(s, solver.surface(), "A/A0 ~ 1e-4");
   // A few nodes: measured 5 (A/A0 = 7.6e-5) with every solver. At this load A/A0 grows about like the
@@ -605,8 +620,9 @@ TEST_P(BemValidation, AContactFractionOf099OnARandomSurface) {
   // small islands. No reference value exists; the band only makes sure that the case is the one intended.
   const Surface surface = surface_a(128, 11);
   const Real gbar = rms_gradient(surface);
-  BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
-  const ContactSolution& s = solver.solve(1.2 * kModulus * gbar);
+  BemSolver solver(surface, testing::kPaperModulus,
+                   {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+  const ContactSolution& s = solver.solve(1.2 * testing::kPaperModulus * gbar);
   expect_admissible(s, solver.surface(), "A/A0 ~ 0.99");
   EXPECT_GT(node_fraction(s), 0.98);
   EXPECT_LT(node_fraction(s), 0.997);
@@ -624,9 +640,10 @@ TEST_P(BemValidation, ScaledSurfacesGiveTheSameDimensionlessAnswer) {
   // 1e-6: surface A (0.5 um rms) becomes 0.5 m rms, or 0.5 pm rms.
   const Surface base = surface_a(64, 5);
   const Real load = 0.05;  // p/(E* gbar)
-  BemSolver reference_solver(base, kModulus,
+  BemSolver reference_solver(base, testing::kPaperModulus,
                              {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
-  const ContactSolution reference = reference_solver.solve(load * kModulus * rms_gradient(base));
+  const ContactSolution reference =
+      reference_solver.solve(load * testing::kPaperModulus * rms_gradient(base));
   expect_admissible(reference, reference_solver.surface(), "reference");
   for (const Real scale : {1e6, 1e-6})
     for (const bool lateral : {true, false}) {
@@ -636,8 +653,9 @@ TEST_P(BemValidation, ScaledSurfacesGiveTheSameDimensionlessAnswer) {
         grid.ly *= scale;
       }
       const Surface scaled(grid, base.heights() * scale);
-      BemSolver solver(scaled, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
-      const ContactSolution& s = solver.solve(load * kModulus * rms_gradient(scaled));
+      BemSolver solver(scaled, testing::kPaperModulus,
+                       {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+      const ContactSolution& s = solver.solve(load * testing::kPaperModulus * rms_gradient(scaled));
       const std::string what =
           "scale " + std::to_string(scale) + (lateral ? ", lateral too" : ", heights only");
       expect_admissible(s, solver.surface(), what);
@@ -659,14 +677,15 @@ TEST_P(BemValidation, ADeepPitChangesNothingAHeightRangeOf1e6) {
   // at the same place relative to the raw heights (the solver centres the heights, and the pit moves their
   // mean by depth/N).
   const Surface base = surface_a(64, 5);
-  const Real load = 0.05 * kModulus * rms_gradient(base);
+  const Real load = 0.05 * testing::kPaperModulus * rms_gradient(base);
   std::vector<ContactSolution> solutions;
   std::vector<Real> means;
   for (const Real depth : {1.0, 1e-3}) {
     HeightMap h = base.heights();
     h(20, 30) = -depth;
     const Surface surface(base.grid(), h);
-    BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+    BemSolver solver(surface, testing::kPaperModulus,
+                     {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
     solutions.push_back(solver.solve(load));
     means.push_back(surface.mean_height());
     // Penetration is judged against the roughness, not against the metre of the pit.
@@ -689,10 +708,10 @@ TEST_P(BemValidation, WestergaardOnATransposedGridIsTheTransposedAnswer) {
   // (tolerance::solver_consistency of the peak; measured 7e-15). The contact width is Westergaard's
   // (docs/theory.md section 7): pbar/p* = sin^2(pi a/lambda), right to half a pixel at each edge (allow 1.5
   // pixels of 64).
-  const Real lambda = 64e-6, amplitude = 1e-6, p_star = pi * kModulus * amplitude / lambda;
-  BemSolver along_x(wavy(64, 8, false, lambda, amplitude), kModulus,
+  const Real lambda = 64e-6, amplitude = 1e-6, p_star = pi * testing::kPaperModulus * amplitude / lambda;
+  BemSolver along_x(wavy(64, 8, false, lambda, amplitude), testing::kPaperModulus,
                     {.tolerance = 1e-12, .solver = GetParam()});
-  BemSolver along_y(wavy(64, 8, true, lambda, amplitude), kModulus,
+  BemSolver along_y(wavy(64, 8, true, lambda, amplitude), testing::kPaperModulus,
                     {.tolerance = 1e-12, .solver = GetParam()});
   const ContactSolution& x = along_x.solve(0.3 * p_star);
   const ContactSolution& y = along_y.solve(0.3 * p_star);
@@ -714,11 +733,11 @@ TEST_P(BemValidation, HertzOnARectangularGridEqualsTheSquareOne) {
   // Hertz's peak pressure to O((dx/a)^2) (see below; the 32-pixel value in test_bem_solver.cpp is right to
   // 5e-5).
   const Real dx = 1e-6, radius = 1e-3, a = 12 * dx;
-  const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
+  const reference::HertzSphere hertz{.radius = radius, .modulus = testing::kPaperModulus};
   const Real load = hertz.load_of_contact_radius(a);
   const Surface rectangle = sphere_cap(96, 48, dx, radius), square = sphere_cap(96, 96, dx, radius);
-  BemSolver on_rectangle(rectangle, kModulus, {.tolerance = 1e-12, .solver = GetParam()});
-  BemSolver on_square(square, kModulus, {.tolerance = 1e-12, .solver = GetParam()});
+  BemSolver on_rectangle(rectangle, testing::kPaperModulus, {.tolerance = 1e-12, .solver = GetParam()});
+  BemSolver on_square(square, testing::kPaperModulus, {.tolerance = 1e-12, .solver = GetParam()});
   const ContactSolution& r = on_rectangle.solve(load / rectangle.grid().nominal_area());
   const ContactSolution& s = on_square.solve(load / square.grid().nominal_area());
   expect_admissible(r, on_rectangle.surface(), "96 x 48");
@@ -746,7 +765,7 @@ TEST(BemValidationControls, TheRectangularHertzPeakRejectsAWrongModulusOrLoad) {
   // (measured +5.4e-4). The peak goes like P^(1/3) E*^(2/3): a modulus off by 1 % moves it by 6.7e-3, a load
   // off by 1 % by 3.3e-3, E instead of E* by 6 %; each must leave the bound.
   const Real dx = 1e-6, radius = 1e-3, a = 12 * dx;
-  const reference::HertzSphere hertz{.radius = radius, .modulus = kModulus};
+  const reference::HertzSphere hertz{.radius = radius, .modulus = testing::kPaperModulus};
   const Real load = hertz.load_of_contact_radius(a), p0 = hertz.peak_pressure(load);
   const Surface rectangle = sphere_cap(96, 48, dx, radius);
   const auto peak_error = [&](Real modulus, Real load_factor) {
@@ -755,12 +774,12 @@ TEST(BemValidationControls, TheRectangularHertzPeakRejectsAWrongModulusOrLoad) {
     EXPECT_TRUE(s.converged);
     return std::abs(s.pressure.maxCoeff() / p0 - 1);
   };
-  EXPECT_LT(peak_error(kModulus, 1), 1e-3);
-  EXPECT_GT(peak_error(1.01 * kModulus, 1), 1e-3);
-  EXPECT_GT(peak_error(0.99 * kModulus, 1), 1e-3);
-  EXPECT_GT(peak_error(kModulus * (1 - 0.3 * 0.3), 1), 1e-3);
-  EXPECT_GT(peak_error(kModulus, 1.01), 1e-3);
-  EXPECT_GT(peak_error(kModulus, 0.99), 1e-3);
+  EXPECT_LT(peak_error(testing::kPaperModulus, 1), 1e-3);
+  EXPECT_GT(peak_error(1.01 * testing::kPaperModulus, 1), 1e-3);
+  EXPECT_GT(peak_error(0.99 * testing::kPaperModulus, 1), 1e-3);
+  EXPECT_GT(peak_error(testing::kPaperModulus * (1 - 0.3 * 0.3), 1), 1e-3);
+  EXPECT_GT(peak_error(testing::kPaperModulus, 1.01), 1e-3);
+  EXPECT_GT(peak_error(testing::kPaperModulus, 0.99), 1e-3);
 }
 
 TEST(BemValidationControls, TheContactFractionOf1e4RejectsALoadOrStiffnessOffBy25Percent) {
@@ -768,9 +787,9 @@ TEST(BemValidationControls, TheContactFractionOf1e4RejectsALoadOrStiffnessOffBy2
   // at a given p/E*, a stiffness) 25 % high or half as large must leave it (the comment there says 7 and 2
   // nodes were measured).
   const Surface surface = surface_a(256, 11);
-  const Real load = 3e-5 * kModulus * rms_gradient(surface);
+  const Real load = 3e-5 * testing::kPaperModulus * rms_gradient(surface);
   const auto nodes = [&](Real factor) {
-    BemSolver solver(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000});
+    BemSolver solver(surface, testing::kPaperModulus, {.tolerance = 1e-12, .max_iterations = 20000});
     const ContactSolution& s = solver.solve(factor * load);
     EXPECT_TRUE(s.converged);
     return s.contact_points;

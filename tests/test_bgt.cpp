@@ -22,8 +22,6 @@
 namespace contactbench {
 namespace {
 
-constexpr Real pi = std::numbers::pi;
-
 // Named tolerances, each with its reason (docs/architecture.md).
 // Carlson's duplication against 17-digit known values and series: a few ulps (observed <= 2e-16).
 constexpr Real kEllipticKnown = 1e-15;

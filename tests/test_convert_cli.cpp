@@ -7,13 +7,14 @@
 #include <string>
 
 #include "cli_runner.hpp"
+#include "test_constants.hpp"
 
 namespace contactbench {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path samples{CB_DATA_DIR "/formats"};
+using testing::kFormatSamples;
 
 using testing::CommandResult;
 using testing::slurp;
@@ -31,11 +32,11 @@ std::string json_text(const std::string& json, const std::string& key) {
 }
 
 TEST_F(ConvertCli, StatsReportsChannelFillAndLevelling) {
-  const CommandResult refused = run("stats " + (samples / "opd-1.opd").string());
+  const CommandResult refused = run("stats " + (kFormatSamples / "opd-1.opd").string());
   EXPECT_EQ(refused.status, 1);
   EXPECT_NE(refused.err.find("opd-1.opd: 116 of 307200 points"), std::string::npos) << refused.err;
   const CommandResult filled =
-      run("stats " + (samples / "opd-1.opd").string() + " --fill harmonic --level plane");
+      run("stats " + (kFormatSamples / "opd-1.opd").string() + " --fill harmonic --level plane");
   ASSERT_EQ(filled.status, 0) << filled.err;
   EXPECT_EQ(json_text(filled.out, "format"), "\"wyko\"");
   EXPECT_EQ(json_text(filled.out, "invalid_points_filled"), "116");
@@ -43,21 +44,21 @@ TEST_F(ConvertCli, StatsReportsChannelFillAndLevelling) {
   EXPECT_EQ(json_text(filled.out, "level"), "\"plane\"");
   // After plane levelling the mean is zero to round-off of 307200 heights of ~1e-8 m.
   EXPECT_LT(std::abs(std::stod(json_text(filled.out, "mean"))), 1e-20);
-  const CommandResult channel = run("stats " + (samples / "di-3.di").string() + " --channel Height");
+  const CommandResult channel = run("stats " + (kFormatSamples / "di-3.di").string() + " --channel Height");
   ASSERT_EQ(channel.status, 0) << channel.err;
   EXPECT_EQ(json_text(channel.out, "channel"), "\"Height\"");
   EXPECT_EQ(json_text(channel.out, "level"), "\"none\"");
-  const CommandResult unknown = run("stats " + (samples / "di-3.di").string() + " --channel Nope");
+  const CommandResult unknown = run("stats " + (kFormatSamples / "di-3.di").string() + " --channel Nope");
   EXPECT_EQ(unknown.status, 1);
   EXPECT_NE(unknown.err.find("unknown channel 'Nope'; the file's channels: 0 'ZSensor'"), std::string::npos)
       << unknown.err;
-  const CommandResult bad_level = run("stats " + (samples / "di-3.di").string() + " --level tilt");
+  const CommandResult bad_level = run("stats " + (kFormatSamples / "di-3.di").string() + " --level tilt");
   EXPECT_NE(bad_level.status, 0);
   EXPECT_NE(bad_level.err.find("--level"), std::string::npos) << bad_level.err;
 }
 
 TEST_F(ConvertCli, ConvertWritesX3pNpyAndTheProjectFormatLosslessly) {
-  const fs::path source = samples / "metropro-1.dat";
+  const fs::path source = kFormatSamples / "metropro-1.dat";
   const CommandResult original = run("stats " + source.string());
   ASSERT_EQ(original.status, 0) << original.err;
   for (const std::string name : {"m.x3p", "m.npy", "m.txt"}) {
@@ -72,7 +73,7 @@ TEST_F(ConvertCli, ConvertWritesX3pNpyAndTheProjectFormatLosslessly) {
       EXPECT_EQ(json_text(copy.out, key), json_text(original.out, key)) << name << " " << key;
   }
   const CommandResult bad =
-      run("convert " + (samples / "wrongnpyfile.npy").string() + " " + (folder_ / "x.x3p").string());
+      run("convert " + (kFormatSamples / "wrongnpyfile.npy").string() + " " + (folder_ / "x.x3p").string());
   EXPECT_EQ(bad.status, 1);
   EXPECT_NE(bad.err.find("wrong magic"), std::string::npos) << bad.err;
   EXPECT_FALSE(fs::exists(folder_ / "x.x3p"));

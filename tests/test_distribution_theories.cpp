@@ -25,11 +25,12 @@
 #include "contactbench/theories/summit_gap_density.hpp"
 #include "random_surface.hpp"
 #include "small_scene.hpp"
+#include "test_constants.hpp"
 
 namespace contactbench {
 namespace {
 
-constexpr Real um = 1e-6;
+using testing::um;
 
 using testing::random_surface;
 

@@ -17,16 +17,13 @@
 #include "contactbench/app/scene.hpp"
 #include "contactbench/app/scene_error.hpp"
 #include "contactbench/app/scene_run.hpp"
+#include "run_scene_text.hpp"
 #include "small_scene.hpp"
 
 namespace contactbench {
 namespace {
 
 const std::string kLoads = "[loads]\nvalues = [1e-3, 1e-2, 3e-2]\n";
-
-SceneReport run_text(const std::string& text) {
-  return run_scene(parse_scene(text, "test.toml"), {.threads = 1, .observer = nullptr});
-}
 
 std::string scene_with(const std::string& distributions) {
   return "name = \"distributions\"\n" + distributions + kSmallSurfaceAndMaterial + kLoads + "[methods.bem]\n";
@@ -42,7 +39,7 @@ Real moment(const Histogram& h, F f) {
 }
 
 TEST(Distributions, IntegralsAreTheQuantitiesTheyComeFrom) {
-  const SceneReport report = run_text(scene_with("distributions = { load = 1e-2, bins = 40 }\n"));
+  const SceneReport report = run_scene_text(scene_with("distributions = { load = 1e-2, bins = 40 }\n"));
   const MethodCurve& curve = report.methods.front().curve;
   ASSERT_TRUE(curve.distributions.has_value());
   const LoadDistributions& d = *curve.distributions;
@@ -88,7 +85,7 @@ TEST(Distributions, PatchSizeBinsHoldEachSizeOnce) {
 }
 
 TEST(Distributions, NothingMeasuredWhenTheSceneDoesNotAsk) {
-  const SceneReport report = run_text(scene_with(""));
+  const SceneReport report = run_scene_text(scene_with(""));
   EXPECT_FALSE(report.methods.front().curve.distributions.has_value());
   for (const StageRecord& stage : report.stages)
     EXPECT_EQ(stage.name.find("distributions"), std::string::npos) << stage.name;

@@ -25,6 +25,7 @@
 #include "contactbench/core/spectrum.hpp"
 #include "contactbench/core/topography_io.hpp"
 #include "height_bits.hpp"
+#include "test_constants.hpp"
 #include "test_folder.hpp"
 #include "tolerances.hpp"
 
@@ -35,7 +36,7 @@ namespace fs = std::filesystem;
 
 // Samples from SurfaceTopography's test data (data/formats/README.md); the reference values there were
 // computed independently from the files and agree with what that project's tests assert.
-const fs::path samples{CB_DATA_DIR "/formats"};
+using testing::kFormatSamples;
 
 // tolerance::measured_sq (1e-9 relative): the references are printed to ten significant digits and both
 // sides scale the same stored numbers in double, so they agree to the printing.
@@ -151,7 +152,7 @@ std::vector<std::pair<std::string, std::string>> zip_members(const fs::path& pat
 // Each sample against the reference table.
 
 TEST(FormatSamples, X3pFloat64WithRectangularPixels) {
-  const TopographyReading reading = read_topography_reading(samples / "x3p-2.x3p");
+  const TopographyReading reading = read_topography_reading(kFormatSamples / "x3p-2.x3p");
   EXPECT_EQ(reading.format, TopographyFormat::x3p);
   const Surface& s = reading.surface;
   expect_sample(s, 650, 650, 8.297673139e-05, 2.044783738e-04, 7.728033274e-08);
@@ -163,7 +164,7 @@ TEST(FormatSamples, X3pFloat64WithRectangularPixels) {
 }
 
 TEST(FormatSamples, MetroProNonSquareWithOrientationFromTheRawBytes) {
-  const fs::path file = samples / "metropro-1.dat";
+  const fs::path file = kFormatSamples / "metropro-1.dat";
   const Surface s = read_topography(file);
   expect_sample(s, 640, 480, 7.028812979e-04, 5.271609734e-04, 7.528822205e-08);
   expect_relative(s.heights()(0, 0), 5.057531456e-05, "h(x0, y0)");
@@ -181,7 +182,7 @@ TEST(FormatSamples, MetroProNonSquareWithOrientationFromTheRawBytes) {
 }
 
 TEST(FormatSamples, SdfAsciiNonSquare) {
-  const Surface s = read_topography(samples / "sdf-1.sdf");
+  const Surface s = read_topography(kFormatSamples / "sdf-1.sdf");
   expect_sample(s, 7, 4, 7.0e-06, 4.0e-06, 1.360289729e-08);
   EXPECT_DOUBLE_EQ(s.heights()(0, 0), 1.0e-6);
   EXPECT_DOUBLE_EQ(s.heights()(0, 5), 0.96858e-6);  // first profile, sixth point
@@ -189,7 +190,7 @@ TEST(FormatSamples, SdfAsciiNonSquare) {
 }
 
 TEST(FormatSamples, NpyNeedsTheCallersSize) {
-  const fs::path file = samples / "example-2d.npy";
+  const fs::path file = kFormatSamples / "example-2d.npy";
   expect_refused(file, "no lateral size");
   // The array states no unit and its Sq, 2.7 taken as metres, is implausible: refused unless the unit is
   // said.
@@ -205,7 +206,7 @@ TEST(FormatSamples, NpyNeedsTheCallersSize) {
 }
 
 TEST(FormatSamples, NanoscopeEveryHeightChannelAndCorners) {
-  const fs::path file = samples / "di-1.di";
+  const fs::path file = kFormatSamples / "di-1.di";
   const TopographyReading first = read_topography_reading(file);
   EXPECT_EQ(first.format, TopographyFormat::nanoscope);
   EXPECT_EQ(first.channels, (std::vector<std::string>{"Height", "Height", "Phase", "AmplitudeError"}));
@@ -221,7 +222,7 @@ TEST(FormatSamples, NanoscopeEveryHeightChannelAndCorners) {
 }
 
 TEST(FormatSamples, NanoscopeDefaultIsTheFirstHeightChannelWhateverItsName) {
-  const fs::path file = samples / "di-3.di";
+  const fs::path file = kFormatSamples / "di-3.di";
   const TopographyReading zsensor = read_topography_reading(file);
   EXPECT_EQ(zsensor.channel, "ZSensor");
   expect_sample(zsensor.surface, 256, 256, 1e-05, 1e-05, 2.264253967e-07);
@@ -230,12 +231,12 @@ TEST(FormatSamples, NanoscopeDefaultIsTheFirstHeightChannelWhateverItsName) {
 }
 
 TEST(FormatSamples, SensofarNonSquare) {
-  const Surface s = read_topography(samples / "plu-1.plu");
+  const Surface s = read_topography(kFormatSamples / "plu-1.plu");
   expect_sample(s, 768, 576, 1.274880066e-03, 9.561600494e-04, 2.834390988e-06);
 }
 
 TEST(FormatSamples, DigitalSurfNonMeasuredPointsAreInvalid) {
-  const fs::path file = samples / "sur-3.sur";
+  const fs::path file = kFormatSamples / "sur-3.sur";
   expect_refused(file, "233009 of 262144 points");
   const formats::RawTopography raw = read_topography_channels(file);
   ASSERT_EQ(raw.channels.size(), 1u);
@@ -247,7 +248,7 @@ TEST(FormatSamples, DigitalSurfNonMeasuredPointsAreInvalid) {
 }
 
 TEST(FormatSamples, WykoNonSquareWithInvalidPoints) {
-  const fs::path file = samples / "opd-1.opd";
+  const fs::path file = kFormatSamples / "opd-1.opd";
   expect_refused(file, "116 of 307200 points");
   const formats::RawTopography raw = read_topography_channels(file);
   ASSERT_EQ(raw.channels.size(), 1u);
@@ -262,7 +263,7 @@ TEST(FormatSamples, WykoNonSquareWithInvalidPoints) {
 }
 
 TEST(FormatSamples, NetcdfNonSquare) {
-  const Surface s = read_topography(samples / "nc-1.nc");
+  const Surface s = read_topography(kFormatSamples / "nc-1.nc");
   expect_sample(s, 5, 10, 5e-09, 1e-08, 5.744562647e-09);
   // Heights 9 - 2 j nm along y, the same for every x.
   for (Index y = 0; y < 10; ++y)
@@ -505,11 +506,11 @@ TEST_F(FormatFiles, DetectionIsByContentNotByExtension) {
       {"nc-1.nc", TopographyFormat::netcdf},
   };
   for (const auto& [name, format] : cases) {
-    const fs::path renamed = write("renamed_" + name + ".bin", read_bytes(samples / name));
+    const fs::path renamed = write("renamed_" + name + ".bin", read_bytes(kFormatSamples / name));
     EXPECT_EQ(detect_topography_format(renamed), format) << name;
   }
   // A Sensofar file named like a MetroPro file is still read as what it is.
-  const fs::path plu_as_dat = write("plu.dat", read_bytes(samples / "plu-1.plu"));
+  const fs::path plu_as_dat = write("plu.dat", read_bytes(kFormatSamples / "plu-1.plu"));
   EXPECT_EQ(read_topography(plu_as_dat).nx(), 768);
 }
 
@@ -517,24 +518,24 @@ TEST_F(FormatFiles, DetectionIsByContentNotByExtension) {
 // Bad files: each refused with the file's name and what is wrong.
 
 TEST_F(FormatFiles, TruncatedFilesAreRefused) {
-  expect_refused(samples / "di_corrupted.di", "truncated or corrupt");
-  const std::string metropro = read_bytes(samples / "metropro-1.dat");
+  expect_refused(kFormatSamples / "di_corrupted.di", "truncated or corrupt");
+  const std::string metropro = read_bytes(kFormatSamples / "metropro-1.dat");
   expect_refused(write("cut.dat", metropro.substr(0, metropro.size() / 2)), "truncated or corrupt");
   expect_refused(write("header_only.dat", metropro.substr(0, 100)), "truncated or corrupt");
-  const std::string x3p = read_bytes(samples / "x3p-2.x3p");
+  const std::string x3p = read_bytes(kFormatSamples / "x3p-2.x3p");
   expect_refused(write("cut.x3p", x3p.substr(0, x3p.size() - 100)), "zip");
-  const std::string plu = read_bytes(samples / "plu-1.plu");
+  const std::string plu = read_bytes(kFormatSamples / "plu-1.plu");
   expect_refused(write("cut.plu", plu.substr(0, 1000)), "truncated or corrupt");
-  const std::string sur = read_bytes(samples / "sur-3.sur");
+  const std::string sur = read_bytes(kFormatSamples / "sur-3.sur");
   expect_refused(write("cut.sur", sur.substr(0, sur.size() - 1)), "truncated or corrupt");
-  const std::string opd = read_bytes(samples / "opd-1.opd");
+  const std::string opd = read_bytes(kFormatSamples / "opd-1.opd");
   expect_refused(write("cut.opd", opd.substr(0, opd.size() / 3)), "truncated or corrupt");
   expect_refused(write("cut.sdf", "aISO-1.0\nNumPoints = 3\n"), "truncated SDF");
 }
 
 TEST_F(FormatFiles, WrongMagicIsRefused) {
-  expect_refused(samples / "wrongnpyfile.npy", "wrong magic");
-  const std::string sdf = read_bytes(samples / "sdf-1.sdf");
+  expect_refused(kFormatSamples / "wrongnpyfile.npy", "wrong magic");
+  const std::string sdf = read_bytes(kFormatSamples / "sdf-1.sdf");
   expect_refused(write("text.x3p", sdf.substr(8)), "wrong magic");
   expect_refused(write("text.sur", "DIGITAL SORF and more"), "wrong magic");
   expect_refused(write("text.opd", "no directory here at all"), "wrong magic");
@@ -548,11 +549,11 @@ TEST_F(FormatFiles, HeaderPromisingMoreDataThanPresentIsRefused) {
   expect_refused(
       write("short.npy", npy_file("<f8", false, 20, 20, encoded(std::vector<double>{1, 2, 3, 4}, false))),
       "truncated or corrupt: .npy data (20 x 20)");
-  const std::string sdf = read_bytes(samples / "sdf-1.sdf");
+  const std::string sdf = read_bytes(kFormatSamples / "sdf-1.sdf");
   std::string more = sdf;
   more.replace(more.find("NumProfiles = 4"), 15, "NumProfiles = 5");
   expect_refused(write("more.sdf", more), "promises 7 x 5 = 35 values but the data hold 28");
-  std::string metropro = read_bytes(samples / "metropro-1.dat");
+  std::string metropro = read_bytes(kFormatSamples / "metropro-1.dat");
   metropro[70] = static_cast<char>(0x03);  // cn_org_height 480 -> 0x03e0 = 992 lines
   expect_refused(write("more.dat", metropro), "truncated or corrupt: MetroPro phase data");
   // A zip member shorter than the matrix it should fill.
@@ -565,12 +566,12 @@ TEST_F(FormatFiles, UnknownDataTypesAreRefused) {
   const std::string xml = x3p_main_xml("Q", 2, 2, "", "");
   expect_refused(write_zip("q.x3p", {{"main.xml", xml}, {"bindata/data.bin", std::string(64, '\0')}}),
                  "unknown x3p data type 'Q'");
-  std::string sdf = read_bytes(samples / "sdf-1.sdf");
+  std::string sdf = read_bytes(kFormatSamples / "sdf-1.sdf");
   sdf.replace(sdf.find("DataType = 7"), 12, "DataType = 9");
   expect_refused(write("type9.sdf", sdf), "unknown SDF DataType 9");
   expect_refused(write("complex.npy", npy_file("<c16", false, 1, 1, std::string(16, '\0'))),
                  "unsupported .npy data type '<c16'");
-  std::string di = read_bytes(samples / "di-3.di");
+  std::string di = read_bytes(kFormatSamples / "di-3.di");
   const std::size_t pixel = di.find("Bytes/pixel: 2");
   di[pixel + 13] = '3';
   expect_refused(write("three.di", di), "3 bytes per pixel; known: 2 and 4");
@@ -581,11 +582,11 @@ TEST_F(FormatFiles, ZipWithoutMainXmlIsRefused) {
 }
 
 TEST_F(FormatFiles, FailingChecksumsAreRefused) {
-  std::vector<std::pair<std::string, std::string>> members = zip_members(samples / "x3p-2.x3p");
+  std::vector<std::pair<std::string, std::string>> members = zip_members(kFormatSamples / "x3p-2.x3p");
   for (auto& [name, content] : members)
     if (name == "bindata/data.bin") content[1000] = static_cast<char>(content[1000] ^ 0x01);
   expect_refused(write_zip("data.x3p", members), "checksum failure: main.xml gives MD5 33ee4e6b");
-  members = zip_members(samples / "x3p-2.x3p");
+  members = zip_members(kFormatSamples / "x3p-2.x3p");
   for (auto& [name, content] : members)
     if (name == "main.xml") content.replace(content.find("Mountains"), 9, "Mountainz");
   expect_refused(write_zip("xml.x3p", members), "checksum failure: md5checksum.hex");
@@ -595,7 +596,7 @@ TEST_F(FormatFiles, FailingChecksumsAreRefused) {
 // succeeds or throws InputError; nothing else (no crash, no other exception, no hang).
 TEST_F(FormatFiles, MutatedSamplesNeverCrash) {
   std::mt19937_64 random(13);
-  for (const auto& entry : fs::directory_iterator(samples)) {
+  for (const auto& entry : fs::directory_iterator(kFormatSamples)) {
     if (entry.path().extension() == ".md") continue;
     const std::string bytes = read_bytes(entry.path());
     const std::string extension = entry.path().extension().string();
@@ -631,7 +632,7 @@ TEST_F(FormatFiles, MutatedSamplesNeverCrash) {
 // Channels, invalid points, levelling.
 
 TEST(FormatChannels, UnknownOrNonHeightChannelIsAnErrorListingTheChannels) {
-  const fs::path file = samples / "di-1.di";
+  const fs::path file = kFormatSamples / "di-1.di";
   expect_refused(
       file,
       "unknown channel 'Topography'; the file's channels: 0 'Height', 1 'Height', 2 'Phase' (not a "
@@ -639,11 +640,11 @@ TEST(FormatChannels, UnknownOrNonHeightChannelIsAnErrorListingTheChannels) {
       with_channel("Topography"));
   expect_refused(file, "unknown channel '7'", with_channel("7"));
   expect_refused(file, "channel 'Phase' does not hold heights", with_channel("Phase"));
-  expect_refused(samples / "sdf-1.sdf", "unknown channel 'Height'", with_channel("Height"));
+  expect_refused(kFormatSamples / "sdf-1.sdf", "unknown channel 'Height'", with_channel("Height"));
 }
 
 TEST(FormatInvalidPoints, HarmonicFillHasNoNaNAndObeysTheMaximumPrinciple) {
-  const fs::path file = samples / "opd-1.opd";
+  const fs::path file = kFormatSamples / "opd-1.opd";
   const formats::Channel raw = read_topography_channels(file).channels.at(0);
   double low = std::numeric_limits<double>::infinity();
   double high = -low;
@@ -689,11 +690,11 @@ TEST(FormatInvalidPoints, HarmonicFillOfALinearFieldIsExact) {
 }
 
 TEST(FormatLevelling, PlaneRemovesATiltAndMeanRemovesTheMean) {
-  const Surface sdf = read_topography(samples / "sdf-1.sdf");
-  const TopographyReading none = read_topography_reading(samples / "sdf-1.sdf");
+  const Surface sdf = read_topography(kFormatSamples / "sdf-1.sdf");
+  const TopographyReading none = read_topography_reading(kFormatSamples / "sdf-1.sdf");
   EXPECT_EQ(none.level, Levelling::none);
   EXPECT_EQ(bits_of(none.surface.heights()), bits_of(sdf.heights()));
-  const Surface mean = read_topography(samples / "sdf-1.sdf", with_level(Levelling::mean));
+  const Surface mean = read_topography(kFormatSamples / "sdf-1.sdf", with_level(Levelling::mean));
   EXPECT_NEAR(mean.mean_height(), 0, 1e-21);  // round-off of the mean of 28 values of 1e-6
   // A tilted plane plus a bump: plane levelling removes the plane exactly and leaves the bump's own plane
   // component, which is zero for a bump symmetric about the centre.

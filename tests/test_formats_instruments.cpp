@@ -10,13 +10,14 @@
 
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/topography_io.hpp"
+#include "test_constants.hpp"
 
 namespace contactbench {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path samples{CB_DATA_DIR "/formats"};
+using testing::kFormatSamples;
 
 void expect_relative(double value, double reference, double tolerance, const std::string& what) {
   EXPECT_NEAR(value, reference, tolerance * std::abs(reference)) << what;
@@ -41,7 +42,7 @@ double profile_rms(const HeightMap& h, bool along_x) {
 }
 
 TEST(InstrumentSamples, AliconaAl3d) {
-  const TopographyReading r = read_topography_reading(samples / "al3d-1.al3d");
+  const TopographyReading r = read_topography_reading(kFormatSamples / "al3d-1.al3d");
   EXPECT_EQ(r.format, TopographyFormat::alicona);
   EXPECT_EQ(r.channels, (std::vector<std::string>{"depth"}));
   EXPECT_EQ(r.invalid_points, 0);
@@ -61,7 +62,7 @@ TEST(InstrumentSamples, AliconaAl3d) {
 }
 
 TEST(InstrumentSamples, NanosurfNidEveryDataSet) {
-  const fs::path file = samples / "nid-1.nid";
+  const fs::path file = kFormatSamples / "nid-1.nid";
   const TopographyReading first = read_topography_reading(file);
   EXPECT_EQ(first.format, TopographyFormat::nanosurf);
   EXPECT_EQ(first.channels,
@@ -85,7 +86,7 @@ TEST(InstrumentSamples, NanosurfNidEveryDataSet) {
 }
 
 TEST(InstrumentSamples, AgilentMiBuffersScaleAndLineOrder) {
-  const fs::path file = samples / "mi-1.mi";
+  const fs::path file = kFormatSamples / "mi-1.mi";
   const TopographyReading r = read_topography_reading(file);
   EXPECT_EQ(r.format, TopographyFormat::agilent_mi);
   EXPECT_EQ(r.channels,

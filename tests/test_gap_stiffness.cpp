@@ -11,12 +11,10 @@
 #include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/contact_stiffness.hpp"
 #include "contactbench/core/generation.hpp"
+#include "test_constants.hpp"
 
 namespace contactbench {
 namespace {
-
-constexpr Real pi = std::numbers::pi;
-constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* [Pa]
 
 // The stiffness of a flat-ended punch is that of its face held in contact: a pressure field positive on a
 // pixelated disc of `radius` pixels (its values do not matter, only the set). Returns K A0 / (2 E* a), a the
@@ -31,9 +29,9 @@ Real punch_stiffness_ratio(Index radius) {
       if (std::pow(ix - n / 2, 2) + std::pow(iy - n / 2, 2) <= std::pow(static_cast<Real>(radius), 2))
         pressure(iy, ix) = 1;
   const Real a = std::sqrt((pressure > 0).count() * dx * dx / pi);
-  const ContactStiffness k = contact_stiffness(grid, kModulus, pressure);
+  const ContactStiffness k = contact_stiffness(grid, testing::kPaperModulus, pressure);
   EXPECT_TRUE(k.converged);
-  return k.stiffness * grid.nominal_area() / (2 * kModulus * a);
+  return k.stiffness * grid.nominal_area() / (2 * testing::kPaperModulus * a);
 }
 
 TEST(ContactStiffness, FlatPunchIsSneddonsTwoEstarA) {
@@ -54,14 +52,14 @@ TEST(ContactStiffness, HertzIsTwoEstarA) {
   const Index n = 128;
   const Real dx = 1e-6, radius = 1e-3;
   const Real a = 15 * dx;
-  const Real load = 4 * kModulus * a * a * a / (3 * radius);
+  const Real load = 4 * testing::kPaperModulus * a * a * a / (3 * radius);
   const Surface sphere = sphere_cap(n, n, dx, radius);
-  BemSolver solver(sphere, kModulus, {.tolerance = 1e-10});
+  BemSolver solver(sphere, testing::kPaperModulus, {.tolerance = 1e-10});
   const ContactSolution& s = solver.solve(load / sphere.grid().nominal_area());
   ASSERT_TRUE(s.converged);
-  const ContactStiffness k = contact_stiffness(sphere.grid(), kModulus, s.pressure);
+  const ContactStiffness k = contact_stiffness(sphere.grid(), testing::kPaperModulus, s.pressure);
   ASSERT_TRUE(k.converged);
-  const Real ratio = k.stiffness * sphere.grid().nominal_area() / (2 * kModulus * a);
+  const Real ratio = k.stiffness * sphere.grid().nominal_area() / (2 * testing::kPaperModulus * a);
   RecordProperty("ratio", std::to_string(ratio));
   EXPECT_NEAR(ratio, 1, 0.01) << "K A0/(2 E* a) = " << ratio;
 }
@@ -74,14 +72,14 @@ TEST(ContactStiffness, LinearisedResponseMatchesFiniteDifferencesAlongTheLoadPat
   // 2 % bounds both with room.
   const Grid grid{.nx = 128, .ny = 128, .lx = 100e-6, .ly = 100e-6, .periodic = true};
   const Surface surface = generate_surface(grid, paper::surface_a(), 7);
-  BemSolver solver(surface, kModulus, {.tolerance = 1e-12});
-  const Real p1 = 0.01 * kModulus, p2 = 1.01 * p1;
+  BemSolver solver(surface, testing::kPaperModulus, {.tolerance = 1e-12});
+  const Real p1 = 0.01 * testing::kPaperModulus, p2 = 1.01 * p1;
   const ContactSolution first = solver.solve(p1);
   const ContactSolution second = solver.solve(p2);
   ASSERT_TRUE(first.converged && second.converged);
   const Real secant = (p2 - p1) / (first.separation - second.separation);
-  const Real k1 = contact_stiffness(grid, kModulus, first.pressure).stiffness;
-  const Real k2 = contact_stiffness(grid, kModulus, second.pressure).stiffness;
+  const Real k1 = contact_stiffness(grid, testing::kPaperModulus, first.pressure).stiffness;
+  const Real k2 = contact_stiffness(grid, testing::kPaperModulus, second.pressure).stiffness;
   RecordProperty("secant_over_tangents", std::to_string(secant / (0.5 * (k1 + k2))));
   EXPECT_NEAR(secant / (0.5 * (k1 + k2)), 1, 0.02)
       << "secant " << secant << ", tangents " << k1 << ", " << k2;
@@ -91,8 +89,9 @@ TEST(ContactStiffness, LinearisedResponseMatchesFiniteDifferencesAlongTheLoadPat
 
 TEST(ContactStiffness, NoContactIsZeroAndFullPeriodicContactUnbounded) {
   const Grid grid{.nx = 8, .ny = 8, .lx = 8e-6, .ly = 8e-6, .periodic = true};
-  EXPECT_EQ(contact_stiffness(grid, kModulus, HeightMap::Zero(8, 8)).stiffness, 0);
-  EXPECT_TRUE(std::isinf(contact_stiffness(grid, kModulus, HeightMap::Constant(8, 8, 1.0)).stiffness));
+  EXPECT_EQ(contact_stiffness(grid, testing::kPaperModulus, HeightMap::Zero(8, 8)).stiffness, 0);
+  EXPECT_TRUE(
+      std::isinf(contact_stiffness(grid, testing::kPaperModulus, HeightMap::Constant(8, 8, 1.0)).stiffness));
 }
 
 }  // namespace

@@ -11,20 +11,19 @@
 #include "contactbench/bem/bem_solver.hpp"
 #include "contactbench/bem/contact_stiffness.hpp"
 #include "contactbench/core/generation.hpp"
+#include "test_constants.hpp"
 
 namespace contactbench {
 namespace {
-
-constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* [Pa]
 
 // The converged pressures of surface A's spectrum (seed `seed`, 128^2) at six loads P/(E* A0) = 1e-3 ...
 // 2e-2.
 std::vector<HeightMap> load_path(const Grid& grid, unsigned seed) {
   const Surface surface = generate_surface(grid, paper::surface_a(), seed);
-  BemSolver solver(surface, kModulus, {.tolerance = 1e-10});
+  BemSolver solver(surface, testing::kPaperModulus, {.tolerance = 1e-10});
   std::vector<HeightMap> pressures;
   for (int k = 0; k < 6; ++k) {
-    const ContactSolution& s = solver.solve(1e-3 * std::pow(20.0, k / 5.0) * kModulus);
+    const ContactSolution& s = solver.solve(1e-3 * std::pow(20.0, k / 5.0) * testing::kPaperModulus);
     EXPECT_TRUE(s.converged);
     pressures.push_back(s.pressure);
   }
@@ -38,9 +37,10 @@ TEST_P(StageStiffness, GivesTheStiffnessOfTheTightOneStateSolve) {
   const Grid grid{.nx = 128, .ny = 128, .lx = 100e-6, .ly = 100e-6, .periodic = periodic};
   for (const unsigned seed : {7u, 8u}) {
     const std::vector<HeightMap> pressures = load_path(grid, seed);
-    ContactStiffnessSolver stage(grid, kModulus, std::nullopt, 1, {.tolerance = kStageStiffnessTolerance});
+    ContactStiffnessSolver stage(grid, testing::kPaperModulus, std::nullopt, 1,
+                                 {.tolerance = kStageStiffnessTolerance});
     for (std::size_t k = 0; k < pressures.size(); ++k) {
-      const ContactStiffness tight = contact_stiffness(grid, kModulus, pressures[k]);
+      const ContactStiffness tight = contact_stiffness(grid, testing::kPaperModulus, pressures[k]);
       const ContactStiffness fast = stage.solve(pressures[k]);
       ASSERT_TRUE(tight.converged && fast.converged);
       EXPECT_LT(fast.iterations, tight.iterations);

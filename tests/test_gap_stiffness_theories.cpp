@@ -25,8 +25,6 @@
 namespace contactbench {
 namespace {
 
-constexpr Real pi = std::numbers::pi;
-
 Surface surface_a(Index n) {
   const Grid grid{.nx = n, .ny = n, .lx = 100e-6, .ly = 100e-6, .periodic = true};
   return generate_surface(grid, paper::surface_a(), 7);

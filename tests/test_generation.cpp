@@ -9,6 +9,7 @@
 #include "contactbench/core/fft.hpp"
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
+#include "test_constants.hpp"
 #include "tolerances.hpp"
 
 namespace contactbench {
@@ -18,7 +19,7 @@ namespace {
 struct Table2Row {
   Real m0, m2, m4;
 };
-constexpr Real um = 1e-6;
+using testing::um;
 
 // Half a unit in the third significant digit of x: how far a value may lie from what it rounds to.
 Real half_unit_of_third_digit(Real x) {

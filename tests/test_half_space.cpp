@@ -11,12 +11,10 @@
 #include "contactbench/bem/half_space.hpp"
 #include "contactbench/bem/love_kernel.hpp"
 #include "contactbench/core/error.hpp"
+#include "test_constants.hpp"
 
 namespace contactbench {
 namespace {
-
-constexpr Real pi = std::numbers::pi;
-constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* of the paper's material [Pa]
 
 HeightMap random_pressure(Index nx, Index ny, unsigned seed) {
   std::mt19937_64 random(seed);
@@ -73,7 +71,7 @@ TEST(NonPeriodicHalfSpace, EqualsTheDirectSumOfLoveKernels) {
   const Grid grid{.nx = 12, .ny = 9, .lx = 12e-6, .ly = 13.5e-6, .periodic = false};
   const HeightMap p = random_pressure(grid.nx, grid.ny, 1);
   HeightMap u;
-  make_nonperiodic_half_space(grid, kModulus)->apply(p, u);
+  make_nonperiodic_half_space(grid, testing::kPaperModulus)->apply(p, u);
   const Real dx = grid.dx(), dy = grid.dy();
   Real worst = 0, scale = 0;
   for (Index iy = 0; iy < grid.ny; ++iy)
@@ -81,7 +79,8 @@ TEST(NonPeriodicHalfSpace, EqualsTheDirectSumOfLoveKernels) {
       Real direct = 0;
       for (Index jy = 0; jy < grid.ny; ++jy)
         for (Index jx = 0; jx < grid.nx; ++jx)
-          direct += p(jy, jx) * love_displacement((ix - jx) * dx, (iy - jy) * dy, dx / 2, dy / 2) / kModulus;
+          direct += p(jy, jx) * love_displacement((ix - jx) * dx, (iy - jy) * dy, dx / 2, dy / 2) /
+                    testing::kPaperModulus;
       worst = std::max(worst, std::abs(u(iy, ix) - direct));
       scale = std::max(scale, std::abs(direct));
     }
@@ -97,11 +96,11 @@ TEST(NonPeriodicHalfSpace, AUniformPatchIsLovesRectangle) {
   const Real pressure = 3e8;
   p.block(4, 6, 3, 5).setConstant(pressure);  // rows 4..6, columns 6..10
   HeightMap u;
-  make_nonperiodic_half_space(grid, kModulus)->apply(p, u);
+  make_nonperiodic_half_space(grid, testing::kPaperModulus)->apply(p, u);
   const Real centre_x = 8 * grid.dx(), centre_y = 5 * grid.dy();  // middle of the block's pixel centres
   for (Index iy = 0; iy < grid.ny; ++iy)
     for (Index ix = 0; ix < grid.nx; ++ix) {
-      const Real expected = pressure / kModulus *
+      const Real expected = pressure / testing::kPaperModulus *
                             love_displacement(ix * grid.dx() - centre_x, iy * grid.dy() - centre_y,
                                               2.5 * grid.dx(), 1.5 * grid.dy());
       EXPECT_NEAR(u(iy, ix), expected, 1e-12 * expected) << ix << ", " << iy;  // round-off only
@@ -111,7 +110,7 @@ TEST(NonPeriodicHalfSpace, AUniformPatchIsLovesRectangle) {
 TEST(PeriodicHalfSpace, SingleFourierModesAreScaledBy2OverEStarQ) {
   // Westergaard: p = p0 cos(q.x) gives u = 2 p0 cos(q.x)/(E* |q|) exactly on the lattice.
   const Grid grid{.nx = 32, .ny = 24, .lx = 32e-6, .ly = 30e-6, .periodic = true};
-  const auto half_space = make_periodic_half_space(grid, kModulus);
+  const auto half_space = make_periodic_half_space(grid, testing::kPaperModulus);
   for (const auto& [kx, ky] : {std::pair<int, int>{3, 2}, {0, 5}, {16, 0}, {-4, 7}}) {
     const Real qx = 2 * pi * kx / grid.lx, qy = 2 * pi * ky / grid.ly, p0 = 1e8;
     HeightMap p(grid.ny, grid.nx);
@@ -120,7 +119,7 @@ TEST(PeriodicHalfSpace, SingleFourierModesAreScaledBy2OverEStarQ) {
         p(iy, ix) = p0 * std::cos(qx * ix * grid.dx() + qy * iy * grid.dy());
     HeightMap u;
     half_space->apply(p, u);
-    const HeightMap expected = p * (2 / (kModulus * std::hypot(qx, qy)));
+    const HeightMap expected = p * (2 / (testing::kPaperModulus * std::hypot(qx, qy)));
     // One FFT pair: round-off relative to the amplitude.
     EXPECT_LT((u - expected).abs().maxCoeff(), 1e-12 * expected.abs().maxCoeff()) << kx << ", " << ky;
   }
@@ -131,7 +130,7 @@ TEST(PeriodicHalfSpace, MeanPressureMovesNothing) {
   // no displacement here.
   const Grid grid{.nx = 8, .ny = 8, .lx = 8e-6, .ly = 8e-6, .periodic = true};
   HeightMap u;
-  make_periodic_half_space(grid, kModulus)->apply(HeightMap::Constant(8, 8, 1e8), u);
+  make_periodic_half_space(grid, testing::kPaperModulus)->apply(HeightMap::Constant(8, 8, 1e8), u);
   EXPECT_LT(u.abs().maxCoeff(), 1e-25);
 }
 
@@ -140,7 +139,7 @@ TEST(HalfSpace, IsSymmetricAndPositive) {
   // p with a non-zero fluctuating part). Consistency of one operator: 1e-12 relative.
   for (const bool periodic : {false, true}) {
     const Grid grid{.nx = 20, .ny = 14, .lx = 20e-6, .ly = 21e-6, .periodic = periodic};
-    const auto half_space = make_half_space(grid, kModulus, 2);
+    const auto half_space = make_half_space(grid, testing::kPaperModulus, 2);
     const HeightMap p1 = random_pressure(grid.nx, grid.ny, 2), p2 = random_pressure(grid.nx, grid.ny, 3);
     HeightMap u1, u2;
     half_space->apply(p1, u1);
@@ -173,7 +172,8 @@ TEST(HalfSpace, IsSymmetricAndPositive) {
           const Real sx = static_cast<Real>(kx <= grid.nx / 2 ? kx : kx - grid.nx);
           const Real sy = static_cast<Real>(ky <= grid.ny / 2 ? ky : ky - grid.ny);
           const Real wavenumber = 2 * pi * std::hypot(sx / grid.lx, sy / grid.ly);
-          expected += 2 / (kModulus * wavenumber) * std::norm(mode) / static_cast<Real>(q.size());
+          expected +=
+              2 / (testing::kPaperModulus * wavenumber) * std::norm(mode) / static_cast<Real>(q.size());
         }
     } else {
       for (Index iy = 0; iy < grid.ny; ++iy)
@@ -181,7 +181,8 @@ TEST(HalfSpace, IsSymmetricAndPositive) {
           for (Index jy = 0; jy < grid.ny; ++jy)
             for (Index jx = 0; jx < grid.nx; ++jx)
               expected += q(iy, ix) * q(jy, jx) *
-                          love_displacement((ix - jx) * dx, (iy - jy) * dy, dx / 2, dy / 2) / kModulus;
+                          love_displacement((ix - jx) * dx, (iy - jy) * dy, dx / 2, dy / 2) /
+                          testing::kPaperModulus;
     }
     EXPECT_GT(energy, 0) << (periodic ? "periodic" : "non-periodic");
     EXPECT_NEAR(energy, expected, 1e-10 * expected) << (periodic ? "periodic" : "non-periodic");
@@ -193,7 +194,7 @@ TEST(HalfSpace, RefusesABadModulusAndAWrongShape) {
   EXPECT_THROW(make_half_space(grid, -1), Error);
   EXPECT_THROW(make_half_space(grid, std::nan("")), Error);
   HeightMap u;
-  EXPECT_THROW(make_half_space(grid, kModulus)->apply(HeightMap::Zero(3, 4), u), Error);
+  EXPECT_THROW(make_half_space(grid, testing::kPaperModulus)->apply(HeightMap::Zero(3, 4), u), Error);
 }
 
 }  // namespace

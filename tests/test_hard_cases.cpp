@@ -15,15 +15,13 @@
 #include "contactbench/bem/love_kernel.hpp"
 #include "contactbench/core/generation.hpp"
 #include "each_solver.hpp"
+#include "test_constants.hpp"
 #include "tolerances.hpp"
 
 namespace contactbench {
 namespace {
 
 class BemHardCases : public EachSolver {};
-
-constexpr Real pi = std::numbers::pi;
-constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* [Pa]
 
 Surface flat(Index nx, Index ny, Real dx, bool periodic) {
   const Grid grid{.nx = nx, .ny = ny, .lx = nx * dx, .ly = ny * dx, .periodic = periodic};
@@ -37,7 +35,7 @@ Real love_sum(const HeightMap& p, Index ix, Index iy, Real dx, Real dy) {
   for (Index jy = 0; jy < p.rows(); ++jy)
     for (Index jx = 0; jx < p.cols(); ++jx)
       u += p(jy, jx) * love_displacement((ix - jx) * dx, (iy - jy) * dy, dx / 2, dy / 2);
-  return u / kModulus;
+  return u / testing::kPaperModulus;
 }
 
 TEST_P(BemHardCases, OnePixelIsLovesUniformlyLoadedRectangle) {
@@ -49,7 +47,8 @@ TEST_P(BemHardCases, OnePixelIsLovesUniformlyLoadedRectangle) {
   const Real pbar = 1e7;
   for (const Real aspect : {1.0, 2.0}) {
     const Grid grid{.nx = 1, .ny = 1, .lx = 1e-6 * aspect, .ly = 1e-6, .periodic = false};
-    BemSolver solver(Surface(grid, HeightMap::Constant(1, 1, 3e-7)), kModulus, {.solver = GetParam()});
+    BemSolver solver(Surface(grid, HeightMap::Constant(1, 1, 3e-7)), testing::kPaperModulus,
+                     {.solver = GetParam()});
     const ContactSolution& s = solver.solve(pbar);
     const std::string what = "aspect " + std::to_string(aspect);
     ASSERT_TRUE(s.converged) << what;
@@ -57,17 +56,20 @@ TEST_P(BemHardCases, OnePixelIsLovesUniformlyLoadedRectangle) {
     EXPECT_NEAR(s.pressure(0, 0), pbar, 1e-12 * pbar) << what;
     EXPECT_EQ(s.gap(0, 0), 0) << what;
     const Real approach = solver.surface().heights()(0, 0) - s.separation;
-    const Real love = love_displacement(0, 0, grid.lx / 2, grid.ly / 2) * pbar / kModulus;
+    const Real love = love_displacement(0, 0, grid.lx / 2, grid.ly / 2) * pbar / testing::kPaperModulus;
     EXPECT_NEAR(approach, love, 1e-12 * love) << what;
     if (aspect == 1.0) {
-      EXPECT_NEAR(approach / (pbar * grid.lx / kModulus), 4 * std::log(1 + std::sqrt(2.0)) / pi, 1e-12);
-      EXPECT_NEAR(approach / (pbar * grid.lx / kModulus), 1.122200, 5e-7);  // Love's printed value
+      EXPECT_NEAR(approach / (pbar * grid.lx / testing::kPaperModulus), 4 * std::log(1 + std::sqrt(2.0)) / pi,
+                  1e-12);
+      EXPECT_NEAR(approach / (pbar * grid.lx / testing::kPaperModulus), 1.122200,
+                  5e-7);  // Love's printed value
     }
   }
   // Periodic, one node is a flat surface: full contact, the pressure the load, the periodic operator's mean
   // displacement zero, so the flat sits at the (centred) height, 0.
   const Grid grid{.nx = 1, .ny = 1, .lx = 1e-6, .ly = 1e-6, .periodic = true};
-  BemSolver solver(Surface(grid, HeightMap::Constant(1, 1, 3e-7)), kModulus, {.solver = GetParam()});
+  BemSolver solver(Surface(grid, HeightMap::Constant(1, 1, 3e-7)), testing::kPaperModulus,
+                   {.solver = GetParam()});
   const ContactSolution& s = solver.solve(pbar);
   ASSERT_TRUE(s.converged);
   EXPECT_EQ(s.contact_points, 1);
@@ -88,7 +90,8 @@ TEST_P(BemHardCases, TwoByTwoAndOneByNAnswerWhatLovesSumSays) {
   };
   for (const Case c : {Case{2, 2}, Case{1, 16}, Case{16, 1}, Case{1, 2}}) {
     const std::string what = std::to_string(c.nx) + " x " + std::to_string(c.ny);
-    BemSolver solver(flat(c.nx, c.ny, dx, false), kModulus, {.tolerance = 1e-12, .solver = GetParam()});
+    BemSolver solver(flat(c.nx, c.ny, dx, false), testing::kPaperModulus,
+                     {.tolerance = 1e-12, .solver = GetParam()});
     const ContactSolution& s = solver.solve(pbar);
     ASSERT_TRUE(s.converged) << what;
     ASSERT_TRUE(s.pressure.allFinite() && std::isfinite(s.separation)) << what;
@@ -102,7 +105,8 @@ TEST_P(BemHardCases, TwoByTwoAndOneByNAnswerWhatLovesSumSays) {
     if (c.nx == 2 && c.ny == 2) {
       EXPECT_LT((s.pressure - pbar).abs().maxCoeff(), 1e-9 * pbar);
       const auto love = [&](Real x, Real y) { return love_displacement(x, y, dx / 2, dx / 2); };
-      EXPECT_NEAR(approach, pbar / kModulus * (love(0, 0) + 2 * love(dx, 0) + love(dx, dx)), 1e-9 * approach);
+      EXPECT_NEAR(approach, pbar / testing::kPaperModulus * (love(0, 0) + 2 * love(dx, 0) + love(dx, dx)),
+                  1e-9 * approach);
     } else {
       // Symmetric about the middle, and the ends carry more than the middle (a rigid punch's edges).
       const HeightMap line = c.ny == 1 ? HeightMap(s.pressure) : HeightMap(s.pressure.transpose());
@@ -116,7 +120,7 @@ TEST_P(BemHardCases, TwoByTwoAndOneByNAnswerWhatLovesSumSays) {
   const Grid grid{.nx = 2, .ny = 2, .lx = 2 * dx, .ly = 2 * dx, .periodic = true};
   HeightMap h = HeightMap::Zero(2, 2);
   h(1, 0) = 1e-8;
-  BemSolver solver(Surface(grid, h), kModulus, {.tolerance = 1e-12, .solver = GetParam()});
+  BemSolver solver(Surface(grid, h), testing::kPaperModulus, {.tolerance = 1e-12, .solver = GetParam()});
   const ContactSolution& s = solver.solve(1e3);
   ASSERT_TRUE(s.converged);
   EXPECT_EQ(s.contact_points, 1);
@@ -128,12 +132,12 @@ TEST_P(BemHardCases, OneRowIsWestergaardsPlaneProblem) {
   // must give the answer of 4 x 256 (rows identical) to solver consistency, and the peak of Westergaard's
   // pressure 2 sqrt(pbar p*), p* = pi E* D/lambda, to 1e-3 (measured below 1e-4 on 256 points).
   const Index n = 256;
-  const Real lambda = 100e-6, amplitude = 1e-6, p_star = pi * kModulus * amplitude / lambda;
+  const Real lambda = 100e-6, amplitude = 1e-6, p_star = pi * testing::kPaperModulus * amplitude / lambda;
   const auto strip = [&](Index rows, bool along_y) { return wavy(n, rows, along_y, lambda, amplitude); };
   const Real pbar = 0.3 * p_star;
-  BemSolver wide(strip(4, false), kModulus, {.tolerance = 1e-12, .solver = GetParam()});
-  BemSolver row(strip(1, false), kModulus, {.tolerance = 1e-12, .solver = GetParam()});
-  BemSolver column(strip(1, true), kModulus, {.tolerance = 1e-12, .solver = GetParam()});
+  BemSolver wide(strip(4, false), testing::kPaperModulus, {.tolerance = 1e-12, .solver = GetParam()});
+  BemSolver row(strip(1, false), testing::kPaperModulus, {.tolerance = 1e-12, .solver = GetParam()});
+  BemSolver column(strip(1, true), testing::kPaperModulus, {.tolerance = 1e-12, .solver = GetParam()});
   const ContactSolution& w = wide.solve(pbar);
   const ContactSolution& r = row.solve(pbar);
   const ContactSolution& c = column.solve(pbar);
@@ -177,14 +181,14 @@ std::string scaled_answer_problems(SolverKind kind, bool periodic, bool single, 
                                  .max_iterations = 20000,
                                  .single_precision = single,
                                  .solver = kind};
-  BemSolver unit_solver(unit_problem(periodic, 1, 1), kModulus, options);
-  const Real load = 0.01 * kModulus * 32;
+  BemSolver unit_solver(unit_problem(periodic, 1, 1), testing::kPaperModulus, options);
+  const Real load = 0.01 * testing::kPaperModulus * 32;
   const ContactSolution reference = unit_solver.solve(load);
   const Real pressure_scale = scale.height / scale.lateral;
   std::ostringstream out;
   ContactSolution s;
   try {
-    BemSolver solver(unit_problem(periodic, scale.height, scale.lateral), kModulus, options);
+    BemSolver solver(unit_problem(periodic, scale.height, scale.lateral), testing::kPaperModulus, options);
     s = solver.solve(load * pressure_scale * load_error);
   } catch (const std::exception& e) {
     return std::string("threw: ") + e.what();

@@ -11,11 +11,12 @@
 #include <vector>
 
 #include "contactbench/core/formats/harmonic_fill.hpp"
+#include "test_constants.hpp"
 
 namespace contactbench {
 namespace {
 
-const double nan = std::numeric_limits<double>::quiet_NaN();
+using testing::nan;
 
 // The reference: the same equations (each invalid point the mean of its in-grid neighbours) assembled and
 // solved directly, as the fill did before it had a multigrid.

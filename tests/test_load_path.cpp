@@ -14,12 +14,11 @@
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/spectrum.hpp"
 #include "each_solver.hpp"
+#include "test_constants.hpp"
 #include "tolerances.hpp"
 
 namespace contactbench {
 namespace {
-
-constexpr Real kModulus = 100e9 / (1 - 0.3 * 0.3);
 
 // Surface A of the paper (docs/theory.md section 2) on n x n points over 200 um, seeded.
 Surface surface_a(Index n, std::uint64_t seed) {
@@ -30,7 +29,7 @@ Surface surface_a(Index n, std::uint64_t seed) {
 // The loads of a curve: contact about `low` % to `high` % (P/(E* A0) = pct/100 gbar/2, Persson's
 // small-contact law), `count` log-spaced, increasing.
 std::vector<Real> curve_loads(const Surface& surface, double low, double high, int count) {
-  const Real unit = kModulus * spectral_moments(surface).rms_gradient() / 2;
+  const Real unit = testing::kPaperModulus * spectral_moments(surface).rms_gradient() / 2;
   std::vector<Real> loads;
   for (int k = 0; k < count; ++k)
     loads.push_back(low * std::pow(high / low, k / double(count - 1)) / 100 * unit);
@@ -50,12 +49,13 @@ TEST_P(LoadPath, EveryStartGivesTheColdAnswers) {
     const std::vector<Real> loads = curve_loads(surface, 1, 30, 4);
     std::vector<ContactSolution> cold;
     for (const Real load : loads) {
-      BemSolver alone(surface, kModulus, {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
+      BemSolver alone(surface, testing::kPaperModulus,
+                      {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam()});
       cold.push_back(alone.solve(load));
     }
     for (const LoadPathStart start :
          {LoadPathStart::scaled, LoadPathStart::extrapolated, LoadPathStart::cold, LoadPathStart::solver}) {
-      BemSolver path(surface, kModulus,
+      BemSolver path(surface, testing::kPaperModulus,
                      {.tolerance = 1e-12, .max_iterations = 20000, .solver = GetParam(), .load_path = start});
       for (std::size_t k = 0; k < loads.size(); ++k) {
         const ContactSolution& s = path.solve(loads[k]);
@@ -78,7 +78,7 @@ CB_FOR_EACH_SOLVER(LoadPath);
 Index curve_iterations(const Surface& surface, const std::vector<Real>& loads, SolverKind solver,
                        LoadPathStart start, std::optional<Real> hardness = std::nullopt) {
   constexpr int kThreads = 2;  // as the benchmark (bench/bench_load_path.cpp)
-  BemSolver along(surface, kModulus,
+  BemSolver along(surface, testing::kPaperModulus,
                   {.tolerance = 1e-8,
                    .max_iterations = 20000,
                    .hardness = hardness,
@@ -122,13 +122,13 @@ TEST(LoadPathDeclared, TheDefaultSolverStartsACappedCurveWarmOnEveryGrid) {
   const Grid large{.nx = 512, .ny = 512, .lx = 200e-6, .ly = 200e-6, .periodic = true};
   BemSolverOptions options{.solver = kDefaultSolver};
   EXPECT_EQ(load_path_start(options, large), LoadPathStart::cold);
-  options.hardness = 0.1 * kModulus;
+  options.hardness = 0.1 * testing::kPaperModulus;
   EXPECT_EQ(load_path_start(options, large), LoadPathStart::scaled);
 
   const Surface surface = surface_a(256, 1);
   std::vector<Real> loads;
   for (int k = 1; k <= 10; ++k)
-    loads.push_back(0.001 * k * kModulus);
+    loads.push_back(0.001 * k * testing::kPaperModulus);
   const Index cold = curve_iterations(surface, loads, kDefaultSolver, LoadPathStart::cold, options.hardness);
   const Index declared =
       curve_iterations(surface, loads, kDefaultSolver, LoadPathStart::solver, options.hardness);

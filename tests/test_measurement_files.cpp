@@ -13,13 +13,14 @@
 
 #include "cli_runner.hpp"
 #include "contactbench/core/formats/md5.hpp"
+#include "test_constants.hpp"
 
 namespace contactbench {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path samples{CB_DATA_DIR "/formats"};
+using testing::kFormatSamples;
 
 using testing::CommandResult;
 using testing::slurp;
@@ -31,7 +32,7 @@ class MeasurementFiles : public testing::CliTest {
   // A copy of a sample in the test's folder, for the commands to (try to) damage.
   fs::path copy_sample(const std::string& name, const std::string& as) const {
     const fs::path copy = folder_ / as;
-    fs::copy_file(samples / name, copy);
+    fs::copy_file(kFormatSamples / name, copy);
     return copy;
   }
 };
@@ -80,7 +81,7 @@ TEST_F(MeasurementFiles, ConvertRefusesAnExtensionItCannotWriteBeforeReading) {
 }
 
 TEST_F(MeasurementFiles, ConvertWritesGwyddionThatReadsBackTheSameHeights) {
-  const fs::path input = samples / "metropro-1.dat";
+  const fs::path input = kFormatSamples / "metropro-1.dat";
   const fs::path output = folder_ / "m.gwy";
   ASSERT_EQ(run("convert " + input.string() + " " + output.string()).status, 0);
   const CommandResult original = run("stats " + input.string());
@@ -93,7 +94,7 @@ TEST_F(MeasurementFiles, ConvertWritesGwyddionThatReadsBackTheSameHeights) {
 
 TEST_F(MeasurementFiles, PointListIsReadOnItsGrid) {
   // xyz-1.txt (data/formats/README.md): x slow, y fast, 4 x 4 points at step 1; h = 2 at (1, 1) and (1, 2).
-  const fs::path input = samples / "xyz-1.txt";
+  const fs::path input = kFormatSamples / "xyz-1.txt";
   const std::string before = md5_of(input);
   const CommandResult result = run("stats " + input.string() + " --unit um");
   ASSERT_EQ(result.status, 0) << result.err;
@@ -158,7 +159,7 @@ TEST_F(MeasurementFiles, ImplausibleMetresNeedAUnitAndTheMessageSuggestsIt) {
   const fs::path tiny = write("tiny.txt", "0 1e-14\n2e-14 0\n");
   expect_refusal(run("stats " + tiny.string() + " --size 1e-5"), tiny, "if they really are metres");
   // A file that states its unit does not take another.
-  const fs::path x3p = samples / "x3p-2.x3p";
+  const fs::path x3p = kFormatSamples / "x3p-2.x3p";
   expect_refusal(run("stats " + x3p.string() + " --unit nm"), x3p, "states its own unit");
   EXPECT_EQ(md5_of(input), before);
 }
@@ -224,7 +225,7 @@ TEST_F(MeasurementFiles, LineScansGiveProfileStatisticsToTheirReferenceValues) {
         Case{"xy-1.txt", " --unit um", "x h text", 132, 187.190431e-6, 3.0585577e-6, 3.1268354e-6, 0.43824152,
              1.7e-8, 1.2e-8},
         Case{"dektak-1.csv", "", "dektak", 9600, 1.4998e-3, 4.763596e-6, 0, 0.015448, 1.1e-7, 3.3e-5}}) {
-    const fs::path input = samples / c.file;
+    const fs::path input = kFormatSamples / c.file;
     const std::string before = md5_of(input);
     const CommandResult result = run("stats " + input.string() + c.unit);
     ASSERT_EQ(result.status, 0) << c.file << result.err;
@@ -243,12 +244,12 @@ TEST_F(MeasurementFiles, LineScansGiveProfileStatisticsToTheirReferenceValues) {
     EXPECT_EQ(md5_of(input), before) << c.file;
   }
   // Dektak names its units (um) in the column header: another unit is refused.
-  const fs::path dektak = samples / "dektak-1.csv";
+  const fs::path dektak = kFormatSamples / "dektak-1.csv";
   expect_refusal(run("stats " + dektak.string() + " --unit nm"), dektak, "states the heights' unit ('um')");
 }
 
 TEST_F(MeasurementFiles, StatsOfALineScanLevelsItAndRefusesTheOptionsOfA2DFile) {
-  const fs::path input = samples / "xy-1.txt";
+  const fs::path input = kFormatSamples / "xy-1.txt";
   const CommandResult raw = run("stats " + input.string() + " --unit um");
   const CommandResult levelled = run("stats " + input.string() + " --unit um --level plane");
   ASSERT_EQ(levelled.status, 0) << levelled.err;
@@ -323,7 +324,7 @@ TEST_F(MeasurementFiles, StatsWritesTheProfilePsdOfAUniformScan) {
   const double rq = json_number(result.out, "rq");
   EXPECT_NEAR(total / (rq * rq), 1, 0.02);
   // Uneven sampling has no periodogram; the input is never the output.
-  const fs::path uneven = samples / "xy-1.txt";
+  const fs::path uneven = kFormatSamples / "xy-1.txt";
   const CommandResult refused = run("stats " + uneven.string() + " --unit um --psd " + psd.string());
   EXPECT_EQ(refused.status, 1);
   EXPECT_NE(refused.err.find("--psd needs a uniformly sampled scan"), std::string::npos) << refused.err;
@@ -331,8 +332,8 @@ TEST_F(MeasurementFiles, StatsWritesTheProfilePsdOfAUniformScan) {
   EXPECT_EQ(over.status, 1);
   EXPECT_NE(over.err.find("is the input file"), std::string::npos) << over.err;
   // A surface's PSD: the radial average, one row a bin.
-  const CommandResult surface =
-      run("stats " + (samples / "metropro-1.dat").string() + " --psd " + (folder_ / "radial.csv").string());
+  const CommandResult surface = run("stats " + (kFormatSamples / "metropro-1.dat").string() + " --psd " +
+                                    (folder_ / "radial.csv").string());
   ASSERT_EQ(surface.status, 0) << surface.err;
   const std::string radial = slurp(folder_ / "radial.csv");
   EXPECT_NE(radial.find("q_per_m,c_m4,modes"), std::string::npos);
@@ -340,7 +341,7 @@ TEST_F(MeasurementFiles, StatsWritesTheProfilePsdOfAUniformScan) {
 }
 
 TEST_F(MeasurementFiles, ConvertAndAreaMethodsRefuseALineScanWhichDrivesTheTheories) {
-  const fs::path input = samples / "xy-1.txt";
+  const fs::path input = kFormatSamples / "xy-1.txt";
   const std::string before = md5_of(input);
   expect_refusal(run("convert " + input.string() + " " + (folder_ / "out.txt").string() + " --unit um"),
                  input, "is a line scan (a profile along one line), not a surface");
@@ -368,7 +369,7 @@ TEST_F(MeasurementFiles, ConvertAndAreaMethodsRefuseALineScanWhichDrivesTheTheor
 }
 
 TEST_F(MeasurementFiles, CropAndRowAlignmentAreRecordedByStatsAndScenes) {
-  const fs::path input = samples / "sur-3.sur";
+  const fs::path input = kFormatSamples / "sur-3.sur";
   const std::string before = md5_of(input);
   const CommandResult stats =
       run("stats " + input.string() + " --crop measured --align-rows median --level quadratic");
@@ -401,13 +402,14 @@ TEST_F(MeasurementFiles, CropAndRowAlignmentAreRecordedByStatsAndScenes) {
 TEST_F(MeasurementFiles, SweepAndBemPassTheReadingOptionsOn) {
   // sur-3.sur is refused for its unmeasured points unless cropped (or filled): the option must reach the
   // scene these commands build, not be dropped.
-  const fs::path input = samples / "sur-3.sur";
+  const fs::path input = kFormatSamples / "sur-3.sur";
   const CommandResult refused = run("sweep " + input.string() + " --levels 8");
   EXPECT_EQ(refused.status, 1);
   EXPECT_NE(refused.err.find("233009 of 262144 points"), std::string::npos) << refused.err;
   const CommandResult cropped = run("sweep " + input.string() + " --levels 8 --crop measured --level plane");
   EXPECT_EQ(cropped.status, 0) << cropped.err;
-  const CommandResult channel = run("bem " + (samples / "di-3.di").string() + " --channel Nope --loads 1e-3");
+  const CommandResult channel =
+      run("bem " + (kFormatSamples / "di-3.di").string() + " --channel Nope --loads 1e-3");
   EXPECT_EQ(channel.status, 1);
   EXPECT_NE(channel.err.find("unknown channel 'Nope'"), std::string::npos) << channel.err;
 }

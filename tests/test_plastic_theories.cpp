@@ -29,11 +29,12 @@
 #include "contactbench/theories/plateau_hertz.hpp"
 #include "contactbench/theories/plateau_model.hpp"
 #include "small_scene.hpp"
+#include "test_constants.hpp"
 
 namespace contactbench {
 namespace {
 
-constexpr Real um = 1e-6;
+using testing::um;
 constexpr Real pi = std::numbers::pi;
 
 Surface random_surface(Index n, std::uint64_t seed, Real hurst = 0.8) {

@@ -14,12 +14,12 @@
 #include "contactbench/core/sweep.hpp"
 #include "contactbench/theories/plateau_model.hpp"
 #include "random_surface.hpp"
+#include "test_constants.hpp"
 
 namespace contactbench {
 namespace {
 
-constexpr Real um = 1e-6;
-const Real pi = std::numbers::pi;
+using testing::um;
 
 using testing::random_surface;
 

@@ -16,7 +16,6 @@
 namespace contactbench {
 namespace {
 
-const Real pi = std::numbers::pi;
 constexpr Index kN = 512, kCentre = 256;  // lattice, apex on the node (256, 256)
 constexpr Real kDx = 1e-6;                // [m]
 

@@ -2,6 +2,7 @@
 // each against an independent property (equilibrium: the pressure integrates to the load; consistency of its
 // formulas with each other; the half-space's exact response to one wave, u(q) = 2 p(q)/(E* |q|)).
 #include "reference_solutions.hpp"
+#include "test_constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,9 +13,6 @@
 
 namespace contactbench::reference {
 namespace {
-
-constexpr Real pi = std::numbers::pi;
-constexpr Real kModulus = 1e11 / (1 - 0.3 * 0.3);  // E* of the paper's material [Pa]
 
 // Composite Simpson's rule on [a, b] with n (even) intervals: error (b - a) h^4 f''''/180.
 Real simpson(const std::function<Real(Real)>& f, Real a, Real b, int n) {
@@ -29,7 +27,7 @@ Real simpson(const std::function<Real(Real)>& f, Real a, Real b, int n) {
 constexpr Real kQuadrature = 1e-12;
 
 TEST(ReferenceHertz, PressureIntegratesToTheLoad) {
-  const HertzSphere hertz{.radius = 1e-3, .modulus = kModulus};
+  const HertzSphere hertz{.radius = 1e-3, .modulus = testing::kPaperModulus};
   for (const Real load : {1e-3, 0.1, 10.0}) {
     const Real a = hertz.contact_radius(load);
     // r = a sin(t): the square root becomes cos(t), smooth on [0, pi/2].
@@ -43,20 +41,21 @@ TEST(ReferenceHertz, PressureIntegratesToTheLoad) {
 }
 
 TEST(ReferenceHertz, ItsFormulasAgreeWithEachOther) {
-  const HertzSphere hertz{.radius = 2e-3, .modulus = kModulus};
+  const HertzSphere hertz{.radius = 2e-3, .modulus = testing::kPaperModulus};
   const Real load = 0.5;
   // Round-off of a few powers and roots: 1e-14.
   EXPECT_NEAR(hertz.load_of_contact_radius(hertz.contact_radius(load)), load, 1e-14 * load);
   EXPECT_NEAR(hertz.load_of_approach(hertz.approach(load)), load, 1e-14 * load);
   // p0 = (6 P E*^2/(pi^3 R^2))^(1/3) (Johnson 1985, eq. 4.23), another arrangement of the same law.
   EXPECT_NEAR(hertz.peak_pressure(load),
-              std::cbrt(6 * load * kModulus * kModulus / (pi * pi * pi * hertz.radius * hertz.radius)),
+              std::cbrt(6 * load * testing::kPaperModulus * testing::kPaperModulus /
+                        (pi * pi * pi * hertz.radius * hertz.radius)),
               1e-14 * hertz.peak_pressure(load));
   EXPECT_EQ(hertz.pressure(1.01 * hertz.contact_radius(load), load), 0);
 }
 
 TEST(ReferenceFlatPunch, PressureIntegratesToTheLoadAndHertzStiffnessIsThePunchs) {
-  const FlatPunch punch{.radius = 20e-6, .modulus = kModulus};
+  const FlatPunch punch{.radius = 20e-6, .modulus = testing::kPaperModulus};
   const Real load = 0.3, a = punch.radius;
   // r = a sin(t): the inverse square root singularity at the edge cancels against dr = a cos(t) dt. The
   // midpoint rule never evaluates the edge itself (where a^2 - r^2 cancels): error (h^2/24) f'' ~ 3e-10
@@ -71,7 +70,7 @@ TEST(ReferenceFlatPunch, PressureIntegratesToTheLoadAndHertzStiffnessIsThePunchs
   EXPECT_NEAR(total, load, 1e-8 * load);
   // The incremental stiffness of a Hertz contact of radius a is that of a punch of radius a (Johnson 1985,
   // section 4.2): a central difference of P(delta), error (h^2/6) P''' ~ 1e-8 relative at h = 1e-4 delta.
-  const HertzSphere hertz{.radius = 1e-3, .modulus = kModulus};
+  const HertzSphere hertz{.radius = 1e-3, .modulus = testing::kPaperModulus};
   const Real hertz_load = hertz.load_of_contact_radius(a), delta = hertz.approach(hertz_load),
              h = 1e-4 * delta;
   const Real slope = (hertz.load_of_approach(delta + h) - hertz.load_of_approach(delta - h)) / (2 * h);
@@ -79,10 +78,11 @@ TEST(ReferenceFlatPunch, PressureIntegratesToTheLoadAndHertzStiffnessIsThePunchs
 }
 
 TEST(ReferenceWestergaard, MeanPressureIsTheLoadAndFullContactJoinsContinuously) {
-  const WavySurface wavy{.amplitude = 1e-6, .wavelength = 100e-6, .modulus = kModulus};
+  const WavySurface wavy{.amplitude = 1e-6, .wavelength = 100e-6, .modulus = testing::kPaperModulus};
   const Real p_star = wavy.full_contact_pressure();
   // p* from the half-space's response to one wave: u = 2 p/(E* q), q = 2 pi/lambda, must flatten D.
-  EXPECT_NEAR(p_star, kModulus * (2 * pi / wavy.wavelength) * wavy.amplitude / 2, 1e-15 * p_star);
+  EXPECT_NEAR(p_star, testing::kPaperModulus * (2 * pi / wavy.wavelength) * wavy.amplitude / 2,
+              1e-15 * p_star);
   for (const Real ratio : {0.1, 0.5, 0.9}) {
     const Real pbar = ratio * p_star, a = wavy.contact_half_width(pbar);
     EXPECT_NEAR(std::pow(std::sin(pi * a / wavy.wavelength), 2), ratio, 1e-15);
@@ -98,14 +98,15 @@ TEST(ReferenceWestergaard, MeanPressureIsTheLoadAndFullContactJoinsContinuously)
 }
 
 TEST(ReferenceBisinusoid, FullContactPressureAndSmallLoadAsTwoHertzContacts) {
-  const Bisinusoid wave{.amplitude = 1e-6, .wavelength = 100e-6, .modulus = kModulus};
+  const Bisinusoid wave{.amplitude = 1e-6, .wavelength = 100e-6, .modulus = testing::kPaperModulus};
   const Real p_star = wave.full_contact_pressure();
   // One wave of |q| = 2 pi sqrt2/lambda: u = 2 p/(E* |q|) flattens D when the pressure amplitude is p*.
-  EXPECT_NEAR(p_star, kModulus * (2 * pi * std::sqrt(2.0) / wave.wavelength) * wave.amplitude / 2,
+  EXPECT_NEAR(p_star,
+              testing::kPaperModulus * (2 * pi * std::sqrt(2.0) / wave.wavelength) * wave.amplitude / 2,
               1e-15 * p_star);
   // Two crests a cell, each of radius lambda^2/(4 pi^2 D), each carrying half the cell's load pbar lambda^2.
   const HertzSphere crest{.radius = wave.wavelength * wave.wavelength / (4 * pi * pi * wave.amplitude),
-                          .modulus = kModulus};
+                          .modulus = testing::kPaperModulus};
   for (const Real ratio : {1e-4, 1e-2}) {
     const Real a = crest.contact_radius(ratio * p_star * wave.wavelength * wave.wavelength / 2);
     const Real two_contacts = 2 * pi * a * a / (wave.wavelength * wave.wavelength);

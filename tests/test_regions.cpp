@@ -11,6 +11,7 @@
 
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/topography_io.hpp"
+#include "test_constants.hpp"
 #include "test_folder.hpp"
 
 namespace contactbench {
@@ -18,7 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const double nan = std::numeric_limits<double>::quiet_NaN();
+using testing::nan;
 
 TEST(Crop, ParsesTheThreeKindsAndRefusesTheRest) {
   ASSERT_TRUE(parse_crop("measured"));

@@ -23,6 +23,7 @@
 #include "contactbench/bem/grid_convergence.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/topography_io.hpp"
+#include "run_scene_text.hpp"
 #include "small_scene.hpp"
 
 namespace contactbench {
@@ -60,14 +61,10 @@ bool ran(const SceneReport& report, const std::string& prefix) {
 
 const std::string kSmallSurface = kSmallSurfaceAndMaterial + "[loads]\nvalues = [1e-3, 1e-2]\n";
 
-SceneReport run_text(const std::string& text) {
-  return run_scene(parse_scene(text, "test.toml"), {.threads = 1, .observer = nullptr});
-}
-
 TEST(ScenePlan, TheoriesAloneNeverSweepNorSolve) {
   const SceneReport report =
-      run_text("name = \"theories\"\n" + kSmallSurface +
-               "[methods.gw_mccool]\n[methods.bgt]\n[methods.bgt_linear]\n[methods.persson]\n");
+      run_scene_text("name = \"theories\"\n" + kSmallSurface +
+                     "[methods.gw_mccool]\n[methods.bgt]\n[methods.bgt_linear]\n[methods.persson]\n");
   EXPECT_FALSE(ran(report, "sweep"));
   EXPECT_FALSE(ran(report, "bem"));
   EXPECT_FALSE(ran(report, "refine"));
@@ -81,7 +78,7 @@ TEST(ScenePlan, TheoriesAloneNeverSweepNorSolve) {
 }
 
 TEST(ScenePlan, PlateauAloneNeverSolvesAndSharesEqualSweeps) {
-  const SceneReport report = run_text("name = \"plateaus\"\n" + kSmallSurface + R"(
+  const SceneReport report = run_scene_text("name = \"plateaus\"\n" + kSmallSurface + R"(
 [methods.plateau_4]
 method = "plateau"
 [methods.plateau_4_again]
@@ -130,7 +127,7 @@ periodic = true
 // An effect runs only where a method names it: the pressure cap shows in its stage and its own column, and
 // the elastic method beside it has neither (and caps nothing: more area under the cap at the same load).
 TEST(ScenePlan, AHardnessRunsOnlyForTheMethodThatRunsWithIt) {
-  const SceneReport report = run_text("name = \"cap\"\nreference = \"\"\n" + kSmallSurface + R"(
+  const SceneReport report = run_scene_text("name = \"cap\"\nreference = \"\"\n" + kSmallSurface + R"(
 [interface]
 hardness = 2e9
 [methods.elastic]
@@ -181,7 +178,7 @@ TEST(ScenePlan, PlateauRefinesLikeTheBemAndRefusesTheSameWay) {
   // refine sweeps the surface Fourier-refined: the same as sweeping the surface generated on the finer grid
   // from the same coefficients (both are the same trigonometric interpolation; equal to rounding, 1e-12,
   // far below the area of one node, 1/64^2 = 2.4e-4, so the node counts agree exactly but for a tie).
-  const SceneReport refined = run_text("name = \"refined\"\n" + kSmallSurface + R"(
+  const SceneReport refined = run_scene_text("name = \"refined\"\n" + kSmallSurface + R"(
 [methods.plateau_64]
 method = "plateau"
 refine = 64
@@ -189,7 +186,7 @@ refine = 64
 method = "plateau_hertz"
 refine = 64
 )");
-  const SceneReport generated = run_text(
+  const SceneReport generated = run_scene_text(
       "name = \"generated\"\n" + replace_all(kSmallSurface, "seed = 2 }", "seed = 2, refine = 64 }") + R"(
 [methods.plateau]
 )");
@@ -198,7 +195,7 @@ refine = 64
     EXPECT_NEAR(refined.methods[0].curve.area_fraction[k], generated.methods[0].curve.area_fraction[k],
                 1e-9 * generated.methods[0].curve.area_fraction[k]);
   // The refined and unrefined sweeps are different stages, never shared.
-  const SceneReport both = run_text("name = \"both\"\n" + kSmallSurface + R"(
+  const SceneReport both = run_scene_text("name = \"both\"\n" + kSmallSurface + R"(
 [methods.plateau]
 [methods.plateau_64]
 method = "plateau"
@@ -210,8 +207,8 @@ refine = 64
   // Same key, same refusals as the BEM's.
   for (const std::string method : {"plateau", "plateau_hertz"}) {
     try {
-      run_text("name = \"bad\"\n" + kSmallSurface + "[methods.p]\nmethod = \"" + method +
-               "\"\nrefine = 16\n");
+      run_scene_text("name = \"bad\"\n" + kSmallSurface + "[methods.p]\nmethod = \"" + method +
+                     "\"\nrefine = 16\n");
       ADD_FAILURE() << method << " refined to fewer points";
     } catch (const SceneError& error) {
       EXPECT_NE(std::string(error.what()).find("methods.p.refine: out of range: got 16"), std::string::npos)
@@ -225,7 +222,7 @@ TEST(ScenePlan, PlateauHertzIsThePlateauSweepReadAsParaboloids) {
   // same sweep (shared). Exact relation between the two methods' answers, to rounding (1e-12).
   const std::string loads =
       "[loads]\nvalues = [1e-3, 1.41421356237309515e-3, 1e-2, 1.41421356237309515e-2]\n";
-  const SceneReport report = run_text("name = \"hertz\"\n" + kSmallSurfaceAndMaterial + loads + R"(
+  const SceneReport report = run_scene_text("name = \"hertz\"\n" + kSmallSurfaceAndMaterial + loads + R"(
 [methods.plateau]
 [methods.hertz]
 method = "plateau_hertz"
@@ -246,7 +243,7 @@ method = "plateau_hertz"
 // its name or a column's: a note set on any row (as an effect's mark would be) shows after its label, and a
 // load marked unconverged is marked whichever method it belongs to.
 TEST(SceneRun, WritersShowEveryNoteAndReadTypedFields) {
-  SceneReport report = run_text("name = \"typed\"\n" + kSmallSurface + R"(
+  SceneReport report = run_scene_text("name = \"typed\"\n" + kSmallSurface + R"(
 [methods.bem]
 [methods.hertz]
 method = "plateau_hertz"
@@ -322,8 +319,8 @@ std::vector<Real> json_numbers_after(const std::string& text, std::size_t from, 
 // (8.3 %), kappa with the profile gbar sqrt(m2x) (0.300) or at the largest load (0.450 for the model), or a
 // column shifted by one load.
 TEST(SceneRun, TheComparisonEqualsAHandComputation) {
-  SceneReport report = run_text("name = \"hand\"\nreference = \"\"\n" + kSmallSurfaceAndMaterial +
-                                "[loads]\nvalues = [1e-3, 2e-3, 4e-3]\n[methods.persson]\n");
+  SceneReport report = run_scene_text("name = \"hand\"\nreference = \"\"\n" + kSmallSurfaceAndMaterial +
+                                      "[loads]\nvalues = [1e-3, 2e-3, 4e-3]\n[methods.persson]\n");
   ASSERT_EQ(report.loads(), (std::vector<Real>{1e-3, 2e-3, 4e-3}));
   const Real nan = std::nan("");
   const std::vector<Real> none{nan, nan, nan};
@@ -396,7 +393,7 @@ TEST(SceneRun, TheComparisonEqualsAHandComputation) {
 // table.md, summary.json and the plot legend mark its row; the BEM, which models the cap, is unmarked and
 // solves capped.
 TEST(SceneRun, AMethodThatIgnoresAnEffectIsMarkedInEveryOutput) {
-  const SceneReport report = run_text("name = \"plastic\"\n" + kSmallSurface + R"(
+  const SceneReport report = run_scene_text("name = \"plastic\"\n" + kSmallSurface + R"(
 [interface]
 hardness = 2e9
 [methods.bem]
@@ -427,7 +424,7 @@ ignore = ["hardness"]
 // load is the load plus the pull), so the adhesive area must exceed the non-adhesive one at every load: with
 // the pull's sign reversed it would fall short, and with the attraction dropped it would equal it.
 TEST(SceneRun, AdhesionAddsItsPullAndGrowsTheArea) {
-  const SceneReport report = run_text("name = \"sticky\"\n" + kSmallSurface + R"(
+  const SceneReport report = run_scene_text("name = \"sticky\"\n" + kSmallSurface + R"(
 [interface]
 adhesion = { model = "dugdale", work = 1.0, stress = 1e8 }
 [methods.bem]
@@ -607,10 +604,10 @@ TEST(SceneRun, FileSurfacesAreMeasuredFromTheirMeanPlane) {
   write_surface(folder / "plain.txt", Surface(grid, h));
   write_surface(folder / "offset.txt", Surface(grid, h + 1e-3));
   auto run_file = [&](const std::string& name) {
-    return run_text(R"(name = "offset"
+    return run_scene_text(R"(name = "offset"
 [surface]
 file = ")" + (folder / name).string() +
-                    R"("
+                          R"("
 [material]
 estar = 1e11
 [loads]

@@ -13,8 +13,6 @@
 namespace contactbench {
 namespace {
 
-constexpr Real pi = std::numbers::pi;
-
 // h = a cos(qx x + qy y + phase) on a periodic grid, with (kx, ky) lattice indices.
 Surface plane_wave(const Grid& grid, Real a, Index kx, Index ky, Real phase = 0.3) {
   HeightMap h(grid.ny, grid.nx);

@@ -13,6 +13,7 @@
 #include "contactbench/core/generation.hpp"
 #include "contactbench/core/sweep.hpp"
 #include "reference_labelling.hpp"
+#include "test_constants.hpp"
 
 namespace contactbench {
 namespace {
@@ -20,7 +21,7 @@ namespace {
 using reference::reference_sweep_at;
 using reference::ReferenceLevel;
 
-constexpr Real um = 1e-6;
+using testing::um;
 
 // Connectivity 4/8 x (wrap both, wrap none, wrap only x).
 std::vector<Topology> sweep_topologies() {

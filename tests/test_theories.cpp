@@ -20,13 +20,14 @@
 #include "contactbench/theories/isotropic_moments.hpp"
 #include "contactbench/theories/number_text.hpp"
 #include "contactbench/theories/persson.hpp"
+#include "test_constants.hpp"
 #include "tolerances.hpp"
 
 namespace contactbench {
 namespace {
 
 constexpr Real pi = std::numbers::pi;
-constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
+using testing::nan;
 
 // Named tolerances, each with its reason (docs/architecture.md).
 // docs/theory.md prints F_n to 7 significant digits: rounding alone is up to 5e-7 relative.

@@ -16,8 +16,6 @@
 namespace contactbench {
 namespace {
 
-constexpr Real pi = std::numbers::pi;
-
 // 10-point Gauss–Legendre on [-1, 1] (Abramowitz & Stegun table 25.4): exact for polynomials of degree 19.
 constexpr std::array<Real, 5> kNodes = {0.1488743389816312, 0.4333953941292472, 0.6794095682990244,
                                         0.8650633666889845, 0.9739065285171717};

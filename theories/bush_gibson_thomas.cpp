@@ -17,11 +17,10 @@
 namespace contactbench {
 namespace {
 
-constexpr Real pi = std::numbers::pi;
 constexpr Real nan = std::numeric_limits<Real>::quiet_NaN();
 
 // Absolute floor of the bracket width in zeta = d/sqrt(m0).
-constexpr Real kSeparationTolerance = 1e-15;
+constexpr Real kZetaBracketFloor = 1e-15;
 // The axis ratio: ln of the curvature ratio to 1e-15 gives (b/a)^2 to about 1e-15.
 constexpr Real kShapeTolerance = 1e-15;
 // Quadrature in u = rho^2: tanh-sinh over tau in [-kShapeRange, kShapeRange] with step kShapeStep at level 0.
@@ -242,7 +241,7 @@ Real BushGibsonThomas::solve_separation(Real load) const {
                 format_number(log_load(scale * kBgtMaxSeparation)) +
                 ") at d/sqrt(m0) = " + format_number(kBgtMaxSeparation));
   return scale * find_root(residual, kBgtMinSeparation, kBgtMaxSeparation, f_low, f_high, kLogLoadTolerance,
-                           kSeparationTolerance);
+                           kZetaBracketFloor);
 }
 
 LoadAreaCurve bgt_curve(const SpectralMoments& moments, std::span<const Real> loads,
@@ -272,7 +271,7 @@ LoadAreaCurve bgt_curve(const SpectralMoments& moments, std::span<const Real> lo
     const Real f_max = excess(d_max);
     const Real d_full = f_max >= 0 ? d_max
                                    : find_root(excess, d_capped, d_max, excess(d_capped), f_max,
-                                               kLogLoadTolerance, kSeparationTolerance * std::sqrt(m.m0));
+                                               kLogLoadTolerance, kZetaBracketFloor * std::sqrt(m.m0));
     parameters += "; capped at A/A0 = 1 for loads >= " + format_number(model.load(d_full)) +
                   " (BGT's A/A0 exceeds 1 beyond)";
   }

@@ -11,7 +11,6 @@
 namespace contactbench {
 namespace {
 
-constexpr Real pi = std::numbers::pi;
 // ln sqrt(2 pi).
 const Real kLogSqrt2Pi = 0.5 * std::log(2 * pi);
 // The integrand is integrated where it exceeds exp(-kLogCut) of its maximum; the part dropped is below

@@ -16,11 +16,10 @@
 namespace contactbench {
 namespace {
 
-constexpr Real pi = std::numbers::pi;
 // McCool (1986) after Nayak (1971): the summit height variance is (1 - 0.8968/alpha) m0.
 constexpr Real kNayakSummitVariance = 0.8968;
 // Absolute floor of the bracket width in t (the relative floor 4 eps |t| comes first except near t = 0).
-constexpr Real kSeparationTolerance = 1e-15;
+constexpr Real kTBracketFloor = 1e-15;
 
 // ln of the prefactors of A/A0 and P/(E* A0) (Greenwood & Williamson 1966, docs/theory.md section 5).
 Real log_area_prefactor(const GwParameters& gw) {
@@ -52,7 +51,7 @@ Real solve_separation(const GwParameters& gw, Real load, const std::string& meth
                 format_number(gw_log_load(gw, kGwMaxSeparation)) +
                 ") at t = (d - ys)/sigma_s = " + format_number(kGwMaxSeparation));
   return find_root(residual, kGwMinSeparation, kGwMaxSeparation, f_low, f_high, kLogLoadTolerance,
-                   kSeparationTolerance);
+                   kTBracketFloor);
 }
 
 // The curve of GW summits `gw`; its parameters text begins with `prefix`.
@@ -80,7 +79,7 @@ LoadAreaCurve solve_curve(const GwParameters& gw, std::span<const Real> loads,
     const Real f_max = excess(kGwMaxSeparation);
     const Real t_full = f_max >= 0 ? kGwMaxSeparation
                                    : find_root(excess, t_capped, kGwMaxSeparation, excess(t_capped), f_max,
-                                               kLogLoadTolerance, kSeparationTolerance);
+                                               kLogLoadTolerance, kTBracketFloor);
     parameters += "; capped at A/A0 = 1 for loads >= " + format_number(gw_load(gw, t_full)) +
                   " (GW's A/A0 exceeds 1 beyond)";
   }

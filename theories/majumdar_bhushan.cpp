@@ -14,7 +14,6 @@
 namespace contactbench {
 namespace {
 
-constexpr Real pi = std::numbers::pi;
 constexpr Real kGamma = 1.5;  // MB's frequency ratio of the W-M series
 
 // (x^e - y^e)/e, continuous through e = 0 (where it is ln(x/y)).

@@ -11,8 +11,6 @@ namespace contactbench {
 
 namespace {
 
-constexpr Real pi = std::numbers::pi;
-
 // F(s0) = int_s0^inf (1/s) [gamma + 3 (1 - gamma) erf^2(s)] exp(-s^2) ds, tabulated in t = ln s on
 // [ln 1e-12, ln 8] (beyond 8, exp(-64) leaves nothing) by Simpson's rule from the top, and below 1e-12
 // continued by its logarithmic head gamma ln(1e-12/s0) (erf^2 ~ s^2 is negligible there).

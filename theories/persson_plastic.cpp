@@ -12,7 +12,6 @@
 namespace contactbench {
 namespace {
 
-constexpr Real pi = std::numbers::pi;
 // Terms are dropped once the Gaussian factor is below exp(-kTailExponent): 1e-17 of the first term.
 constexpr Real kTailExponent = 40;
 

@@ -11,13 +11,9 @@
 #include "contactbench/core/sweep.hpp"
 #include "contactbench/core/topology.hpp"
 #include "contactbench/core/types.hpp"
+#include "contactbench/theories/plateau_reading.hpp"
 
 namespace contactbench {
-
-enum class PlateauReading {
-  paper,  // Wang, Liang and Yan: the spots are the clusters of {h > z}, their area the bearing area
-  hertz,  // the project's variant: the same clusters at its own level, each spot's area half its bearing area
-};
 
 struct PlateauAtLoad {
   Real level = 0;                // the cut level z [m] at the load (exact levels, plateau_curve_at_loads)

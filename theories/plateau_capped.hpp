@@ -19,13 +19,9 @@
 #include "contactbench/core/load_area_curve.hpp"
 #include "contactbench/core/sweep.hpp"
 #include "contactbench/theories/plastic_curve.hpp"
+#include "contactbench/theories/plateau_reading.hpp"
 
 namespace contactbench {
-
-enum class PlateauReading {
-  paper,  // the paper's plateaus: elastic load E(z), area A_c(z)
-  hertz,  // the Hertz-consistent plateaus: elastic load E(z)/sqrt(2), area max(A_c/2, P/H)
-};
 
 // The capped curve at requested loads P/(E* A0) (finite, > 0, ascending, each below hardness_over_estar =
 // H/E*; kNoHardness gives the elastic model's curve). paper_model = plateau_model(sweep). The load is read

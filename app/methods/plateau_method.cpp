@@ -13,11 +13,7 @@
 
 namespace contactbench {
 
-namespace {
-
-constexpr Real pi = std::numbers::pi;
-
-}  // namespace
+namespace {}  // namespace
 
 std::string PlateauMethod::compared_area() const {
   return "the bearing area of {h > z}, a node count (also in area_fraction_nodes)";

@@ -22,7 +22,7 @@ namespace {
 constexpr std::string_view magic = "DIGITAL SURF";
 constexpr std::uint64_t header_size = 512;
 
-std::optional<Real> length_unit(std::string_view unit) {
+std::optional<Real> digital_surf_length_unit(std::string_view unit) {
   if (unit == "m") return 1.0;
   if (unit == "mm") return 1e-3;
   if (unit == "\xb5m" || unit == "um" || unit == "\xc2\xb5m") return 1e-6;
@@ -33,7 +33,7 @@ std::optional<Real> length_unit(std::string_view unit) {
 
 Real metres(const BinaryView& view, std::uint64_t offset, const char* what) {
   const std::string unit = view.text(offset, 16, what);
-  const std::optional<Real> factor = length_unit(unit);
+  const std::optional<Real> factor = digital_surf_length_unit(unit);
   if (!factor)
     throw InputError(
         view.path(), 0,

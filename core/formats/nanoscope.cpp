@@ -49,7 +49,7 @@ std::optional<Real> number(std::string_view text) {
 }
 
 // Metres per unit for the length units Nanoscope headers use ('~m' is its spelling of micrometre).
-std::optional<Real> length_unit(std::string_view unit) {
+std::optional<Real> nanoscope_length_unit(std::string_view unit) {
   if (unit == "m") return 1.0;
   if (unit == "mm") return 1e-3;
   if (unit == "~m" || unit == "um" || unit == "\xb5m" || unit == "\xc2\xb5m") return 1e-6;
@@ -178,10 +178,10 @@ RawTopography read_nanoscope(const fs::path& path, std::string_view bytes) {
     if (scan.size() == 3) {
       sx = number(scan[0]);
       sy = number(scan[1]);
-      lateral_unit = length_unit(scan[2]);
+      lateral_unit = nanoscope_length_unit(scan[2]);
     } else if (scan.size() == 2) {
       sx = sy = number(scan[0]);
-      lateral_unit = length_unit(scan[1]);
+      lateral_unit = nanoscope_length_unit(scan[1]);
     }
     if (!sx || !sy || !lateral_unit || !(*sx > 0) || !(*sy > 0))
       throw InputError(path, 0,
@@ -213,7 +213,7 @@ RawTopography read_nanoscope(const fs::path& path, std::string_view bytes) {
           const std::size_t slash = soft[2].find('/');
           const std::optional<Real> soft_value = number(soft[1]);
           if (slash != std::string_view::npos && soft_value) {
-            const std::optional<Real> height_unit = length_unit(soft[2].substr(0, slash));
+            const std::optional<Real> height_unit = nanoscope_length_unit(soft[2].substr(0, slash));
             const std::optional<Real> per_volt = voltage_unit(soft[2].substr(slash + 1));
             channel.unit = std::string(soft[2].substr(0, slash));
             if (height_unit && per_volt)

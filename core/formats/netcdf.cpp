@@ -165,7 +165,7 @@ class Header {
   std::uint64_t at_ = 4;
 };
 
-std::optional<Real> length_unit(std::string_view unit) {
+std::optional<Real> netcdf_length_unit(std::string_view unit) {
   if (unit == "m") return 1.0;
   if (unit == "mm") return 1e-3;
   if (unit == "um" || unit == "\xc2\xb5m" || unit == "\xce\xbcm") return 1e-6;
@@ -265,7 +265,7 @@ RawTopography read_netcdf(const fs::path& path, std::string_view bytes) {
   if (!unit_name) unit_name = height_unit;
   Real unit = 1;
   if (unit_name) {
-    const std::optional<Real> factor = length_unit(*unit_name);
+    const std::optional<Real> factor = netcdf_length_unit(*unit_name);
     if (!factor)
       throw InputError(path, 0, "NetCDF unit '" + *unit_name + "' is not a length unit (m, mm, um, nm, pm)");
     unit = *factor;

@@ -27,7 +27,7 @@ struct Block {
   std::uint64_t offset = 0;  // where its content begins
 };
 
-struct DataBlock {
+struct WykoDataBlock {
   std::string name;
   std::uint16_t nx = 0, ny = 0, element_size = 0;
   std::uint64_t data_offset = 0;
@@ -74,14 +74,14 @@ RawTopography read_wyko(const std::filesystem::path& path, std::string_view byte
   Real mult = 1;
   Real aspect = 1;
   Real pixel_mm = 0;
-  std::vector<DataBlock> data_blocks;
+  std::vector<WykoDataBlock> data_blocks;
   for (const Block& block : blocks) {
     const std::string& n = block.name;
     if (n == "RAW DATA" || n == "RAW_DATA" || n == "OPD" || n == "Raw") {
-      DataBlock data{n, view.read<std::uint16_t>(block.offset, little, n + " nx"),
-                     view.read<std::uint16_t>(block.offset + 2, little, n + " ny"),
-                     view.read<std::uint16_t>(block.offset + 4, little, n + " element size"),
-                     block.offset + 6};
+      WykoDataBlock data{n, view.read<std::uint16_t>(block.offset, little, n + " nx"),
+                         view.read<std::uint16_t>(block.offset + 2, little, n + " ny"),
+                         view.read<std::uint16_t>(block.offset + 4, little, n + " element size"),
+                         block.offset + 6};
       if (data.element_size != 2 && data.element_size != 4)
         throw InputError(path, 0,
                          "Wyko block '" + n + "' has " + std::to_string(data.element_size) +
@@ -114,7 +114,7 @@ RawTopography read_wyko(const std::filesystem::path& path, std::string_view byte
 
   RawTopography topography;
   const Real metres_per_unit = wavelength_nm / mult * 1e-9;
-  for (const DataBlock& data : data_blocks) {
+  for (const WykoDataBlock& data : data_blocks) {
     const Index nx = data.nx;
     const Index ny = data.ny;
     Channel channel = make_channel(data.name, true, "m", nx, ny);

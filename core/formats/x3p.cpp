@@ -21,6 +21,7 @@
 #include "contactbench/core/formats/declared_memory.hpp"
 #include "contactbench/core/formats/md5.hpp"
 #include "contactbench/core/formats/readers.hpp"
+#include "contactbench/core/formats/text_values.hpp"
 
 namespace contactbench::formats {
 
@@ -122,12 +123,6 @@ Index parse_size(const fs::path& path, const std::string& text, const std::strin
   if (error != std::errc() || end != text.data() + text.size() || value < 1 || value > (1ll << 31))
     throw InputError(path, 0, "main.xml <" + where + "> is '" + text + "', not a size from 1 to 2^31");
   return static_cast<Index>(value);
-}
-
-std::string format_real(Real value) {
-  std::array<char, 32> buffer{};
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  return std::string(buffer.data(), result.ptr);
 }
 
 }  // namespace

@@ -18,14 +18,14 @@
 namespace contactbench::mpi {
 namespace {
 
-constexpr Real kModulus = 1e11;
+constexpr Real kActiveSetModulus = 1e11;
 // The two take the same steps on the same sets; what differs is round-off: the order of the sums (ranks
 // against one thread), the transforms (FFTW-MPI's passes), the window sums' running order, and the filter's
 // inner passes (double on FFTW-MPI against the serial float FFT; both round its input and output to float).
 // The CG converges to the fixed point of the set it ends on whatever its directions' rounding, so the
 // pressures agree far inside 1e-12 of the peak when the sets and iteration counts agree (the bound).
-constexpr double kPressureTolerance = 1e-12;
-constexpr double kTolerance = 1e-8;  // the scenes' solver tolerance
+constexpr double kActiveSetPressureTolerance = 1e-12;
+constexpr double kSolverTolerance = 1e-8;  // the scenes' solver tolerance
 
 struct Case {
   Grid grid;
@@ -51,7 +51,7 @@ std::vector<double> centred_heights(const Case& c) {
 // The load that brings about 2 * fraction of the area into contact (E* times the rms slope times fraction).
 ActiveSetProblem load(const Case& c, double fraction) {
   return {.load_control = true,
-          .mean_pressure = fraction * kModulus * spectral_moments(surface_of(c)).rms_gradient()};
+          .mean_pressure = fraction * kActiveSetModulus * spectral_moments(surface_of(c)).rms_gradient()};
 }
 
 // One problem on both solvers; `gather_bound` as DistributedActiveSet's.
@@ -64,9 +64,9 @@ void expect_same_solution(const Case& c, const ActiveSetProblem& problem, Index 
   const Slab slab = slab_of(grid, MPI_COMM_WORLD);
   std::vector<double> local(heights.begin() + slab.start * grid.nx,
                             heights.begin() + (slab.start + slab.count) * grid.nx);
-  DistributedActiveSet distributed(grid, local, kModulus, MPI_COMM_WORLD, 1, gather_bound);
+  DistributedActiveSet distributed(grid, local, kActiveSetModulus, MPI_COMM_WORLD, 1, gather_bound);
   std::vector<double> local_pressure;
-  const ActiveSetOutcome d = distributed.solve(problem, kTolerance, 10000, false, local_pressure);
+  const ActiveSetOutcome d = distributed.solve(problem, kSolverTolerance, 10000, false, local_pressure);
   std::vector<double> local_gap;
   distributed.displacement_minus_heights(local_gap);
   HeightMap pressure_slab(slab.count, grid.nx), gap_slab(slab.count, grid.nx);
@@ -75,9 +75,10 @@ void expect_same_solution(const Case& c, const ActiveSetProblem& problem, Index 
   const HeightMap pressure = gather_to_root(pressure_slab, slab, MPI_COMM_WORLD);
   const HeightMap gap = gather_to_root(gap_slab, slab, MPI_COMM_WORLD);
 
-  ActiveSetSolver<double> serial(grid, heights, kModulus, 1);
+  ActiveSetSolver<double> serial(grid, heights, kActiveSetModulus, 1);
   std::vector<double> serial_pressure, serial_gap;
-  const ActiveSetOutcome s = serial.solve(problem, kTolerance, 10000, false, serial_pressure, serial_gap, {});
+  const ActiveSetOutcome s =
+      serial.solve(problem, kSolverTolerance, 10000, false, serial_pressure, serial_gap, {});
   if (rank_of(MPI_COMM_WORLD) != 0) return;
   const auto whole = [&](const std::vector<double>& v) {
     return HeightMap(Eigen::Map<const HeightMap>(v.data(), grid.ny, grid.nx));
@@ -95,11 +96,11 @@ void expect_same_solution(const Case& c, const ActiveSetProblem& problem, Index 
   EXPECT_TRUE(((pressure.array() > 0) == (sp.array() > 0)).all()) << label << ": the contact sets differ";
   EXPECT_GT((sp.array() > 0).count(), 0) << label;
   const double pressure_difference = testing::relative_difference(pressure, sp);
-  EXPECT_LT(pressure_difference, kPressureTolerance) << label;
+  EXPECT_LT(pressure_difference, kActiveSetPressureTolerance) << label;
   // G p - h and the flat's height: relative to the height range.
   const double range = sg.maxCoeff() - sg.minCoeff();
-  EXPECT_LT((gap - sg).abs().maxCoeff(), kPressureTolerance * range) << label;
-  EXPECT_NEAR(d.separation, s.separation, kPressureTolerance * range) << label;
+  EXPECT_LT((gap - sg).abs().maxCoeff(), kActiveSetPressureTolerance * range) << label;
+  EXPECT_NEAR(d.separation, s.separation, kActiveSetPressureTolerance * range) << label;
   std::printf("[ measured ] %s: %lld iterations (%lld coarse), %lld outer, %lld nodes, pressure %.2e\n",
               label.c_str(), static_cast<long long>(d.iterations),
               static_cast<long long>(d.coarse_iterations), static_cast<long long>(d.outer),

@@ -19,7 +19,7 @@ using testing::test_field;
 // passes): each output is the same sum rounded differently, a few ulp times log2(n) per transform, ~1e-15
 // relative here; 1e-12 leaves a wide margin and still catches any misplaced row or mode (errors of O(1)).
 constexpr double kOperatorTolerance = 1e-12;
-constexpr Real kModulus = 1.1e11;
+constexpr Real kOperatorModulus = 1.1e11;
 
 TEST(Slabs, CoverEveryRowOnceInRankOrder) {
   for (Index ny : {1, 2, 5, 64, 97}) {
@@ -74,7 +74,7 @@ TEST(Slabs, AMistakeOnOneRankStopsEveryRankWithItsMessage) {
 // The distributed operator on this rank's slab, gathered on rank 0, against the serial operator there.
 void expect_operator_matches_serial(const Grid& grid) {
   const int rank = rank_of(MPI_COMM_WORLD);
-  DistributedHalfSpace distributed(grid, kModulus, MPI_COMM_WORLD);
+  DistributedHalfSpace distributed(grid, kOperatorModulus, MPI_COMM_WORLD);
   const Slab& slab = distributed.slab();
   const HeightMap pressure = test_field(grid.nx, grid.ny, 11) * 1e6;
   HeightMap local = rows_of(pressure, slab);
@@ -86,10 +86,10 @@ void expect_operator_matches_serial(const Grid& grid) {
   EXPECT_TRUE((again == local).all());
   if (rank == 0) {
     HeightMap serial;
-    make_half_space(grid, kModulus)->apply(pressure, serial);
+    make_half_space(grid, kOperatorModulus)->apply(pressure, serial);
     EXPECT_LT(relative_difference(displacement, serial), kOperatorTolerance)
         << grid.nx << " x " << grid.ny << (grid.periodic ? " periodic" : " non-periodic");
-    const double serial_self = make_half_space_convolution<double>(grid, kModulus)->self_response();
+    const double serial_self = make_half_space_convolution<double>(grid, kOperatorModulus)->self_response();
     EXPECT_NEAR(distributed.self_response(), serial_self, kOperatorTolerance * serial_self);
   }
 }

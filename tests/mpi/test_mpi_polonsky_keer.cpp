@@ -11,7 +11,7 @@
 namespace contactbench::mpi {
 namespace {
 
-constexpr Real kModulus = 1e11;
+constexpr Real kPkModulus = 1e11;
 // The two solvers take the same steps; only the round-off of the operator (~1e-15 relative,
 // test_mpi_half_space) and of the sums (other orders) differs: measured 4e-16..3e-15 of the peak pressure on
 // these loads, on 1 to 3 ranks; 1e-12 as the issue asks. (A harder load of the non-periodic surface, 0.06 E*
@@ -20,7 +20,7 @@ constexpr Real kModulus = 1e11;
 // sums steers them (measured on the non-periodic case at 1e-10: the trajectories part once the change is
 // ~1e-8 and end one iteration and 4e-11 of the peak pressure apart, within what that tolerance promises;
 // bem/solvers/constrained_cg_kernels.hpp says the same of different thread counts).
-constexpr double kPressureTolerance = 1e-12;
+constexpr double kPkPressureTolerance = 1e-12;
 
 BemSolverOptions options_for(SolverKind solver) {
   BemSolverOptions options;
@@ -38,12 +38,12 @@ void expect_same_solutions(const Surface& surface, const std::vector<double>& sl
                            const BemSolverOptions& options) {
   const Grid& grid = surface.grid();
   const Slab slab = slab_of(grid, MPI_COMM_WORLD);
-  DistributedBemSolver distributed(grid, testing::rows_of(surface.heights(), slab), kModulus, MPI_COMM_WORLD,
-                                   options);
-  BemSolver serial(surface, kModulus, options);
+  DistributedBemSolver distributed(grid, testing::rows_of(surface.heights(), slab), kPkModulus,
+                                   MPI_COMM_WORLD, options);
+  BemSolver serial(surface, kPkModulus, options);
   const Real slope = spectral_moments(surface).rms_gradient();
   for (const double fraction : slope_fractions) {
-    const Real load = fraction * kModulus * slope;  // about 2 * fraction of the area in contact
+    const Real load = fraction * kPkModulus * slope;  // about 2 * fraction of the area in contact
     const DistributedContactSolution& d = distributed.solve(load);
     const HeightMap pressure = gather_to_root(d.pressure, slab, MPI_COMM_WORLD);
     const HeightMap gap = gather_to_root(d.gap, slab, MPI_COMM_WORLD);
@@ -61,11 +61,11 @@ void expect_same_solutions(const Surface& surface, const std::vector<double>& sl
       continue;
     }
     EXPECT_GT(s.contact_points, 0) << what;
-    EXPECT_LT(testing::relative_difference(pressure, s.pressure), kPressureTolerance) << what;
+    EXPECT_LT(testing::relative_difference(pressure, s.pressure), kPkPressureTolerance) << what;
     // The gap and the flat's height: differences of u - h, so relative to the surface's height range.
     const Real range = surface.heights().maxCoeff() - surface.heights().minCoeff();
-    EXPECT_LT((gap - s.gap).abs().maxCoeff(), kPressureTolerance * range) << what;
-    EXPECT_NEAR(d.separation, s.separation, kPressureTolerance * range) << what;
+    EXPECT_LT((gap - s.gap).abs().maxCoeff(), kPkPressureTolerance * range) << what;
+    EXPECT_NEAR(d.separation, s.separation, kPkPressureTolerance * range) << what;
     EXPECT_NEAR(d.residual, s.residual, 1e-9) << what;
   }
 }
@@ -101,10 +101,10 @@ TEST(DistributedPreconditionedCg, IsNotThePlainIteration) {
   // The comparisons above would pass if both solvers ignored options.solver; the filter must show.
   const Surface surface = periodic_surface();
   const Slab slab = slab_of(surface.grid(), MPI_COMM_WORLD);
-  const Real load = 0.01 * kModulus * spectral_moments(surface).rms_gradient();
-  DistributedBemSolver plain_solver(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
+  const Real load = 0.01 * kPkModulus * spectral_moments(surface).rms_gradient();
+  DistributedBemSolver plain_solver(surface.grid(), testing::rows_of(surface.heights(), slab), kPkModulus,
                                     MPI_COMM_WORLD, plain());
-  DistributedBemSolver filtered(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
+  DistributedBemSolver filtered(surface.grid(), testing::rows_of(surface.heights(), slab), kPkModulus,
                                 MPI_COMM_WORLD, options_for(SolverKind::preconditioned_cg));
   EXPECT_LT(filtered.solve(load).iterations, plain_solver.solve(load).iterations);
 }
@@ -142,7 +142,7 @@ TEST(DistributedBemSolver, ZeroLoadTouchesNothing) {
   const Surface surface = generate_surface({.nx = 32, .ny = 32, .lx = 1e-4, .ly = 1e-4, .periodic = true},
                                            {.sigma = 1e-6, .hurst = 0.7, .qr = 1e5, .qs = std::nullopt}, 2);
   const Slab slab = slab_of(surface.grid(), MPI_COMM_WORLD);
-  DistributedBemSolver solver(surface.grid(), testing::rows_of(surface.heights(), slab), kModulus,
+  DistributedBemSolver solver(surface.grid(), testing::rows_of(surface.heights(), slab), kPkModulus,
                               MPI_COMM_WORLD, plain());
   const DistributedContactSolution& s = solver.solve(0);
   EXPECT_EQ(s.contact_points, 0);
@@ -164,10 +164,10 @@ TEST(DistributedBemSolver, EstimatesItsMemoryBeforeAllocating) {
            {SolverKind::polonsky_keer, SolverKind::preconditioned_cg, SolverKind::active_set}) {
         BemSolverOptions options = options_for(kind);
         options.max_iterations = 3;  // what is held, not the solution: a few iterations of a light load
-        DistributedBemSolver solver(grid, local, kModulus, MPI_COMM_WORLD, options);
+        DistributedBemSolver solver(grid, local, kPkModulus, MPI_COMM_WORLD, options);
         // After a cold solve: active_set makes its coarse levels for the cold start only, so bytes() (the
         // most held at once) knows their peak once they have run.
-        solver.solve(1e-4 * kModulus);
+        solver.solve(1e-4 * kPkModulus);
         const std::size_t held = solver.bytes();
         const std::size_t estimate = DistributedBemSolver::estimated_bytes(grid, slab.points(), options);
         EXPECT_GE(estimate, held) << grid.nx << " x " << grid.ny << (periodic ? " periodic" : "")
@@ -185,7 +185,7 @@ TEST(DistributedBemSolver, RefusesWhatIsNotDistributedYetNamingIt) {
   BemSolverOptions options = plain();
   options.hardness = 1e9;
   try {
-    DistributedBemSolver solver(grid, local, kModulus, MPI_COMM_WORLD, options);
+    DistributedBemSolver solver(grid, local, kPkModulus, MPI_COMM_WORLD, options);
     ADD_FAILURE() << "a hardness was accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("hardness"), std::string::npos) << e.what();
@@ -193,7 +193,7 @@ TEST(DistributedBemSolver, RefusesWhatIsNotDistributedYetNamingIt) {
   options = plain();
   options.single_precision = true;
   options.tolerance = 1e-6;
-  EXPECT_THROW(DistributedBemSolver(grid, local, kModulus, MPI_COMM_WORLD, options), Error);
+  EXPECT_THROW(DistributedBemSolver(grid, local, kPkModulus, MPI_COMM_WORLD, options), Error);
 }
 
 }  // namespace
