@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Runs every example of examples/python/ as a user would (examples/python/*.py say how), each in a fresh
-# temporary working folder, which is all they may write to (their figures go to the working folder): the
-# examples must run on the current module, and running them must leave the source tree as it was.
+# temporary working folder, which is all they may write to: the examples must run on the current module, and
+# running them must leave the source tree as it was. Without --out the tutorial's steps put their plots in a new
+# temporary folder (examples/python/tutorial.py), which TMPDIR places inside the working folder, so that it goes
+# with it (they had left a folder in /tmp on every run).
 # Usage: tests/run_python_examples.sh PYTHON MODULE_DIR   (registered as the CTest test python_examples)
 set -euo pipefail
 python=${1:?usage: run_python_examples.sh PYTHON MODULE_DIR}
@@ -18,7 +20,7 @@ status=0
 for example in "$source_dir"/examples/python/*.py; do
   work=$(mktemp -d "${TMPDIR:-/tmp}/contactbench-example.XXXXXX")
   echo "python_examples: $(basename "$example") in $work"
-  if ! (cd "$work" && PYTHONPATH="$module" OMP_WAIT_POLICY=PASSIVE MPLBACKEND=Agg "$python" "$example"); then
+  if ! (cd "$work" && TMPDIR="$work" PYTHONPATH="$module" OMP_WAIT_POLICY=PASSIVE MPLBACKEND=Agg "$python" "$example"); then
     echo "python_examples: $(basename "$example") failed" >&2
     status=1
   fi
