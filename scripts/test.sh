@@ -13,7 +13,8 @@
 #     fuzz run below builds nothing more: one clang build serves both. Timed from fresh clones with
 #     `/usr/bin/time -v .ci/run`: before (a g++ build for the suite, a clang build for the fuzzers; bb46578) the
 #     sanitizer build, suite and fuzz stage took 18.2 + 7.6 + 8.1 min of 56.5; after (b8a2e50, a slower day:
-#     the release build 13.6 min against 11.0) 16.3 + 7.9 + 0.7 of 50.5;
+#     the release build 13.6 min against 11.0) 16.3 + 7.9 + 0.7 of 50.5; with unity builds (7eae334, the
+#     builds 8.5, 4.5 and 9.8 min) 9.8 + 7.8 + 0.6 of 35.9;
 #   - CB_CI_DEBUG=1 (off in .ci/run since the asan preset has the assertions): the whole suite of the debug
 #     preset (no optimisation): 2-3 minutes of tests on 2 cores after a build of 5-6 minutes;
 #   - a short fuzz run of each parser (scripts/fuzz.sh, from the asan preset's build; seeded, CB_FUZZ_SEED).
