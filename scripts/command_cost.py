@@ -22,7 +22,10 @@ Measures, interleaved (cold, warm, off, cold, warm, off, ...) so that the machin
      (getrusage's minor faults of the child: a first touch of a 4 KiB page each).
 Medians of the repetitions; the machine is shared, so the load average is recorded beside them.
 --baseline: another contactbench program (an older commit's build, say) measured the same way, interleaved
-with this build's runs, so that the tables give the ratio of the two in the same run, under the same load.
+with this build's runs, so that the tables give the ratio of the two in the same run, under the same load. A
+baseline older than the wisdom file (no --fftw-wisdom, no --progress: before 5ffecf8, e.g. the commit issue 42
+was measured at, 6cc3e84) runs the same command in each case, planning as it always did; its solve is the CSV's
+solve_seconds, its planning not reported.
 """
 import argparse
 import json
@@ -64,6 +67,18 @@ def progress_stages(stderr):
     return stages
 
 
+# Whether `program` knows --fftw-wisdom and --progress (the wisdom file came with both, issue 42).
+def knows_wisdom(program):
+    return "--fftw-wisdom" in subprocess.run([program, "bem", "--help"], capture_output=True, text=True).stdout
+
+
+# The solve seconds of the CSV a `bem` run wrote (its last column, solve_seconds, summed over the loads).
+def csv_solve_seconds(path):
+    rows = [line for line in path.read_text().splitlines() if line and not line.startswith("#")]
+    column = rows[0].split(",").index("solve_seconds")
+    return sum(float(row.split(",")[column]) for row in rows[1:])
+
+
 def stage_seconds(summary, prefix):
     return sum(s["seconds"] for s in summary["stages"] if s["name"].startswith(prefix))
 
@@ -100,6 +115,7 @@ def main():
         if args.baseline:
             programs["baseline"] = Path(args.baseline).resolve()
         cases = [(program, case) for program in programs for case in ("cold", "warm", "none")]
+        wisdom_flags = {program: knows_wisdom(binary) for program, binary in programs.items()}
         scene = ROOT / "scenes" / "paper" / "surface_A.toml"
         bem_wall = {key: [] for key in cases}
         bem_stages = {key: [] for key in cases}
@@ -109,14 +125,16 @@ def main():
         scene_wall = {key: [] for key in cases}
         for repetition in range(args.repetitions):
             for program, binary in programs.items():
+                csv = work / f"bem_{program}.csv"
                 bem = [binary, "bem", surface, "--periodic", "--loads", "0.000478", "--threads", threads,
-                       "--progress", "--out", work / f"bem_{program}.csv"]
+                       "--out", csv] + (["--progress"] if wisdom_flags[program] else [])
                 wisdom = work / f"bem_wisdom_{program}_{repetition}.txt"
                 for case, flag in (("cold", str(wisdom)), ("warm", str(wisdom)), ("none", "none")):
                     loads.append(os.getloadavg()[0])
-                    wall, done = run(bem + ["--fftw-wisdom", flag], env)
+                    wall, done = run(bem + (["--fftw-wisdom", flag] if wisdom_flags[program] else []), env)
                     bem_wall[program, case].append(wall)
                     stages = progress_stages(done.stderr)
+                    stages["solve"] = csv_solve_seconds(csv)
                     stages["rest"] = wall - stages["surface"] - stages["moments"] - stages["bem"]
                     bem_stages[program, case].append(stages)
                     bem_faults[program, case].append(done.page_faults)
@@ -126,7 +144,8 @@ def main():
                 for case, flag in (("cold", str(wisdom)), ("warm", str(wisdom)), ("none", "none")):
                     out = work / f"run_{program}_{case}_{repetition}"
                     loads.append(os.getloadavg()[0])
-                    wall, _ = run(scene_run + ["--out", out, "--fftw-wisdom", flag], env)
+                    wall, _ = run(scene_run + ["--out", out] +
+                                  (["--fftw-wisdom", flag] if wisdom_flags[program] else []), env)
                     summary = json.loads((out / "summary.json").read_text())
                     scene_wall[program, case].append(wall)
                     scene_bem[program, case].append(stage_seconds(summary, "bem"))
@@ -147,6 +166,10 @@ def main():
 
     baseline_note = (f" Baseline (--baseline, interleaved with this build's runs): `{baseline_version}`; "
                      "the ratio is this build's median over the baseline's." if args.baseline else "")
+    if args.baseline and not wisdom_flags["baseline"]:
+        baseline_note += (" The baseline is older than the wisdom file: it runs the same command in every case "
+                          "(no --fftw-wisdom, no --progress), measuring its plans in every run; its stages "
+                          "other than the solve (the CSV's solve_seconds) are not reported (0 below).")
 
     lines = [
         "# What a whole command costs: FFTW planning with and without wisdom kept between runs",
