@@ -12,6 +12,9 @@ namespace contactbench::mpi {
 
 namespace {
 
+// What the MPI counts of this file's exchanges are named by in an overflow error (mpi/message_count.hpp).
+constexpr const char* kConvolutionExchange = "an exchange of the distributed convolution";
+
 // How many rows two row ranges share, below `limit`.
 Index shared_rows(Index start_a, Index count_a, Index start_b, Index count_b, Index limit) {
   return std::max<Index>(std::min({start_a + count_a, start_b + count_b, limit}) - std::max(start_a, start_b),
@@ -53,10 +56,10 @@ DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MP
     const Index out =
         shared_rows(slab_.start, slab_.count, transform_slabs[r].start, transform_slabs[r].count, ny);
     const Index in = shared_rows(grid_slabs[r].start, grid_slabs[r].count, mine.start, mine.count, ny);
-    send_counts_.push_back(message_count(out * nx, "an exchange of the distributed convolution"));
-    send_offsets_.push_back(message_count(sent, "an exchange of the distributed convolution"));
-    receive_counts_.push_back(message_count(in * nx, "an exchange of the distributed convolution"));
-    receive_offsets_.push_back(message_count(received, "an exchange of the distributed convolution"));
+    send_counts_.push_back(message_count(out * nx, kConvolutionExchange));
+    send_offsets_.push_back(message_count(sent, kConvolutionExchange));
+    receive_counts_.push_back(message_count(in * nx, kConvolutionExchange));
+    receive_offsets_.push_back(message_count(received, kConvolutionExchange));
     sent += out * nx;
     received += in * nx;
   }

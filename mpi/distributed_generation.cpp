@@ -18,6 +18,9 @@ namespace contactbench::mpi {
 
 namespace {
 
+// What the MPI counts of this file's exchanges are named by in an overflow error (mpi/message_count.hpp).
+constexpr const char* kGenerationExchange = "an exchange of the distributed generation";
+
 constexpr Index kChunk = ReproducibleInverseFft2d::kLinesPerChunk;
 
 // The chunks of kx columns rank r transforms: [first, last) of ceil((nx/2 + 1) / kChunk), split evenly.
@@ -117,7 +120,7 @@ HeightMap generate_surface_slab(const Grid& grid, const SelfAffinePsd& psd, std:
   Index sent = 0, received = 0;
   for (int r = 0; r < ranks; ++r) {
     const Slab& destination = slabs[static_cast<std::size_t>(r)];
-    send_offsets.push_back(message_count(2 * sent, "an exchange of the distributed generation"));
+    send_offsets.push_back(message_count(2 * sent, kGenerationExchange));
     for (Index chunk = mine.first; chunk < mine.last; ++chunk) {
       const Index column = chunk * kChunk, width = std::min(kChunk, nxh - column);
       const Complex* block = blocks.data() + ny * (column - first_column);
@@ -125,13 +128,11 @@ HeightMap generate_surface_slab(const Grid& grid, const SelfAffinePsd& psd, std:
         for (Index j = 0; j < width; ++j)
           send[static_cast<std::size_t>(sent++)] = block[row * width + j];
     }
-    send_counts.push_back(message_count(2 * sent, "an exchange of the distributed generation") -
-                          send_offsets.back());
+    send_counts.push_back(message_count(2 * sent, kGenerationExchange) - send_offsets.back());
     const ChunkRange theirs = chunks_of(r, ranks, chunks);
     const Index their_columns = std::min(theirs.last * kChunk, nxh) - std::min(theirs.first * kChunk, nxh);
-    receive_offsets.push_back(message_count(2 * received, "an exchange of the distributed generation"));
-    receive_counts.push_back(
-        message_count(2 * slab.count * their_columns, "an exchange of the distributed generation"));
+    receive_offsets.push_back(message_count(2 * received, kGenerationExchange));
+    receive_counts.push_back(message_count(2 * slab.count * their_columns, kGenerationExchange));
     received += slab.count * their_columns;
   }
   std::vector<Complex> receive(static_cast<std::size_t>(std::max<Index>(received, 1)));

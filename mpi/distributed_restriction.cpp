@@ -14,6 +14,9 @@ namespace contactbench::mpi {
 
 namespace {
 
+// What the MPI counts of this file's exchanges are named by in an overflow error (mpi/message_count.hpp).
+constexpr const char* kRestrictionExchange = "the coarse level's restriction";
+
 // Rows [start, start + count) intersected with [other_start, other_start + other_count): how many.
 Index overlap(Index start, Index count, Index other_start, Index other_count) {
   return std::max<Index>(0,
@@ -42,15 +45,15 @@ HeightMap restrict_to_coarse_slab(const Grid& grid, const HeightMap& local, MPI_
   for (std::size_t r = 0; r < ranks; ++r) {
     const Slab& needs = coarse_slabs[r];
     const Index sent = overlap(fine.start, fine.count, 2 * needs.start, 2 * needs.count);
-    send_counts[r] = message_count(sent * nx, "the coarse level's restriction");
+    send_counts[r] = message_count(sent * nx, kRestrictionExchange);
     send_offsets[r] = message_count(sent > 0 ? (std::max(fine.start, 2 * needs.start) - fine.start) * nx : 0,
-                                    "the coarse level's restriction");
+                                    kRestrictionExchange);
     const Slab& has = fine_slabs[r];
     const Index received = overlap(has.start, has.count, 2 * coarse.start, 2 * coarse.count);
-    receive_counts[r] = message_count(received * nx, "the coarse level's restriction");
+    receive_counts[r] = message_count(received * nx, kRestrictionExchange);
     receive_offsets[r] =
         message_count(received > 0 ? (std::max(has.start, 2 * coarse.start) - 2 * coarse.start) * nx : 0,
-                      "the coarse level's restriction");
+                      kRestrictionExchange);
   }
   std::vector<double> fine_rows(static_cast<std::size_t>(std::max<Index>(2 * coarse.count * nx, 1)));
   MPI_Alltoallv(local.data(), send_counts.data(), send_offsets.data(), MPI_DOUBLE, fine_rows.data(),

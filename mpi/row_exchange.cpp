@@ -11,6 +11,9 @@ namespace contactbench::mpi {
 
 namespace {
 
+// What the MPI counts of this file's exchanges are named by in an overflow error (mpi/message_count.hpp).
+constexpr const char* kRowExchange = "a row exchange";
+
 // The rank owning global row y (slabs in rank order), or -1.
 int owner_of(const std::vector<Slab>& layout, Index y) {
   for (std::size_t r = 0; r < layout.size(); ++r)
@@ -48,8 +51,8 @@ RowExchange::RowExchange(const std::vector<Slab>& layout, int rank,
     from[static_cast<std::size_t>(owner_of(layout, y))].push_back(y);
   Index received = 0;
   for (std::size_t r = 0; r < ranks; ++r) {
-    receive_counts_.push_back(message_count(static_cast<Index>(from[r].size()) * nx, "a row exchange"));
-    receive_offsets_.push_back(message_count(received * nx, "a row exchange"));
+    receive_counts_.push_back(message_count(static_cast<Index>(from[r].size()) * nx, kRowExchange));
+    receive_offsets_.push_back(message_count(received * nx, kRowExchange));
     for (const Index y : from[r])
       received_at_[static_cast<std::size_t>(y)] = received++;
   }
@@ -63,8 +66,8 @@ RowExchange::RowExchange(const std::vector<Slab>& layout, int rank,
           send_rows_.push_back(y - slab_.start);
           ++rows;
         }
-    send_counts_.push_back(message_count(rows * nx, "a row exchange"));
-    send_offsets_.push_back(message_count(sent * nx, "a row exchange"));
+    send_counts_.push_back(message_count(rows * nx, kRowExchange));
+    send_offsets_.push_back(message_count(sent * nx, kRowExchange));
     sent += rows;
   }
   send_buffer_.resize(static_cast<std::size_t>(std::max<Index>(sent * nx, 1)));
