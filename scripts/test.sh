@@ -38,8 +38,13 @@ run_suite() {
     configure=(-DCB_BUILD_BENCHMARKS=OFF)
     # The whole scenes and command lines on 3 ranks too: the release suite has just run them, and under the
     # sanitizers they were 3 of the asan suite's 15 minutes of test time (2 ranks run here, and the 3-rank
-    # unit tests of the uneven slabs, mpi_ranks_3).
-    skip='^(format_check|layer_check|mpi_scenes_ranks_3|mpi_cli_ranks_3)$'
+    # unit tests of the uneven slabs, mpi_ranks_3). And the two longest numerical claims, which the release
+    # suite has just checked and whose code other tests run under the sanitizers: the declared load path's
+    # cost against cold solves (86 s under ASan; LoadPath.EveryStartGivesTheColdAnswers runs every start) and
+    # the pull-off's location (45 s; the other AdhesivePath tests run the path).
+    skip='^(format_check|layer_check|mpi_scenes_ranks_3|mpi_cli_ranks_3'
+    skip+='|LoadPathDeclared.TheDefaultSolversCurveCostsNoMoreThanColdSolves'
+    skip+='|AdhesivePath.LocatesThePullOffBetweenItsSamples)$'
   fi
   [[ "$name" == asan ]] && scripts/install-deps.sh asan  # clang 14, its sanitizer runtimes and libomp
   cmake --preset "$name" "${configure[@]}"
