@@ -28,6 +28,7 @@
 #include "contactbench/mpi/distributed_contact_statistics.hpp"
 #include "contactbench/mpi/distributed_generation.hpp"
 #include "contactbench/mpi/distributed_mirror.hpp"
+#include "contactbench/mpi/distributed_refinement.hpp"
 #include "contactbench/mpi/distributed_sweep.hpp"
 #include "contactbench/mpi/environment.hpp"
 #include "contactbench/mpi/slab.hpp"
@@ -46,7 +47,8 @@ enum class Job : int {
   surface = 3,
   mean_gaps = 4,
   gather_surface = 5,
-  read_surface = 6
+  read_surface = 6,
+  refine = 7
 };
 
 const MPI_Comm kWorld = MPI_COMM_WORLD;
@@ -111,13 +113,22 @@ std::optional<ResidentSlab>& resident_slab() {
   return slab;
 }
 
-// The slab a stage on `grid` solves: the resident one, whose grid it is but for the boundary the stage
-// chose. Every rank has the same resident grid, so every rank passes or throws alike.
-const HeightMap& resident_heights(const Grid& grid) {
-  const std::optional<ResidentSlab>& slab = resident_slab();
+// This rank's slab of the surface the last stage that refined asked for (Job::refine), kept until the next
+// refinement or the next scene's surface: the stage solves or sweeps it, and no rank holds it whole.
+std::optional<ResidentSlab>& refined_slab() {
+  static std::optional<ResidentSlab> slab;
+  return slab;
+}
+
+// The slab a stage on `grid` solves: the scene's resident one or the last refined one (`refined`), whose
+// grid it is but for the boundary the stage chose. Every rank has the same slabs' grids, so every rank
+// passes or throws alike.
+const HeightMap& resident_heights(const Grid& grid, bool refined) {
+  const std::optional<ResidentSlab>& slab = refined ? refined_slab() : resident_slab();
   if (!slab || slab->grid.nx != grid.nx || slab->grid.ny != grid.ny || slab->grid.lx != grid.lx ||
       slab->grid.ly != grid.ly)
-    throw Error("internal: a distributed stage asked for a resident surface of another grid");
+    throw Error(std::string("internal: a distributed stage asked for a ") +
+                (refined ? "refined" : "resident") + " surface of another grid");
   return slab->local;
 }
 
@@ -151,7 +162,8 @@ ResidentSurface surface_job(const GeneratedSurfaceSpec* spec) {
   if (has_qs) psd.qs = qs;
   psd.anisotropy = in.number();
   resident_slab().reset();  // the last scene's, freed before the new one is made
-  validate(psd, grid);      // the serial generator's refusal, on every rank alike
+  refined_slab().reset();
+  validate(psd, grid);  // the serial generator's refusal, on every rank alike
   return keep_resident(grid, mpi::generate_surface_slab(grid, psd, seed, kWorld));
 }
 
@@ -167,6 +179,7 @@ ResidentSurface read_surface_job(TopographyRowReader* reader) {
   Unpacker in(values);
   const Grid grid = in.grid();
   resident_slab().reset();  // the last scene's, freed before the new one is made
+  refined_slab().reset();
   const auto slabs = mpi::all_slabs(grid.nx, grid.ny, kWorld);
   const int me = mpi::rank_of(kWorld);
   HeightMap local(slabs[static_cast<std::size_t>(me)].count, grid.nx);
@@ -231,6 +244,15 @@ ResidentSurface keep_resident(const Grid& grid, HeightMap local) {
   return summary;
 }
 
+// The scene's surface Fourier-refined on the ranks' slabs (mpi/distributed_refinement.hpp: one process's
+// refinement bit for bit), kept for the stage that asked. Rank 0 passes the scene's whole surface (its
+// coefficients are taken there, on rank 0's threads) and the finer size; the others nothing.
+void refine_job(const Surface* surface, Index nx, Index ny, int threads) {
+  refined_slab().reset();  // the last stage's, freed before the new one is made
+  mpi::RefinedSlab refined = mpi::refine_surface_slab(surface, nx, ny, threads, kWorld);
+  refined_slab() = ResidentSlab{refined.grid, std::move(refined.local)};
+}
+
 // The resident surface gathered whole on rank 0 (a method that reads the whole heights): 8 B a point there,
 // the same bits as the slabs (centred on the slabs' mean, so one process's heights to the last bit).
 HeightMap gather_surface_job() {
@@ -273,7 +295,9 @@ struct BemRequest {
   BemSettings settings;  // its solve settings the distributed solver takes (app/methods/bem_settings.hpp)
   std::optional<Real> hardness;  // the interface's; active_set only (bem_refusal)
   int threads = 1;
-  bool resident = false;  // the heights are the resident slabs (Job::surface), not scattered from rank 0
+  bool resident =
+      false;  // the heights are on the slabs (Job::surface or Job::refine), not scattered from rank 0
+  bool refined = false;  // with `resident`: the last refined slabs (Job::refine), not the scene's
   // Bytes of whole-surface heights rank 0 holds during the stage (the scene's and the stage's copies),
   // counted in the memory a rank held.
   double root_surface_bytes = 0;
@@ -294,11 +318,11 @@ BemRequest broadcast_request(const BemRequest& request) {
     // The boundary as resolved: a setting without a default value, which pack_settings leaves to rank 0.
     packed.push_back(request.settings.mirrored.value_or(false) ? 1.0 : 0.0);
     packed.insert(packed.end(), {request.hardness ? 1.0 : 0.0, request.hardness.value_or(0.0)});
-    packed.insert(
-        packed.end(),
-        {static_cast<double>(request.threads), request.resident ? 1.0 : 0.0, request.root_surface_bytes,
-         request.write_fields ? 1.0 : 0.0, static_cast<double>(request.measured_load),
-         static_cast<double>(request.distribution_bins), static_cast<double>(request.mean_pressures.size())});
+    packed.insert(packed.end(),
+                  {static_cast<double>(request.threads), request.resident ? 1.0 : 0.0,
+                   request.refined ? 1.0 : 0.0, request.root_surface_bytes, request.write_fields ? 1.0 : 0.0,
+                   static_cast<double>(request.measured_load), static_cast<double>(request.distribution_bins),
+                   static_cast<double>(request.mean_pressures.size())});
     packed.insert(packed.end(), request.mean_pressures.begin(), request.mean_pressures.end());
     packed.push_back(static_cast<double>(request.connectivities.size()));
     packed.insert(packed.end(), request.connectivities.begin(), request.connectivities.end());
@@ -315,6 +339,7 @@ BemRequest broadcast_request(const BemRequest& request) {
   if (capped) r.hardness = hardness;
   r.threads = static_cast<int>(in.integer());
   r.resident = in.flag();
+  r.refined = in.flag();
   r.root_surface_bytes = in.number();
   r.write_fields = in.flag();
   r.measured_load = in.integer();
@@ -369,7 +394,7 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
   const mpi::Slab slab = mpi::slab_of(grid, kWorld);
   HeightMap scattered;
   if (!request.resident) scattered = mpi::scatter_from_root(heights ? *heights : HeightMap(), slab, kWorld);
-  const HeightMap& local = request.resident ? resident_heights(grid) : scattered;
+  const HeightMap& local = request.resident ? resident_heights(grid, request.refined) : scattered;
   // boundary = "mirrored": the slabs solve the patch's periodic even extension, made from the patch's slabs
   // (mpi/distributed_mirror.hpp), and everything after a solve is taken on the patch, as one process does
   // (app/serial_runner.cpp): its fields cut back onto the patch's slabs, counted and labelled there.
@@ -456,12 +481,13 @@ SolvedLoads bem_job(const BemRequest& root_request, const HeightMap* heights, co
 
 // ---- The sweep job ---------------------------------------------------------------------------------------
 
-SweepCurve sweep_job(const Grid& root_grid, const HeightMap* heights, const SweepLevels& root_levels,
-                     const Topology& root_topology) {
+SweepCurve sweep_job(const Grid& root_grid, const HeightMap* heights, bool refined,
+                     const SweepLevels& root_levels, const Topology& root_topology) {
   std::vector<double> packed;
   if (is_root()) {
     pack_grid(packed, root_grid);
-    packed.push_back(heights ? 0.0 : 1.0);  // no heights: the resident slabs
+    packed.push_back(heights ? 0.0 : 1.0);  // no heights: the slabs
+    packed.push_back(refined ? 1.0 : 0.0);  // the last refined slabs, not the scene's
     packed.insert(packed.end(), {static_cast<double>(static_cast<int>(root_levels.kind)),
                                  static_cast<double>(root_levels.count),
                                  root_topology.connectivity == Connectivity::eight ? 8.0 : 4.0,
@@ -471,6 +497,7 @@ SweepCurve sweep_job(const Grid& root_grid, const HeightMap* heights, const Swee
   Unpacker in(values);
   const Grid grid = in.grid();
   const bool resident = in.flag();
+  const bool refined_slabs = in.flag();
   SweepLevels levels;
   levels.kind = static_cast<SweepLevels::Kind>(static_cast<int>(in.integer()));
   levels.count = in.integer();
@@ -481,8 +508,8 @@ SweepCurve sweep_job(const Grid& root_grid, const HeightMap* heights, const Swee
   const mpi::Slab slab = mpi::slab_of(grid, kWorld);
   HeightMap scattered;
   if (!resident) scattered = mpi::scatter_from_root(heights ? *heights : HeightMap(), slab, kWorld);
-  return mpi::distributed_sweep(grid, resident ? resident_heights(grid) : scattered, levels, topology,
-                                kWorld);
+  return mpi::distributed_sweep(grid, resident ? resident_heights(grid, refined_slabs) : scattered, levels,
+                                topology, kWorld);
 }
 
 // The other ranks: each job rank 0 announces, until it says stop. A job that fails fails on every rank at
@@ -495,6 +522,7 @@ void serve() {
       switch (static_cast<Job>(code)) {
         case Job::stop:
           resident_slab().reset();
+          refined_slab().reset();
           return;
         case Job::surface:
           surface_job(nullptr);
@@ -512,7 +540,10 @@ void serve() {
           bem_job({}, nullptr, "", {}, {});
           break;
         case Job::sweep:
-          sweep_job({}, nullptr, {}, {});
+          sweep_job({}, nullptr, false, {}, {});
+          break;
+        case Job::refine:
+          refine_job(nullptr, 0, 0, 1);
           break;
       }
     } catch (const std::exception&) {
@@ -624,6 +655,7 @@ class DistributedRunner final : public StageRunner {
                        .hardness = stage.hardness,
                        .threads = context.threads,
                        .resident = solved.whole == nullptr,
+                       .refined = solved.refined_slabs,
                        .root_surface_bytes = static_cast<double>(solved.root_bytes),
                        .write_fields = !fields.empty(),
                        .measured_load = measured_load,
@@ -648,7 +680,14 @@ class DistributedRunner final : public StageRunner {
   SweepCurve sweep(const StageSurface& surface, const SweepLevels& levels, const Topology& topology,
                    int) const override {
     announce(Job::sweep);
-    return sweep_job(surface.grid, surface.whole ? &surface.whole->heights() : nullptr, levels, topology);
+    return sweep_job(surface.grid, surface.whole ? &surface.whole->heights() : nullptr, surface.refined_slabs,
+                     levels, topology);
+  }
+
+  bool refine_on_slabs(const Surface& surface, Index nx, Index ny, int threads) const override {
+    announce(Job::refine);
+    refine_job(&surface, nx, ny, threads);
+    return true;
   }
 
  private:
@@ -695,6 +734,7 @@ int run_as_mpi_ranks(int& argc, char**& argv, const std::function<int(const Stag
   }
   announce(Job::stop);
   resident_slab().reset();
+  refined_slab().reset();
   return status;
 }
 

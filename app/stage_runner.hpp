@@ -40,14 +40,17 @@ struct SolvedLoads {
   std::size_t bytes_per_rank = 0;  // the largest memory one rank held; 0 when solved by one process
 };
 
-// The surface a stage solves or sweeps: whole in this process, or the scene's surface resident on the ranks'
-// slabs (SceneSurface::resident), of which this process has the grid only.
+// The surface a stage solves or sweeps: whole in this process, or on the ranks' slabs (the scene's resident
+// surface, SceneSurface::resident, or a refinement of it, refine_on_slabs), of which this process has the
+// grid only.
 struct StageSurface {
   Grid grid;                       // as solved: its periodicity the stage's boundary
-  const Surface* whole = nullptr;  // null: the resident slabs (a distributed runner's only)
+  const Surface* whole = nullptr;  // null: slabs on the ranks (a distributed runner's only), which ones below
   // Bytes of whole-surface heights this process holds while the stage runs (the scene's, and the stage's
   // refined or re-flagged copy): what a distributed runner adds to rank 0's memory.
   std::size_t root_bytes = 0;
+  // With `whole` null: the slabs of the last refine_on_slabs (true) or the scene's resident slabs (false).
+  bool refined_slabs = false;
 };
 
 class StageRunner {
@@ -81,6 +84,14 @@ class StageRunner {
   // format or reading options need the whole surface (core/topography_rows.hpp): then it is read whole here.
   virtual std::optional<ResidentSurface> read_resident_surface(const FileSurfaceSpec&, int) const {
     return std::nullopt;
+  }
+  // The scene's surface Fourier-refined to nx x ny (core/generation.hpp, refine), made slab by slab where
+  // the stages run and kept there (the last such surface freed) for the stage that asked: true when the
+  // runner did, and the stage then passes a StageSurface with refined_slabs; false when the runner is one
+  // process, which refines here. `surface`: the scene's surface, whole in this process.
+  virtual bool refine_on_slabs(const Surface& /*surface*/, Index /*nx*/, Index /*ny*/,
+                               int /*threads*/) const {
+    return false;
   }
   // Every load of `mean_pressures` [Pa] (ascending) on the grid of `solved`, warm-started in order; with a
   // non-empty `fields` prefix the pressure and gap of each load written as it is solved (app/stages.hpp).

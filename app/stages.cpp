@@ -40,6 +40,61 @@ std::size_t bytes_of(const std::optional<Surface>& surface) {
   return surface ? bytes_of(*surface) : 0;
 }
 
+// The surface a stage works on, made from the scene's: whole in this process (the scene's own, or a copy
+// the stage owns), or on the ranks' slabs (the scene's resident ones, or a refinement the runner keeps
+// there), of which this process has the grid.
+class StageHeights {
+ public:
+  // The scene's surface as it is: its resident slabs stay on the ranks.
+  static StageHeights of_scene(const SceneSurface& scene) {
+    StageHeights h;
+    h.grid_ = scene.grid();
+    if (!scene.resident()) h.whole_ = &scene.whole();
+    return h;
+  }
+  // The scene's surface Fourier-refined to nx x ny: on the ranks' slabs when the runner makes it there (no
+  // rank holds it whole, docs/mpi.md), else here.
+  static StageHeights refined(const SceneSurface& scene, Index nx, Index ny, const StageContext& context) {
+    StageHeights h;
+    const Surface& surface = scene.whole();
+    if (context.runner().refine_on_slabs(surface, nx, ny, context.threads)) {
+      h.grid_ = surface.grid();  // core's refine: the same sizes, nx x ny points, periodic
+      h.grid_.nx = nx;
+      h.grid_.ny = ny;
+      h.grid_.periodic = true;
+      h.refined_slabs_ = true;
+      return h;
+    }
+    h.keep(refine(surface, nx, ny, context.threads));
+    return h;
+  }
+
+  const Grid& grid() const { return grid_; }
+  // The boundary the stage solves with (a whole surface copied with it when it differs).
+  void set_periodic(bool periodic) {
+    if (grid_.periodic == periodic) return;
+    grid_.periodic = periodic;
+    if (whole_) keep(whole_->with_periodic(periodic));
+  }
+  // Bytes of whole heights the stage itself holds here.
+  std::size_t owned_bytes() const { return bytes_of(owned_); }
+  StageSurface view(std::size_t root_bytes) const {
+    return {.grid = grid_, .whole = whole_, .root_bytes = root_bytes, .refined_slabs = refined_slabs_};
+  }
+
+ private:
+  void keep(Surface surface) {
+    owned_ = std::move(surface);
+    whole_ = &*owned_;
+    grid_ = owned_->grid();
+  }
+
+  Grid grid_;
+  const Surface* whole_ = nullptr;
+  std::optional<Surface> owned_;
+  bool refined_slabs_ = false;
+};
+
 }  // namespace
 
 const StageRunner& StageContext::runner() const {
@@ -126,13 +181,11 @@ SweepProducts run_sweep_stage(const SweepStage& stage, const SceneSurface& surfa
   SweepProducts products;
   // The same surface on a finer grid (docs/theory.md section 2): the pixel effect of the cut's area and
   // spot count shrinks, the surface does not change (docs/theory.md section 8).
-  std::optional<Surface> refined;
-  if (stage.refine > 0) refined = refine(surface.whole(), stage.refine, stage.refine, context.threads);
-  const std::size_t held = surface.whole_bytes() + bytes_of(refined);
-  const StageSurface swept = refined              ? StageSurface{refined->grid(), &*refined, held}
-                             : surface.resident() ? StageSurface{surface.grid(), nullptr, held}
-                                                  : StageSurface{surface.grid(), &surface.whole(), held};
-  products.sweep = context.runner().sweep(swept, stage.levels, stage.topology, context.threads);
+  const StageHeights swept = stage.refine > 0
+                                 ? StageHeights::refined(surface, stage.refine, stage.refine, context)
+                                 : StageHeights::of_scene(surface);
+  const StageSurface view = swept.view(surface.whole_bytes() + swept.owned_bytes());
+  products.sweep = context.runner().sweep(view, stage.levels, stage.topology, context.threads);
   products.model = plateau_model(products.sweep);
   products.seconds = seconds_since(start);
   return products;
@@ -144,21 +197,15 @@ BemProducts run_bem_stage(const BemStage& stage, const SceneSurface& scene_surfa
   const auto start = Clock::now();
   BemProducts products;
   const Index refined = stage.settings.refine;
-  // The resident slabs solve as they are: no whole copy here (docs/mpi.md).
+  // The resident slabs solve as they are, and a refinement stays on the ranks' slabs when the runner keeps it
+  // there: no whole copy here (docs/mpi.md), nor of the scene's whole heights unless the boundary differs.
   const bool mirrored = stage.settings.mirrored.value_or(false);  // resolved (resolve_boundary)
-  const bool on_slabs = scene_surface.resident() && refined == 0;
-  std::optional<Surface> solved;
-  Grid solved_grid = scene_surface.grid();
-  if (!on_slabs) {
-    const Surface& surface = scene_surface.whole();
-    solved = refined > 0 ? refine(surface, refined, refined, context.threads) : surface;
-    solved_grid = solved->grid();
-  }
-  const Index nx = solved_grid.nx, ny = solved_grid.ny;
-  if (solved_grid.periodic != stage.periodic) {
-    solved_grid.periodic = stage.periodic;
-    if (solved) solved = solved->with_periodic(stage.periodic);
-  }
+  StageHeights solved = refined > 0 ? StageHeights::refined(scene_surface, refined, refined, context)
+                                    : StageHeights::of_scene(scene_surface);
+  const Grid scene_grid = solved.grid();  // before the stage's boundary
+  solved.set_periodic(stage.periodic);
+  const Grid& solved_grid = solved.grid();
+  const Index nx = scene_grid.nx, ny = scene_grid.ny;
   // boundary = "mirrored" (preflight: non-periodic problems only): the runner solves the periodic even
   // extension of this patch and hands back the solution and statistics on the patch, which is judged.
   products.points = solved_grid.points();
@@ -180,10 +227,7 @@ BemProducts run_bem_stage(const BemStage& stage, const SceneSurface& scene_surfa
     fields = prefix.string();
   }
   SolvedLoads loads =
-      context.runner().solve_loads(stage,
-                                   StageSurface{.grid = solved_grid,
-                                                .whole = solved ? &*solved : nullptr,
-                                                .root_bytes = scene_surface.whole_bytes() + bytes_of(solved)},
+      context.runner().solve_loads(stage, solved.view(scene_surface.whole_bytes() + solved.owned_bytes()),
                                    estar, solved_pressures, connectivities, fields, context);
   products.solutions = std::move(loads.solutions);
   products.statistics = std::move(loads.statistics);
@@ -195,20 +239,17 @@ BemProducts run_bem_stage(const BemStage& stage, const SceneSurface& scene_surfa
   if (stage.settings.extrapolate) {
     // The same surface on twice the points a side (the method's preflight refuses a non-periodic one):
     // refined from the scene's surface, not from the first grid (the same trigonometric interpolation).
-    const Surface& surface = scene_surface.whole();
-    Surface fine = refine(surface, 2 * nx, 2 * ny, context.threads);
-    if (fine.grid().periodic != stage.periodic) fine = fine.with_periodic(stage.periodic);
+    StageHeights fine = StageHeights::refined(scene_surface, 2 * nx, 2 * ny, context);
+    fine.set_periodic(stage.periodic);
     products.fine_points = fine.grid().points();
     // The stiffness is the first grid's (as the mean gap): not solved again on the finer one.
     BemStage fine_stage = stage;
     fine_stage.stiffness = false;
     fine_stage.distributions.reset();  // the first grid's, as the mean gap
     fine_stage.approach_retract.reset();
-    SolvedLoads fine_loads = context.runner().solve_loads(
-        fine_stage,
-        StageSurface{
-            .grid = fine.grid(), .whole = &fine, .root_bytes = scene_surface.whole_bytes() + bytes_of(fine)},
-        estar, mean_pressures, connectivities, "", context);
+    SolvedLoads fine_loads =
+        context.runner().solve_loads(fine_stage, fine.view(scene_surface.whole_bytes() + fine.owned_bytes()),
+                                     estar, mean_pressures, connectivities, "", context);
     products.fine_solutions = std::move(fine_loads.solutions);
     products.fine_statistics = std::move(fine_loads.statistics);
     products.fine_adhesive = std::move(fine_loads.adhesive);
@@ -216,19 +257,18 @@ BemProducts run_bem_stage(const BemStage& stage, const SceneSurface& scene_surfa
     if (uses_third_grid(stage.settings.error_estimate)) {
       // The third grid of the error bar (docs/theory.md section 9.2): half the first grid when that still
       // holds the scene's surface, else twice the finer one.
-      const bool coarser = third_grid_is_coarser(nx, ny, surface.grid().nx, surface.grid().ny);
+      const Grid& scene = scene_surface.grid();
+      const bool coarser = third_grid_is_coarser(nx, ny, scene.nx, scene.ny);
       products.third_nx = coarser ? nx / 2 : 4 * nx;
       products.third_ny = coarser ? ny / 2 : 4 * ny;
-      Surface third = products.third_nx == surface.grid().nx && products.third_ny == surface.grid().ny
-                          ? surface
-                          : refine(surface, products.third_nx, products.third_ny, context.threads);
-      if (third.grid().periodic != stage.periodic) third = third.with_periodic(stage.periodic);
+      StageHeights third =
+          products.third_nx == scene.nx && products.third_ny == scene.ny
+              ? StageHeights::of_scene(scene_surface)
+              : StageHeights::refined(scene_surface, products.third_nx, products.third_ny, context);
+      third.set_periodic(stage.periodic);
       SolvedLoads third_loads = context.runner().solve_loads(
-          fine_stage,
-          StageSurface{.grid = third.grid(),
-                       .whole = &third,
-                       .root_bytes = scene_surface.whole_bytes() + bytes_of(third)},
-          estar, mean_pressures, connectivities, "", context);
+          fine_stage, third.view(scene_surface.whole_bytes() + third.owned_bytes()), estar, mean_pressures,
+          connectivities, "", context);
       products.third_solutions = std::move(third_loads.solutions);
       products.third_statistics = std::move(third_loads.statistics);
       products.bytes_per_rank = std::max(products.bytes_per_rank, third_loads.bytes_per_rank);

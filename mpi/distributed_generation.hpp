@@ -13,9 +13,8 @@ namespace contactbench::mpi {
 
 // This rank's slab (slab_of(grid, comm), count x nx) of generate_surface(grid, psd, seed): bit-identical to
 // the serial surface's rows whatever the number of ranks. Each rank computes the coefficients of its own
-// chunks of kx columns (core's SelfAffineModes) and transforms them along y with the serial generator's own
-// plans (core/fft.hpp, ReproducibleInverseFft2d); one all-to-all turns the columns into row slabs, which each
-// rank transforms along x, again with the serial plans. The normalisation is summed over the whole half
+// chunks of kx columns (core's SelfAffineModes), which mpi/distributed_synthesis.hpp turns into row slabs
+// with the serial generator's own transforms. The normalisation is summed over the whole half
 // lattice on every rank (a temporary of 4 B per grid point), as the serial generator sums it, so that it
 // rounds alike. Collective; throws the serial generator's errors on every rank.
 HeightMap generate_surface_slab(const Grid& grid, const SelfAffinePsd& psd, std::uint64_t seed,

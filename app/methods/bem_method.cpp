@@ -482,16 +482,20 @@ class BemMethod final : public Method {
         "a solve that fits: fewer points (refine), extrapolate = false, boundary = \"as_is\" or precision = "
         "\"single\"";
     // Spread over MPI ranks, the runner says what the ranks on this machine hold together.
-    // What rank 0 holds whole beside its slab under mpiexec (docs/mpi.md): the scene's heights and the
-    // stage's copy of them (the patch's when mirrored: the ranks extend it on their slabs), unless the
-    // surface stays on the ranks' slabs and the stage solves it at its grid; the pressure and gap it gathers
-    // for `fields` or the distributions (the patch's when mirrored).
-    const bool on_slabs = check.surface.resident() && settings_.refine == 0 && !settings_.extrapolate;
+    // What rank 0 holds whole beside its slab under mpiexec (docs/mpi.md): the scene's heights unless they
+    // stay on the ranks' slabs and no grid is refined (the ranks refine on their slabs from the scene's
+    // coefficients, which rank 0 takes from the whole heights with a cached transform: 24 B a point of the
+    // scene's grid in all), and a copy of them when the stage solves them whole with another boundary; the
+    // pressure and gap it gathers for `fields` or the distributions (the patch's when mirrored).
+    const bool refines = settings_.refine > 0 || settings_.extrapolate;
+    const bool on_slabs = check.surface.resident() && !refines;
     const auto scene_points = static_cast<std::uintmax_t>(grid.points());
     const std::uintmax_t judged_points = mirrored ? points / 4 : points;
-    std::uintmax_t root_bytes =
-        on_slabs ? 0
-                 : saturating_sum(saturating_product(scene_points, 8), saturating_product(judged_points, 8));
+    std::uintmax_t root_bytes = 0;
+    if (refines)
+      root_bytes = saturating_product(scene_points, 24);
+    else if (!on_slabs)
+      root_bytes = saturating_sum(saturating_product(scene_points, 8), saturating_product(judged_points, 8));
     if (!settings_.fields.empty() || check.scene.distributions)
       root_bytes = saturating_sum(root_bytes, saturating_product(judged_points, 16));
     if (check.runner)
