@@ -1,7 +1,8 @@
 // The default solver, the primal-dual active-set method (bem/active_set.hpp, docs/solvers.md "The
 // active-set method"), on slabs (docs/mpi.md "The default solver"): the serial method's steps
 // (bem/solvers/active_set_*.cpp) with each rank holding its slab of the heights, pressure, displacement and
-// the CG's vectors, the operator and the filter on FFTW-MPI (mpi/distributed_half_space.hpp), every global
+// the CG's vectors, the operator and the filter as distributed convolutions (mpi/distributed_half_space.hpp:
+// periodic on two ranks and more the slab engine, mpi/slab_convolution_engine.hpp), every global
 // sum combined in rank order from an MPI_Allgather (so every rank takes the same decisions), the extended
 // filter's window sums over a halo of kExtensionRadius rows (mpi/row_exchange.hpp, from further ranks when
 // a slab is thinner), the few changed nodes' columns of G added by the operator applied to those changes
@@ -12,9 +13,10 @@
 // interpolated back on slabs (bem/solvers/interpolate_up.hpp, the serial kernel).
 //
 // What differs from one process, all round-off: the order of the sums (per rank instead of per thread), the
-// transforms (FFTW-MPI's passes), the window sums' running order, and the filter, in double on FFTW-MPI with
-// its input and output rounded to float as the serial single-precision filter rounds them (its inner passes
-// run in double, not float). Measured against the serial method: tests/mpi/test_mpi_active_set.cpp.
+// transforms (the slab engine's or FFTW-MPI's passes), the window sums' running order, and the filter: in
+// single precision on the slab engine as the serial filter, elsewhere in double on FFTW-MPI with its input
+// and output rounded to float as the serial filter rounds them (its inner passes then run in double).
+// Measured against the serial method: tests/mpi/test_mpi_active_set.cpp.
 // Double precision only.
 #pragma once
 

@@ -98,12 +98,14 @@ DistributedBemSolver::DistributedBemSolver(const Grid& grid, const HeightMap& lo
 DistributedBemSolver::~DistributedBemSolver() = default;
 
 // Bytes a point of the slab, measured as bytes() / slab points with mpiexec -np 2 and 3 on 256^2 and 640 x
-// 512 surfaces (periodic / not; docs/mpi.md "Memory a point"), with 10 % of margin: polonsky_keer 76 / 136,
-// preconditioned_cg 96 / 217. active_set: what it holds from solve to solve (the pressure, heights,
-// displacement, the transform and both multipliers) 40 / 120, and during a solve either its work arrays (32,
-// plus a transient selection array of the cold start, at most 8) or, before them, its coarse start: the first
-// level of at most kGatherBound points whole on every rank (~100 B a point of that level, Coarse::bytes) and
-// the levels on slabs (a quarter of the points each: at most a third of the finest level's kept and work).
+// 512 surfaces (periodic / not; docs/mpi.md "Memory a point"), with 10 % of margin: polonsky_keer 86 / 136,
+// preconditioned_cg 116 / 217 (periodic on 2 ranks and more: the slab engine's two exchange buffers, 16 B,
+// in place of FFTW-MPI's slab, 8 B, for each of the operator and the preconditioner; one thread a rank).
+// active_set: what it holds from solve to solve (the pressure, heights, displacement, the transform and both
+// multipliers) 40 / 120, and during a solve either its work arrays (32, plus a transient selection array of
+// the cold start, at most 8) or, before them, its coarse start: the first level of at most kGatherBound
+// points whole on every rank (~100 B a point of that level, Coarse::bytes) and the levels on slabs (a quarter
+// of the points each: at most a third of the finest level's kept and work).
 std::size_t DistributedBemSolver::estimated_bytes(const Grid& grid, Index slab_points,
                                                   const BemSolverOptions& options) {
   const bool periodic = grid.periodic;
@@ -111,10 +113,10 @@ std::size_t DistributedBemSolver::estimated_bytes(const Grid& grid, Index slab_p
   double bytes = 0;
   switch (options.solver) {
     case SolverKind::polonsky_keer:
-      bytes = (periodic ? 84 : 150) * slab;
+      bytes = (periodic ? 95 : 150) * slab;
       break;
     case SolverKind::preconditioned_cg:
-      bytes = (periodic ? 106 : 240) * slab;
+      bytes = (periodic ? 128 : 240) * slab;
       break;
     case SolverKind::active_set: {
       double gathered = points / 4;  // the coarse levels halve each side

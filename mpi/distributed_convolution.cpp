@@ -24,7 +24,7 @@ Index shared_rows(Index start_a, Index count_a, Index start_b, Index count_b, In
 }  // namespace
 
 DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MPI_Comm comm, int threads,
-                                               const DistributedConvolution* share)
+                                               const DistributedConvolution* share, bool single_precision)
     : slab_(slab_of(grid, comm)),
       comm_(comm),
       padded_(padded),
@@ -33,16 +33,43 @@ DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MP
   if (share && (share->padded_ != padded || share->lx_ != lx_ || share->ly_ != ly_ ||
                 share->slab_.nx != slab_.nx || share->slab_.ny != slab_.ny))
     throw Error("mpi: a convolution can share the transform of one of the same grid and lattice only");
-  fft_ = share ? share->fft_ : std::make_shared<DistributedRealFft2d>(lx_, ly_, comm, threads);
+  // Periodic on two ranks and more, one thread a rank: the slab engine, with FFTW-MPI's split of the
+  // spectral columns (so that the multipliers are made alike) but none of its transform.
+  const bool slab_engine = !padded && size_of(comm) > 1 && threads <= 1;
+  spectrum_ = spectrum_columns(lx_, ly_, comm);
+  if (!slab_engine)
+    fft_ =
+        share && share->fft_ ? share->fft_ : std::make_shared<DistributedRealFft2d>(lx_, ly_, comm, threads);
   buffers_ = share ? share->buffers_ : std::make_shared<Buffers>();
-  multiplier_.assign(static_cast<std::size_t>(fft_->spectrum_count() * ly_), 0.0);
+  multiplier_.assign(static_cast<std::size_t>(spectrum_.count * ly_), 0.0);
   // Each stored column kx stands for +kx and -kx, except kx = 0 and the Nyquist column (even lx).
-  for (Index c = 0; c < fft_->spectrum_count(); ++c) {
-    const Index kx = fft_->spectrum_start() + c;
+  for (Index c = 0; c < spectrum_.count; ++c) {
+    const Index kx = spectrum_.start + c;
     column_weight_.push_back((kx == 0 || (lx_ % 2 == 0 && kx == lx_ / 2)) ? 1.0 : 2.0);
   }
   if (size_of(comm) == 1 && threads <= 1)
     alone_ = std::make_unique<Convolution<double>>(grid.nx, grid.ny, padded, 1);
+  if (slab_engine) {
+    if (share && share->engine_ && !single_precision) {
+      engine_ = share->engine_;
+    } else {
+      // Every rank's spectral columns.
+      const Index mine[2] = {spectrum_.start, spectrum_.count};
+      std::vector<Index> all(2 * static_cast<std::size_t>(size_of(comm)));
+      MPI_Allgather(mine, 2, MPI_INT64_T, all.data(), 2, MPI_INT64_T, comm);
+      std::vector<Index> starts, counts;
+      for (std::size_t r = 0; r < all.size(); r += 2) {
+        starts.push_back(all[r]);
+        counts.push_back(all[r + 1]);
+      }
+      if (single_precision)
+        float_engine_ =
+            std::make_unique<SlabConvolutionEngine<float>>(slab_, std::move(starts), std::move(counts), comm);
+      else
+        engine_ = std::make_shared<SlabConvolutionEngine<double>>(slab_, std::move(starts), std::move(counts),
+                                                                  comm);
+    }
+  }
   if (!padded) return;
   buffers_->padded_rows.resize(static_cast<std::size_t>(std::max<Index>(slab_.points(), 1)));
   // The exchange plan: this rank's grid rows to the transform slabs that hold them. Both layouts are in rank
@@ -68,14 +95,19 @@ DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MP
 
 DistributedConvolution::~DistributedConvolution() = default;
 
+DistributedRealFft2d& DistributedConvolution::transform() {
+  if (!fft_) throw Error("internal: a periodic convolution on the slab engine has no FFTW-MPI transform");
+  return *fft_;
+}
+
 void DistributedConvolution::set_multiplier(std::vector<double> multiplier) {
   if (multiplier.size() != multiplier_.size())
     throw Error("mpi: the multiplier has " + std::to_string(multiplier.size()) + " values, this rank's " +
-                std::to_string(fft_->spectrum_count()) + " spectral columns need " +
+                std::to_string(spectrum_.count) + " spectral columns need " +
                 std::to_string(multiplier_.size()));
   multiplier_ = std::move(multiplier);
   double sum = 0;
-  for (Index c = 0; c < fft_->spectrum_count(); ++c) {
+  for (Index c = 0; c < spectrum_.count; ++c) {
     const double weight = column_weight_[static_cast<std::size_t>(c)];
     for (Index row = 0; row < ly_; ++row)
       sum += weight * multiplier_[static_cast<std::size_t>(c * ly_ + row)];
@@ -83,7 +115,7 @@ void DistributedConvolution::set_multiplier(std::vector<double> multiplier) {
   self_response_ = sum_over_ranks(sum, comm_);
   if (alone_) {
     // The serial engine's layout: ly rows (ky) by lx / 2 + 1 columns (kx); here column-major by kx.
-    const Index columns = fft_->spectrum_count();
+    const Index columns = spectrum_.count;
     Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> m(ly_, columns);
     for (Index c = 0; c < columns; ++c)
       for (Index row = 0; row < ly_; ++row)
@@ -140,6 +172,14 @@ void DistributedConvolution::apply(const RowProducer& produce, const RowConsumer
       alone_->apply(rows_in, rows_out, {}, true, product);
     else
       alone_->apply(rows_in, rows_out);
+    return;
+  }
+  if (engine_) {
+    engine_->apply(produce, consume, multiplier_, column_weight_, multiplied);
+    return;
+  }
+  if (float_engine_) {
+    float_engine_->apply(produce, consume, multiplier_, column_weight_, multiplied);
     return;
   }
   const Slab& transform_slab = fft_->slab();

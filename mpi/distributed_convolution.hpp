@@ -17,6 +17,7 @@
 #include "contactbench/core/types.hpp"
 #include "contactbench/mpi/distributed_fft.hpp"
 #include "contactbench/mpi/slab.hpp"
+#include "contactbench/mpi/slab_convolution_engine.hpp"
 
 namespace contactbench::mpi {
 
@@ -25,16 +26,23 @@ class DistributedConvolution {
   // Collective; the multiplier is zero until set. `share`: another convolution of the same grid and lattice
   // whose transform and exchange buffers this one uses too (a convolution's transform is scratch between
   // two applications, so two that never run at once need one: docs/mpi.md "Memory a point").
+  // `single_precision`: where the slab engine runs (periodic, two ranks and more, one thread a rank), its
+  // transform in float, the rows produced rounded to float (the solver's filter, whose serial transform is in
+  // single precision); elsewhere in double.
   DistributedConvolution(const Grid& grid, bool padded, MPI_Comm comm, int threads = 1,
-                         const DistributedConvolution* share = nullptr);
+                         const DistributedConvolution* share = nullptr, bool single_precision = false);
   ~DistributedConvolution();
 
   const Slab& slab() const { return slab_; }  // of the grid: the input's and output's layout
   bool padded() const { return padded_; }
   Index lx() const { return lx_; }  // the transform's lattice: nx x ny, or 2 nx x 2 ny padded
   Index ly() const { return ly_; }
-  // The transform, for filling its real slab (a kernel) and reading its spectrum when making a multiplier.
-  DistributedRealFft2d& transform() { return *fft_; }
+  // The transform, for filling its real slab (a kernel) and reading its spectrum when making a multiplier
+  // (padded only: a periodic convolution where the slab engine runs has none).
+  DistributedRealFft2d& transform();
+  // This rank's spectral columns kx of the transform's lattice, where its multiplier is given.
+  Index spectrum_start() const { return spectrum_.start; }
+  Index spectrum_count() const { return spectrum_.count; }
 
   // M on this rank's spectral columns, value (kx - spectrum_start, ky) at [(kx - spectrum_start) * ly + ky],
   // the pair's normalisation 1/(lx ly) folded in. Collective (sums G(0) over the ranks).
@@ -44,8 +52,9 @@ class DistributedConvolution {
 
   // Bytes this rank holds for the convolution: the transform's slab, the multiplier, the exchange buffers.
   std::size_t bytes() const {
-    return own_bytes() + fft_->bytes() +
-           sizeof(double) * (buffers_->receive.capacity() + buffers_->padded_rows.capacity());
+    return own_bytes() + (fft_ ? fft_->bytes() : 0) +
+           sizeof(double) * (buffers_->receive.capacity() + buffers_->padded_rows.capacity()) +
+           (engine_ ? engine_->bytes() : 0) + (float_engine_ ? float_engine_->bytes() : 0);
   }
   // The same without what it may share with another (the transform and the exchange buffers).
   std::size_t own_bytes() const {
@@ -70,7 +79,8 @@ class DistributedConvolution {
   MPI_Comm comm_;
   bool padded_;
   Index lx_, ly_;
-  std::shared_ptr<DistributedRealFft2d> fft_;  // shared with another convolution or not
+  std::shared_ptr<DistributedRealFft2d> fft_;  // shared with another convolution or not; none with engine_
+  SpectrumColumns2d spectrum_;
   std::vector<double> multiplier_;
   double self_response_ = 0;
   // Padded only: how the grid's rows travel to the transform's slabs (counts, offsets in values), and the
@@ -87,6 +97,11 @@ class DistributedConvolution {
   // cache with the multiply between, no transpose), the same multiplier; FFTW-MPI's plan with its local
   // transposes then only makes the multiplier.
   std::unique_ptr<Convolution<double>> alone_;
+  // Periodic on two ranks and more, one thread a rank: the rows' spectra exchanged straight into column
+  // blocks (mpi/slab_convolution_engine.hpp) instead of FFTW-MPI's pair; in double shared with `share` as
+  // the transform is, in single precision its own.
+  std::shared_ptr<SlabConvolutionEngine<double>> engine_;
+  std::unique_ptr<SlabConvolutionEngine<float>> float_engine_;
 };
 
 }  // namespace contactbench::mpi

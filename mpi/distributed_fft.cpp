@@ -12,6 +12,13 @@
 
 namespace contactbench::mpi {
 
+SpectrumColumns2d spectrum_columns(Index nx, Index ny, MPI_Comm comm) {
+  require_fftw_mpi();
+  ptrdiff_t rows = 0, row_start = 0, columns = 0, column_start = 0;
+  fftw_mpi_local_size_2d_transposed(ny, nx / 2 + 1, comm, &rows, &row_start, &columns, &column_start);
+  return {column_start, columns};
+}
+
 DistributedRealFft2d::DistributedRealFft2d(Index nx, Index ny, MPI_Comm comm, int threads)
     : slab_(slab_of(nx, ny, comm)), comm_(comm) {
   require_fftw_mpi();

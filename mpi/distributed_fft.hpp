@@ -16,6 +16,14 @@
 
 namespace contactbench::mpi {
 
+// The spectral columns [start, start + count) of the nx/2 + 1 that rank `comm` holds in
+// DistributedRealFft2d's transposed spectrum (FFTW-MPI's split), without making the transform. Collective
+// only in that every rank must agree on nx, ny.
+struct SpectrumColumns2d {
+  Index start = 0, count = 0;
+};
+SpectrumColumns2d spectrum_columns(Index nx, Index ny, MPI_Comm comm);
+
 class DistributedRealFft2d {
  public:
   // Collective: every rank of comm constructs it with the same nx, ny. Runs FFTW on `threads` threads a rank.

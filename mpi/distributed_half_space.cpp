@@ -24,12 +24,11 @@ void check_operator(const Grid& grid, Real modulus) {
 std::vector<double> radial_multiplier(DistributedConvolution& convolution, const Grid& lattice_grid,
                                       Real factor, int power) {
   const HalfLattice lattice(lattice_grid);
-  DistributedRealFft2d& fft = convolution.transform();
   const Index ly = convolution.ly();
-  std::vector<double> multiplier(static_cast<std::size_t>(fft.spectrum_count() * ly));
-  for (Index c = 0; c < fft.spectrum_count(); ++c)
+  std::vector<double> multiplier(static_cast<std::size_t>(convolution.spectrum_count() * ly));
+  for (Index c = 0; c < convolution.spectrum_count(); ++c)
     for (Index row = 0; row < ly; ++row) {
-      const Real qx = lattice.qx(fft.spectrum_start() + c), qy = lattice.qy(row);
+      const Real qx = lattice.qx(convolution.spectrum_start() + c), qy = lattice.qy(row);
       const Real q = std::sqrt(qy * qy + qx * qx);
       multiplier[static_cast<std::size_t>(c * ly + row)] = q > 0 ? factor * std::pow(q, power) : 0.0;
     }
@@ -91,7 +90,9 @@ std::unique_ptr<DistributedConvolution> make_distributed_unit_preconditioner(
   validate(grid, "distributed filter grid");
   const bool padded = !grid.periodic;
   const Grid lattice_grid = filter_lattice(grid);
-  auto convolution = std::make_unique<DistributedConvolution>(grid, padded, comm, threads, share);
+  // In single precision where the slab engine runs, as the serial filter (its input and output are rounded
+  // to float either way: mpi/distributed_active_set.cpp).
+  auto convolution = std::make_unique<DistributedConvolution>(grid, padded, comm, threads, share, true);
   // |q| / max |q| with the pair's normalisation: the serial filter's arithmetic
   // (bem/fourier_preconditioner.cpp, (1/2)|q| / (points) first, then divided by its peak times the lattice's
   // points).

@@ -1,0 +1,265 @@
+#include "contactbench/mpi/slab_convolution_engine.hpp"
+
+#include <algorithm>
+#include <complex>
+#include <string>
+#include <type_traits>
+
+#include <fftw3.h>
+
+#include "contactbench/core/error.hpp"
+#include "contactbench/core/fft.hpp"
+#include "contactbench/mpi/message_count.hpp"
+
+namespace contactbench::mpi {
+
+namespace {
+
+// What the MPI counts of this file's exchanges are named by in an overflow error (mpi/message_count.hpp).
+constexpr const char* kEngineExchange = "an exchange of the slab convolution";
+
+// Rows per transform call and a block of columns of 64 bytes a row, as the serial engine's
+// (bem/convolution.cpp): a chunk of rows in L2, a block of columns one cache line of each row.
+constexpr Index kRowsPerChunk = 8;
+
+// FFTW's interface in double (fftw_*) or single precision (fftwf_*).
+template <class T>
+struct Fftw;
+template <>
+struct Fftw<double> {
+  using Plan = fftw_plan;
+  using Cx = fftw_complex;
+  static MPI_Datatype mpi_type() { return MPI_DOUBLE; }
+  static double* alloc_real(std::size_t n) { return fftw_alloc_real(n); }
+  static Cx* alloc_complex(std::size_t n) { return fftw_alloc_complex(n); }
+  static void free(void* p) { fftw_free(p); }
+  static void destroy(Plan p) {
+    if (p) fftw_destroy_plan(p);
+  }
+  static Plan r2c(int n, int howmany, double* in, Cx* out, int n_half) {
+    return fftw_plan_many_dft_r2c(1, &n, howmany, in, nullptr, 1, n, out, nullptr, 1, n_half, FFTW_ESTIMATE);
+  }
+  static Plan c2r(int n, int howmany, Cx* in, double* out, int n_half) {
+    return fftw_plan_many_dft_c2r(1, &n, howmany, in, nullptr, 1, n_half, out, nullptr, 1, n, FFTW_ESTIMATE);
+  }
+  static Plan columns(int n, int howmany, Cx* data) {
+    return fftw_plan_many_dft(1, &n, howmany, data, nullptr, 1, n, data, nullptr, 1, n, FFTW_FORWARD,
+                              FFTW_ESTIMATE);
+  }
+  static void execute_r2c(Plan p, double* in, Cx* out) { fftw_execute_dft_r2c(p, in, out); }
+  static void execute_c2r(Plan p, Cx* in, double* out) { fftw_execute_dft_c2r(p, in, out); }
+  static void execute_c2c(Plan p, Cx* data) { fftw_execute_dft(p, data, data); }
+};
+template <>
+struct Fftw<float> {
+  using Plan = fftwf_plan;
+  using Cx = fftwf_complex;
+  static MPI_Datatype mpi_type() { return MPI_FLOAT; }
+  static float* alloc_real(std::size_t n) { return fftwf_alloc_real(n); }
+  static Cx* alloc_complex(std::size_t n) { return fftwf_alloc_complex(n); }
+  static void free(void* p) { fftwf_free(p); }
+  static void destroy(Plan p) {
+    if (p) fftwf_destroy_plan(p);
+  }
+  static Plan r2c(int n, int howmany, float* in, Cx* out, int n_half) {
+    return fftwf_plan_many_dft_r2c(1, &n, howmany, in, nullptr, 1, n, out, nullptr, 1, n_half, FFTW_ESTIMATE);
+  }
+  static Plan c2r(int n, int howmany, Cx* in, float* out, int n_half) {
+    return fftwf_plan_many_dft_c2r(1, &n, howmany, in, nullptr, 1, n_half, out, nullptr, 1, n, FFTW_ESTIMATE);
+  }
+  static Plan columns(int n, int howmany, Cx* data) {
+    return fftwf_plan_many_dft(1, &n, howmany, data, nullptr, 1, n, data, nullptr, 1, n, FFTW_FORWARD,
+                               FFTW_ESTIMATE);
+  }
+  static void execute_r2c(Plan p, float* in, Cx* out) { fftwf_execute_dft_r2c(p, in, out); }
+  static void execute_c2r(Plan p, Cx* in, float* out) { fftwf_execute_dft_c2r(p, in, out); }
+  static void execute_c2c(Plan p, Cx* data) { fftwf_execute_dft(p, data, data); }
+};
+
+}  // namespace
+
+// Estimated plans, as FFTW-MPI's here: the same plan on every run, so the same round-off.
+template <class T>
+struct SlabConvolutionEngine<T>::Plans {
+  using F = Fftw<T>;
+  static constexpr Index kColumnsPerBlock = 64 / static_cast<Index>(sizeof(std::complex<T>));
+  T* rows = nullptr;                      // a chunk of rows, in T
+  typename F::Cx* row_spectra = nullptr;  // their spectra
+  typename F::Cx* columns = nullptr;      // a block of columns, each contiguous
+  typename F::Plan r2c_full = nullptr, r2c_rest = nullptr, c2r_full = nullptr, c2r_rest = nullptr;
+  typename F::Plan columns_forward = nullptr;
+
+  Plans(Index nx, Index ny, Index nxh, Index slab_rows) {
+    rows = F::alloc_real(static_cast<std::size_t>(kRowsPerChunk * nx));
+    row_spectra = F::alloc_complex(static_cast<std::size_t>(kRowsPerChunk * nxh));
+    columns = F::alloc_complex(static_cast<std::size_t>(kColumnsPerBlock * ny));
+    if (!rows || !row_spectra || !columns)
+      throw Error("mpi: out of memory for the slab convolution's buffers");
+    const int n_x = static_cast<int>(nx), n_y = static_cast<int>(ny), n_xh = static_cast<int>(nxh);
+    const int rest = static_cast<int>(slab_rows % kRowsPerChunk);
+    auto lock = lock_fftw_planner();
+    fftw_plan_with_nthreads(1);
+    r2c_full = F::r2c(n_x, static_cast<int>(kRowsPerChunk), rows, row_spectra, n_xh);
+    c2r_full = F::c2r(n_x, static_cast<int>(kRowsPerChunk), row_spectra, rows, n_xh);
+    if (rest > 0) {
+      r2c_rest = F::r2c(n_x, rest, rows, row_spectra, n_xh);
+      c2r_rest = F::c2r(n_x, rest, row_spectra, rows, n_xh);
+    }
+    columns_forward = F::columns(n_y, static_cast<int>(kColumnsPerBlock), columns);
+    if (!r2c_full || !c2r_full || !columns_forward || (rest > 0 && (!r2c_rest || !c2r_rest)))
+      throw Error("mpi: FFTW could not plan the slab convolution's transforms");
+  }
+  ~Plans() {
+    {
+      auto lock = lock_fftw_planner();
+      for (auto p : {r2c_full, r2c_rest, c2r_full, c2r_rest, columns_forward})
+        F::destroy(p);
+    }
+    F::free(rows);
+    F::free(row_spectra);
+    F::free(columns);
+  }
+  Plans(const Plans&) = delete;
+  Plans& operator=(const Plans&) = delete;
+};
+
+template <class T>
+SlabConvolutionEngine<T>::SlabConvolutionEngine(const Slab& slab, std::vector<Index> all_column_starts,
+                                                std::vector<Index> all_column_counts, MPI_Comm comm)
+    : slab_(slab),
+      comm_(comm),
+      nxh_(slab.nx / 2 + 1),
+      column_starts_(std::move(all_column_starts)),
+      column_counts_(std::move(all_column_counts)),
+      my_columns_(column_counts_.at(static_cast<std::size_t>(rank_of(comm)))) {
+  const auto slabs = all_slabs(slab.nx, slab.ny, comm);
+  Index to = 0, from = 0;
+  for (std::size_t r = 0; r < slabs.size(); ++r) {
+    // Forward: this rank's rows of rank r's columns out; rank r's rows of this rank's columns in (counts in
+    // T values: two a complex value).
+    row_offsets_.push_back(message_count(2 * to, kEngineExchange));
+    row_counts_.push_back(message_count(2 * slab.count * column_counts_[r], kEngineExchange));
+    column_offsets_values_.push_back(message_count(2 * from, kEngineExchange));
+    column_counts_values_.push_back(message_count(2 * slabs[r].count * my_columns_, kEngineExchange));
+    to += slab.count * column_counts_[r];
+    from += slabs[r].count * my_columns_;
+  }
+  by_destination_.resize(static_cast<std::size_t>(std::max<Index>(to, 1)));
+  my_block_.resize(static_cast<std::size_t>(std::max<Index>(from, 1)));
+  if constexpr (!std::is_same_v<T, double>)
+    caller_rows_.resize(static_cast<std::size_t>(kRowsPerChunk * slab.nx));
+  plans_ = std::make_unique<Plans>(slab.nx, slab.ny, nxh_, slab.count);
+}
+
+template <class T>
+SlabConvolutionEngine<T>::~SlabConvolutionEngine() = default;
+
+template <class T>
+std::size_t SlabConvolutionEngine<T>::bytes() const {
+  return sizeof(std::complex<T>) * (by_destination_.capacity() + my_block_.capacity()) +
+         sizeof(double) * caller_rows_.capacity() +
+         sizeof(T) * static_cast<std::size_t>(kRowsPerChunk * slab_.nx) +
+         sizeof(std::complex<T>) *
+             static_cast<std::size_t>(kRowsPerChunk * nxh_ + Plans::kColumnsPerBlock * slab_.ny);
+}
+
+template <class T>
+void SlabConvolutionEngine<T>::apply(const std::function<void(Index, Real*)>& produce,
+                                     const std::function<void(Index, const Real*)>& consume,
+                                     const std::vector<double>& multiplier,
+                                     const std::vector<double>& column_weight,
+                                     const std::function<void(double)>& multiplied) {
+  using F = Fftw<T>;
+  using Cx = std::complex<T>;
+  constexpr Index B = Plans::kColumnsPerBlock;
+  Plans& plans = *plans_;
+  const Index nx = slab_.nx, ny = slab_.ny, ranks = static_cast<Index>(column_counts_.size());
+  auto* spectra = reinterpret_cast<Cx*>(plans.row_spectra);
+  auto* columns = reinterpret_cast<Cx*>(plans.columns);
+  double* caller = caller_rows_.data();
+  const MPI_Datatype type = F::mpi_type();
+
+  // 1. Rows: produced, transformed along x, each row's spectrum cut into the destinations' column runs.
+  for (Index first = 0; first < slab_.count; first += kRowsPerChunk) {
+    const Index rows = std::min(kRowsPerChunk, slab_.count - first);
+    for (Index i = 0; i < rows; ++i) {
+      if constexpr (std::is_same_v<T, double>) {
+        produce(first + i, plans.rows + i * nx);
+      } else {
+        produce(first + i, caller);
+        for (Index x = 0; x < nx; ++x)
+          plans.rows[i * nx + x] = static_cast<T>(caller[x]);
+      }
+    }
+    F::execute_r2c(rows == kRowsPerChunk ? plans.r2c_full : plans.r2c_rest, plans.rows, plans.row_spectra);
+    Cx* part = by_destination_.data();
+    for (Index r = 0; r < ranks; ++r) {
+      const Index width = column_counts_[static_cast<std::size_t>(r)];
+      const Index start = column_starts_[static_cast<std::size_t>(r)];
+      for (Index i = 0; i < rows; ++i)
+        std::copy_n(spectra + i * nxh_ + start, width, part + (first + i) * width);
+      part += slab_.count * width;
+    }
+  }
+  MPI_Alltoallv(by_destination_.data(), row_counts_.data(), row_offsets_.data(), type, my_block_.data(),
+                column_counts_values_.data(), column_offsets_values_.data(), type, comm_);
+
+  // 2. This rank's columns, a block at a time in cache: along y, multiply, back (the transform back is the
+  //    forward one between two conjugations, as in the serial engine: one plan).
+  double energy = 0;
+  for (Index c0 = 0; c0 < my_columns_; c0 += B) {
+    const Index width = std::min(B, my_columns_ - c0);
+    for (Index y = 0; y < ny; ++y)
+      for (Index j = 0; j < width; ++j)
+        columns[j * ny + y] = my_block_[static_cast<std::size_t>(y * my_columns_ + c0 + j)];
+    if (width < B) std::fill(columns + width * ny, columns + B * ny, Cx(0));
+    F::execute_c2c(plans.columns_forward, plans.columns);
+    for (Index j = 0; j < width; ++j) {
+      Cx* column = columns + j * ny;
+      const double* m = multiplier.data() + (c0 + j) * ny;
+      double sum = 0;
+      for (Index k = 0; k < ny; ++k) {
+        const T mk = static_cast<T>(m[k]);
+        sum += static_cast<double>(mk) * std::norm(std::complex<double>(column[k]));
+        column[k] = std::conj(column[k] * mk);
+      }
+      energy += column_weight[static_cast<std::size_t>(c0 + j)] * sum;
+    }
+    F::execute_c2c(plans.columns_forward, plans.columns);
+    for (Index y = 0; y < ny; ++y)
+      for (Index j = 0; j < width; ++j)
+        my_block_[static_cast<std::size_t>(y * my_columns_ + c0 + j)] = std::conj(columns[j * ny + y]);
+  }
+  if (multiplied) multiplied(energy);
+
+  // 3. Back: each rank's rows of this rank's columns to it; each row gathered from its column runs and
+  //    transformed back along x.
+  MPI_Alltoallv(my_block_.data(), column_counts_values_.data(), column_offsets_values_.data(), type,
+                by_destination_.data(), row_counts_.data(), row_offsets_.data(), type, comm_);
+  for (Index first = 0; first < slab_.count; first += kRowsPerChunk) {
+    const Index rows = std::min(kRowsPerChunk, slab_.count - first);
+    const Cx* part = by_destination_.data();
+    for (Index r = 0; r < ranks; ++r) {
+      const Index width = column_counts_[static_cast<std::size_t>(r)];
+      const Index start = column_starts_[static_cast<std::size_t>(r)];
+      for (Index i = 0; i < rows; ++i)
+        std::copy_n(part + (first + i) * width, width, spectra + i * nxh_ + start);
+      part += slab_.count * width;
+    }
+    F::execute_c2r(rows == kRowsPerChunk ? plans.c2r_full : plans.c2r_rest, plans.row_spectra, plans.rows);
+    for (Index i = 0; i < rows; ++i) {
+      if constexpr (std::is_same_v<T, double>) {
+        consume(first + i, plans.rows + i * nx);
+      } else {
+        for (Index x = 0; x < nx; ++x)
+          caller[x] = static_cast<double>(plans.rows[i * nx + x]);
+        consume(first + i, caller);
+      }
+    }
+  }
+}
+
+template class SlabConvolutionEngine<double>;
+template class SlabConvolutionEngine<float>;
+
+}  // namespace contactbench::mpi
