@@ -62,9 +62,11 @@ DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MP
         starts.push_back(all[r]);
         counts.push_back(all[r + 1]);
       }
+      // The filter in float takes the operator's exchange buffers (`share`: never run at once).
       if (single_precision)
-        float_engine_ =
-            std::make_unique<SlabConvolutionEngine<float>>(slab_, std::move(starts), std::move(counts), comm);
+        float_engine_ = std::make_unique<SlabConvolutionEngine<float>>(
+            slab_, std::move(starts), std::move(counts), comm,
+            share && share->engine_ ? share->engine_->storage() : nullptr);
       else
         engine_ = std::make_shared<SlabConvolutionEngine<double>>(slab_, std::move(starts), std::move(counts),
                                                                   comm);

@@ -54,11 +54,13 @@ class DistributedConvolution {
   std::size_t bytes() const {
     return own_bytes() + (fft_ ? fft_->bytes() : 0) +
            sizeof(double) * (buffers_->receive.capacity() + buffers_->padded_rows.capacity()) +
-           (engine_ ? engine_->bytes() : 0) + (float_engine_ ? float_engine_->bytes() : 0);
+           (engine_ ? engine_->bytes() : 0);
   }
-  // The same without what it may share with another (the transform and the exchange buffers).
+  // The same without what it may share with another (the transform, the exchange buffers, the double
+  // engine).
   std::size_t own_bytes() const {
-    return sizeof(double) * (multiplier_.capacity() + column_weight_.capacity());
+    return sizeof(double) * (multiplier_.capacity() + column_weight_.capacity()) +
+           (float_engine_ ? float_engine_->bytes() : 0);
   }
 
   // out = conv(in) on this rank's slab (count x nx, row-major); in and out may be the same array. Collective.

@@ -78,6 +78,23 @@ struct Fftw<float> {
 
 }  // namespace
 
+ExchangeStorage::ExchangeStorage(std::size_t by_destination_bytes, std::size_t my_block_bytes)
+    : by_destination_(fftw_malloc(std::max<std::size_t>(by_destination_bytes, 16))),
+      my_block_(fftw_malloc(std::max<std::size_t>(my_block_bytes, 16))),
+      by_destination_bytes_(by_destination_bytes),
+      my_block_bytes_(my_block_bytes) {
+  if (!by_destination_ || !my_block_) {
+    fftw_free(by_destination_);
+    fftw_free(my_block_);
+    throw Error("mpi: out of memory for the slab convolution's exchange buffers");
+  }
+}
+
+ExchangeStorage::~ExchangeStorage() {
+  fftw_free(by_destination_);
+  fftw_free(my_block_);
+}
+
 // Estimated plans, as FFTW-MPI's here: the same plan on every run, so the same round-off.
 template <class T>
 struct SlabConvolutionEngine<T>::Plans {
@@ -125,7 +142,8 @@ struct SlabConvolutionEngine<T>::Plans {
 
 template <class T>
 SlabConvolutionEngine<T>::SlabConvolutionEngine(const Slab& slab, std::vector<Index> all_column_starts,
-                                                std::vector<Index> all_column_counts, MPI_Comm comm)
+                                                std::vector<Index> all_column_counts, MPI_Comm comm,
+                                                std::shared_ptr<ExchangeStorage> storage)
     : slab_(slab),
       comm_(comm),
       nxh_(slab.nx / 2 + 1),
@@ -144,8 +162,13 @@ SlabConvolutionEngine<T>::SlabConvolutionEngine(const Slab& slab, std::vector<In
     to += slab.count * column_counts_[r];
     from += slabs[r].count * my_columns_;
   }
-  by_destination_.resize(static_cast<std::size_t>(std::max<Index>(to, 1)));
-  my_block_.resize(static_cast<std::size_t>(std::max<Index>(from, 1)));
+  const std::size_t to_bytes = sizeof(std::complex<T>) * static_cast<std::size_t>(to),
+                    from_bytes = sizeof(std::complex<T>) * static_cast<std::size_t>(from);
+  own_storage_ =
+      !storage || storage->by_destination_bytes() < to_bytes || storage->my_block_bytes() < from_bytes;
+  storage_ = own_storage_ ? std::make_shared<ExchangeStorage>(to_bytes, from_bytes) : std::move(storage);
+  by_destination_ = static_cast<std::complex<T>*>(storage_->by_destination());
+  my_block_ = static_cast<std::complex<T>*>(storage_->my_block());
   if constexpr (!std::is_same_v<T, double>)
     caller_rows_.resize(static_cast<std::size_t>(kRowsPerChunk * slab.nx));
   plans_ = std::make_unique<Plans>(slab.nx, slab.ny, nxh_, slab.count);
@@ -156,7 +179,7 @@ SlabConvolutionEngine<T>::~SlabConvolutionEngine() = default;
 
 template <class T>
 std::size_t SlabConvolutionEngine<T>::bytes() const {
-  return sizeof(std::complex<T>) * (by_destination_.capacity() + my_block_.capacity()) +
+  return (own_storage_ ? storage_->by_destination_bytes() + storage_->my_block_bytes() : 0) +
          sizeof(double) * caller_rows_.capacity() +
          sizeof(T) * static_cast<std::size_t>(kRowsPerChunk * slab_.nx) +
          sizeof(std::complex<T>) *
@@ -192,7 +215,7 @@ void SlabConvolutionEngine<T>::apply(const std::function<void(Index, Real*)>& pr
       }
     }
     F::execute_r2c(rows == kRowsPerChunk ? plans.r2c_full : plans.r2c_rest, plans.rows, plans.row_spectra);
-    Cx* part = by_destination_.data();
+    Cx* part = by_destination_;
     for (Index r = 0; r < ranks; ++r) {
       const Index width = column_counts_[static_cast<std::size_t>(r)];
       const Index start = column_starts_[static_cast<std::size_t>(r)];
@@ -201,7 +224,7 @@ void SlabConvolutionEngine<T>::apply(const std::function<void(Index, Real*)>& pr
       part += slab_.count * width;
     }
   }
-  MPI_Alltoallv(by_destination_.data(), row_counts_.data(), row_offsets_.data(), type, my_block_.data(),
+  MPI_Alltoallv(by_destination_, row_counts_.data(), row_offsets_.data(), type, my_block_,
                 column_counts_values_.data(), column_offsets_values_.data(), type, comm_);
 
   // 2. This rank's columns, a block at a time in cache: along y, multiply, back (the transform back is the
@@ -234,11 +257,11 @@ void SlabConvolutionEngine<T>::apply(const std::function<void(Index, Real*)>& pr
 
   // 3. Back: each rank's rows of this rank's columns to it; each row gathered from its column runs and
   //    transformed back along x.
-  MPI_Alltoallv(my_block_.data(), column_counts_values_.data(), column_offsets_values_.data(), type,
-                by_destination_.data(), row_counts_.data(), row_offsets_.data(), type, comm_);
+  MPI_Alltoallv(my_block_, column_counts_values_.data(), column_offsets_values_.data(), type, by_destination_,
+                row_counts_.data(), row_offsets_.data(), type, comm_);
   for (Index first = 0; first < slab_.count; first += kRowsPerChunk) {
     const Index rows = std::min(kRowsPerChunk, slab_.count - first);
-    const Cx* part = by_destination_.data();
+    const Cx* part = by_destination_;
     for (Index r = 0; r < ranks; ++r) {
       const Index width = column_counts_[static_cast<std::size_t>(r)];
       const Index start = column_starts_[static_cast<std::size_t>(r)];

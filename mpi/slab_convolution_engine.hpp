@@ -23,6 +23,26 @@
 
 namespace contactbench::mpi {
 
+// The two exchange buffers, raw bytes (FFTW's alignment): an engine's own, or shared by engines that never
+// run at once (the solver's operator in double and its filter in float need the same values a point, the
+// filter half the bytes).
+class ExchangeStorage {
+ public:
+  ExchangeStorage(std::size_t by_destination_bytes, std::size_t my_block_bytes);
+  ~ExchangeStorage();
+  ExchangeStorage(const ExchangeStorage&) = delete;
+  ExchangeStorage& operator=(const ExchangeStorage&) = delete;
+  void* by_destination() const { return by_destination_; }
+  void* my_block() const { return my_block_; }
+  std::size_t by_destination_bytes() const { return by_destination_bytes_; }
+  std::size_t my_block_bytes() const { return my_block_bytes_; }
+
+ private:
+  void* by_destination_ = nullptr;
+  void* my_block_ = nullptr;
+  std::size_t by_destination_bytes_ = 0, my_block_bytes_ = 0;
+};
+
 template <class T>
 class SlabConvolutionEngine {
  public:
@@ -30,15 +50,19 @@ class SlabConvolutionEngine {
   // [column_start, column_start + column_count) of the nx/2 + 1, as every rank's are given in
   // `all_column_starts` / `all_column_counts` (rank order; FFTW-MPI's split, so that a multiplier made for
   // its transform serves here unchanged). Collective only in that every rank must make one.
+  // `storage`: exchange buffers to use when they are large enough (another engine's, that never runs at
+  // the same time as this one); else the engine makes its own.
   SlabConvolutionEngine(const Slab& slab, std::vector<Index> all_column_starts,
-                        std::vector<Index> all_column_counts, MPI_Comm comm);
+                        std::vector<Index> all_column_counts, MPI_Comm comm,
+                        std::shared_ptr<ExchangeStorage> storage = nullptr);
   ~SlabConvolutionEngine();
   SlabConvolutionEngine(const SlabConvolutionEngine&) = delete;
   SlabConvolutionEngine& operator=(const SlabConvolutionEngine&) = delete;
 
-  // Bytes it holds: the two exchange buffers (sizeof(T) a point of the slab each) and a few rows and
-  // columns.
+  // Bytes it holds: the two exchange buffers (sizeof(T) a point of the slab each) unless they are another
+  // engine's, and a few rows and columns.
   std::size_t bytes() const;
+  const std::shared_ptr<ExchangeStorage>& storage() const { return storage_; }
 
   // out = IDFT(M . DFT(in)): produce(r, row) writes the nx inputs of slab row r (rows in order); M is this
   // rank's columns' multiplier (in T for the product), column c's ny values (ky) at multiplier[c * ny + ky],
@@ -58,7 +82,10 @@ class SlabConvolutionEngine {
   Index my_columns_;
   // The rows' spectra by destination (this rank's rows x that rank's columns, row-major, in rank order),
   // and this rank's columns, ny x my_columns_ row-major (every rank's rows, in rank order).
-  std::vector<std::complex<T>> by_destination_, my_block_;
+  std::shared_ptr<ExchangeStorage> storage_;
+  bool own_storage_ = true;
+  std::complex<T>* by_destination_ = nullptr;
+  std::complex<T>* my_block_ = nullptr;
   std::vector<int> row_counts_, row_offsets_, column_counts_values_, column_offsets_values_;
   // The rows as the caller produces and consumes them (double), and the transforms' scratch and plans.
   std::vector<double> caller_rows_;
