@@ -9,6 +9,7 @@
 
 #include "contactbench/core/error.hpp"
 #include "contactbench/core/fft.hpp"
+#include "contactbench/core/fftw_precision.hpp"
 #include "contactbench/mpi/message_count.hpp"
 
 namespace contactbench::mpi {
@@ -22,59 +23,11 @@ constexpr const char* kEngineExchange = "an exchange of the slab convolution";
 // (bem/convolution.cpp): a chunk of rows in L2, a block of columns one cache line of each row.
 constexpr Index kRowsPerChunk = 8;
 
-// FFTW's interface in double (fftw_*) or single precision (fftwf_*).
+// MPI's type of a transform's real values.
 template <class T>
-struct Fftw;
-template <>
-struct Fftw<double> {
-  using Plan = fftw_plan;
-  using Cx = fftw_complex;
-  static MPI_Datatype mpi_type() { return MPI_DOUBLE; }
-  static double* alloc_real(std::size_t n) { return fftw_alloc_real(n); }
-  static Cx* alloc_complex(std::size_t n) { return fftw_alloc_complex(n); }
-  static void free(void* p) { fftw_free(p); }
-  static void destroy(Plan p) {
-    if (p) fftw_destroy_plan(p);
-  }
-  static Plan r2c(int n, int howmany, double* in, Cx* out, int n_half) {
-    return fftw_plan_many_dft_r2c(1, &n, howmany, in, nullptr, 1, n, out, nullptr, 1, n_half, FFTW_ESTIMATE);
-  }
-  static Plan c2r(int n, int howmany, Cx* in, double* out, int n_half) {
-    return fftw_plan_many_dft_c2r(1, &n, howmany, in, nullptr, 1, n_half, out, nullptr, 1, n, FFTW_ESTIMATE);
-  }
-  static Plan columns(int n, int howmany, Cx* data) {
-    return fftw_plan_many_dft(1, &n, howmany, data, nullptr, 1, n, data, nullptr, 1, n, FFTW_FORWARD,
-                              FFTW_ESTIMATE);
-  }
-  static void execute_r2c(Plan p, double* in, Cx* out) { fftw_execute_dft_r2c(p, in, out); }
-  static void execute_c2r(Plan p, Cx* in, double* out) { fftw_execute_dft_c2r(p, in, out); }
-  static void execute_c2c(Plan p, Cx* data) { fftw_execute_dft(p, data, data); }
-};
-template <>
-struct Fftw<float> {
-  using Plan = fftwf_plan;
-  using Cx = fftwf_complex;
-  static MPI_Datatype mpi_type() { return MPI_FLOAT; }
-  static float* alloc_real(std::size_t n) { return fftwf_alloc_real(n); }
-  static Cx* alloc_complex(std::size_t n) { return fftwf_alloc_complex(n); }
-  static void free(void* p) { fftwf_free(p); }
-  static void destroy(Plan p) {
-    if (p) fftwf_destroy_plan(p);
-  }
-  static Plan r2c(int n, int howmany, float* in, Cx* out, int n_half) {
-    return fftwf_plan_many_dft_r2c(1, &n, howmany, in, nullptr, 1, n, out, nullptr, 1, n_half, FFTW_ESTIMATE);
-  }
-  static Plan c2r(int n, int howmany, Cx* in, float* out, int n_half) {
-    return fftwf_plan_many_dft_c2r(1, &n, howmany, in, nullptr, 1, n_half, out, nullptr, 1, n, FFTW_ESTIMATE);
-  }
-  static Plan columns(int n, int howmany, Cx* data) {
-    return fftwf_plan_many_dft(1, &n, howmany, data, nullptr, 1, n, data, nullptr, 1, n, FFTW_FORWARD,
-                               FFTW_ESTIMATE);
-  }
-  static void execute_r2c(Plan p, float* in, Cx* out) { fftwf_execute_dft_r2c(p, in, out); }
-  static void execute_c2r(Plan p, Cx* in, float* out) { fftwf_execute_dft_c2r(p, in, out); }
-  static void execute_c2c(Plan p, Cx* data) { fftwf_execute_dft(p, data, data); }
-};
+MPI_Datatype mpi_type_of() {
+  return std::is_same_v<T, double> ? MPI_DOUBLE : MPI_FLOAT;
+}
 
 }  // namespace
 
@@ -107,22 +60,25 @@ struct SlabConvolutionEngine<T>::Plans {
   typename F::Plan columns_forward = nullptr;
 
   Plans(Index nx, Index ny, Index nxh, Index slab_rows) {
-    rows = F::alloc_real(static_cast<std::size_t>(kRowsPerChunk * nx));
-    row_spectra = F::alloc_complex(static_cast<std::size_t>(kRowsPerChunk * nxh));
-    columns = F::alloc_complex(static_cast<std::size_t>(kColumnsPerBlock * ny));
+    rows = static_cast<T*>(F::malloc(sizeof(T) * static_cast<std::size_t>(kRowsPerChunk * nx)));
+    row_spectra = static_cast<typename F::Cx*>(
+        F::malloc(sizeof(typename F::Cx) * static_cast<std::size_t>(kRowsPerChunk * nxh)));
+    columns = static_cast<typename F::Cx*>(
+        F::malloc(sizeof(typename F::Cx) * static_cast<std::size_t>(kColumnsPerBlock * ny)));
     if (!rows || !row_spectra || !columns)
       throw Error("mpi: out of memory for the slab convolution's buffers");
     const int n_x = static_cast<int>(nx), n_y = static_cast<int>(ny), n_xh = static_cast<int>(nxh);
     const int rest = static_cast<int>(slab_rows % kRowsPerChunk);
     auto lock = lock_fftw_planner();
-    fftw_plan_with_nthreads(1);
-    r2c_full = F::r2c(n_x, static_cast<int>(kRowsPerChunk), rows, row_spectra, n_xh);
-    c2r_full = F::c2r(n_x, static_cast<int>(kRowsPerChunk), row_spectra, rows, n_xh);
+    F::plan_with_nthreads(1);
+    const int full = static_cast<int>(kRowsPerChunk);
+    r2c_full = F::r2c(n_x, full, rows, n_x, row_spectra, n_xh, FFTW_ESTIMATE);
+    c2r_full = F::c2r(n_x, full, row_spectra, n_xh, rows, n_x, FFTW_ESTIMATE);
     if (rest > 0) {
-      r2c_rest = F::r2c(n_x, rest, rows, row_spectra, n_xh);
-      c2r_rest = F::c2r(n_x, rest, row_spectra, rows, n_xh);
+      r2c_rest = F::r2c(n_x, rest, rows, n_x, row_spectra, n_xh, FFTW_ESTIMATE);
+      c2r_rest = F::c2r(n_x, rest, row_spectra, n_xh, rows, n_x, FFTW_ESTIMATE);
     }
-    columns_forward = F::columns(n_y, static_cast<int>(kColumnsPerBlock), columns);
+    columns_forward = F::c2c(n_y, static_cast<int>(kColumnsPerBlock), columns, FFTW_FORWARD, FFTW_ESTIMATE);
     if (!r2c_full || !c2r_full || !columns_forward || (rest > 0 && (!r2c_rest || !c2r_rest)))
       throw Error("mpi: FFTW could not plan the slab convolution's transforms");
   }
@@ -200,7 +156,7 @@ void SlabConvolutionEngine<T>::apply(const std::function<void(Index, Real*)>& pr
   auto* spectra = reinterpret_cast<Cx*>(plans.row_spectra);
   auto* columns = reinterpret_cast<Cx*>(plans.columns);
   double* caller = caller_rows_.data();
-  const MPI_Datatype type = F::mpi_type();
+  const MPI_Datatype type = mpi_type_of<T>();
 
   // 1. Rows: produced, transformed along x, each row's spectrum cut into the destinations' column runs.
   for (Index first = 0; first < slab_.count; first += kRowsPerChunk) {
