@@ -110,6 +110,9 @@ TEST(DistributedHalfSpace, ARankWithoutRowsStillTakesPart) {
   // 2 rows on up to 3 ranks: FFTW gives blocks of ceil(2 / ranks) rows, so the last rank may own none.
   expect_operator_matches_serial({.nx = 16, .ny = 2, .lx = 1e-4, .ly = 1e-5, .periodic = true});
   expect_operator_matches_serial({.nx = 16, .ny = 2, .lx = 1e-4, .ly = 1e-5, .periodic = false});
+  // 2 columns: nx/2 + 1 = 2 spectral columns, so on 3 ranks one rank owns none (the slab engine's column
+  // blocks and exchanges with nothing of its own).
+  expect_operator_matches_serial({.nx = 2, .ny = 16, .lx = 1e-5, .ly = 1e-4, .periodic = true});
 }
 
 // The solver's filter, periodic: on two ranks and more in single precision (the slab engine), as the serial
@@ -138,6 +141,7 @@ TEST(DistributedFilter, EqualsTheSerialSinglePrecisionFilter) {
   expect_filter_matches_serial({.nx = 64, .ny = 64, .lx = 1e-4, .ly = 1e-4, .periodic = true});
   expect_filter_matches_serial({.nx = 45, .ny = 31, .lx = 2e-4, .ly = 1e-4, .periodic = true});
   expect_filter_matches_serial({.nx = 16, .ny = 2, .lx = 1e-4, .ly = 1e-5, .periodic = true});
+  expect_filter_matches_serial({.nx = 2, .ny = 16, .lx = 1e-5, .ly = 1e-4, .periodic = true});
 }
 
 }  // namespace
