@@ -196,7 +196,7 @@ int main(int argc, char** argv) {
   mpi::Environment environment(argc, argv);
   Index n = 1024;
   int iterations = 10, repetitions = 3, threads = 1;
-  bool serial = true, memory = false, estimate = false;
+  bool serial = true, memory = false, estimate = false, periodic = true;
   SolverKind solver = SolverKind::polonsky_keer;
   double tolerance = 0;  // 0: a fixed number of iterations
   SolverKind reference = SolverKind::active_set;
@@ -216,6 +216,8 @@ int main(int argc, char** argv) {
       solver = solver_kind(value(), "--solver");
     else if (arg == "--no-serial")
       serial = false;
+    else if (arg == "--non-periodic")
+      periodic = false;
     else if (arg == "--memory")
       memory = true;
     else if (arg == "--estimate")
@@ -233,8 +235,9 @@ int main(int argc, char** argv) {
   }
   const MPI_Comm comm = MPI_COMM_WORLD;
   const int rank = mpi::rank_of(comm), ranks = mpi::size_of(comm);
-  // Surface A's spectrum (docs/theory.md section 2) on n x n points over 200 um, periodic.
-  const Grid grid{.nx = n, .ny = n, .lx = 200e-6, .ly = 200e-6, .periodic = true};
+  // Surface A's spectrum (docs/theory.md section 2) on n x n points over 200 um, periodic (or solved as a
+  // non-periodic patch: --non-periodic).
+  const Grid grid{.nx = n, .ny = n, .lx = 200e-6, .ly = 200e-6, .periodic = periodic};
   const SelfAffinePsd psd{.sigma = 0.5e-6, .hurst = 0.5, .qr = 3.14e4, .qs = std::nullopt};
   if (estimate) {
     BemSolverOptions options;

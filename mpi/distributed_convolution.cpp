@@ -33,9 +33,10 @@ DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MP
   if (share && (share->padded_ != padded || share->lx_ != lx_ || share->ly_ != ly_ ||
                 share->slab_.nx != slab_.nx || share->slab_.ny != slab_.ny))
     throw Error("mpi: a convolution can share the transform of one of the same grid and lattice only");
-  // Periodic on two ranks and more, one thread a rank: the slab engine, with FFTW-MPI's split of the
-  // spectral columns (so that the multipliers are made alike) but none of its transform.
-  const bool slab_engine = !padded && size_of(comm) > 1 && threads <= 1;
+  // Two ranks and more, one thread a rank: the slab engine, with FFTW-MPI's split of the spectral columns
+  // (so that the multipliers are made alike) but none of its transform (a padded operator makes one for
+  // Love's kernel, transform(), and frees it once its multiplier is set).
+  const bool slab_engine = size_of(comm) > 1 && threads <= 1;
   spectrum_ = spectrum_columns(lx_, ly_, comm);
   if (!slab_engine)
     fft_ =
@@ -65,14 +66,14 @@ DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MP
       // The filter in float takes the operator's exchange buffers (`share`: never run at once).
       if (single_precision)
         float_engine_ = std::make_unique<SlabConvolutionEngine<float>>(
-            slab_, std::move(starts), std::move(counts), comm,
+            slab_, lx_, ly_, std::move(starts), std::move(counts), comm,
             share && share->engine_ ? share->engine_->storage() : nullptr);
       else
-        engine_ = std::make_shared<SlabConvolutionEngine<double>>(slab_, std::move(starts), std::move(counts),
-                                                                  comm);
+        engine_ = std::make_shared<SlabConvolutionEngine<double>>(slab_, lx_, ly_, std::move(starts),
+                                                                  std::move(counts), comm);
     }
   }
-  if (!padded) return;
+  if (!padded || slab_engine) return;
   buffers_->padded_rows.resize(static_cast<std::size_t>(std::max<Index>(slab_.points(), 1)));
   // The exchange plan: this rank's grid rows to the transform slabs that hold them. Both layouts are in rank
   // order, so what a rank sends (receives) is contiguous and in row order.
@@ -98,7 +99,8 @@ DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MP
 DistributedConvolution::~DistributedConvolution() = default;
 
 DistributedRealFft2d& DistributedConvolution::transform() {
-  if (!fft_) throw Error("internal: a periodic convolution on the slab engine has no FFTW-MPI transform");
+  // On the slab engine, made when asked (Love's kernel, collectively) and freed by set_multiplier.
+  if (!fft_) fft_ = std::make_shared<DistributedRealFft2d>(lx_, ly_, comm_, 1);
   return *fft_;
 }
 
@@ -108,6 +110,7 @@ void DistributedConvolution::set_multiplier(std::vector<double> multiplier) {
                 std::to_string(spectrum_.count) + " spectral columns need " +
                 std::to_string(multiplier_.size()));
   multiplier_ = std::move(multiplier);
+  if (engine_ || float_engine_) fft_.reset();  // only made to transform a kernel
   double sum = 0;
   for (Index c = 0; c < spectrum_.count; ++c) {
     const double weight = column_weight_[static_cast<std::size_t>(c)];
@@ -132,7 +135,7 @@ void DistributedConvolution::apply(const Real* in, Real* out) {
     alone_->apply(in, out);
     return;
   }
-  if (!padded_) {
+  if (!padded_ || engine_ || float_engine_) {
     apply([&](Index r, Real* row) { std::copy_n(in + r * nx, nx, row); },
           [&](Index r, const Real* row) { std::copy_n(row, nx, out + r * nx); });
     return;

@@ -53,30 +53,35 @@ template <class T>
 struct SlabConvolutionEngine<T>::Plans {
   using F = Fftw<T>;
   static constexpr Index kColumnsPerBlock = 64 / static_cast<Index>(sizeof(std::complex<T>));
-  T* rows = nullptr;                      // a chunk of rows, in T
+  T* rows = nullptr;                      // a chunk of rows, in T, as transformed (zero beyond nx)
+  T* rows_out = nullptr;                  // a chunk of rows transformed back (all lx values)
   typename F::Cx* row_spectra = nullptr;  // their spectra
   typename F::Cx* columns = nullptr;      // a block of columns, each contiguous
   typename F::Plan r2c_full = nullptr, r2c_rest = nullptr, c2r_full = nullptr, c2r_rest = nullptr;
   typename F::Plan columns_forward = nullptr;
 
-  Plans(Index nx, Index ny, Index nxh, Index slab_rows) {
+  // Rows of lx values (the grid's nx, then zeros when padded), columns of ly.
+  Plans(Index lx, Index ly, Index nxh, Index slab_rows) {
+    const Index nx = lx, ny = ly;  // the transforms' lengths
     rows = static_cast<T*>(F::malloc(sizeof(T) * static_cast<std::size_t>(kRowsPerChunk * nx)));
+    rows_out = static_cast<T*>(F::malloc(sizeof(T) * static_cast<std::size_t>(kRowsPerChunk * nx)));
     row_spectra = static_cast<typename F::Cx*>(
         F::malloc(sizeof(typename F::Cx) * static_cast<std::size_t>(kRowsPerChunk * nxh)));
     columns = static_cast<typename F::Cx*>(
         F::malloc(sizeof(typename F::Cx) * static_cast<std::size_t>(kColumnsPerBlock * ny)));
-    if (!rows || !row_spectra || !columns)
+    if (!rows || !rows_out || !row_spectra || !columns)
       throw Error("mpi: out of memory for the slab convolution's buffers");
     const int n_x = static_cast<int>(nx), n_y = static_cast<int>(ny), n_xh = static_cast<int>(nxh);
     const int rest = static_cast<int>(slab_rows % kRowsPerChunk);
     auto lock = lock_fftw_planner();
     F::plan_with_nthreads(1);
+    std::fill(rows, rows + kRowsPerChunk * nx, T(0));  // the padding stays zero: rows are produced nx long
     const int full = static_cast<int>(kRowsPerChunk);
     r2c_full = F::r2c(n_x, full, rows, n_x, row_spectra, n_xh, FFTW_ESTIMATE);
-    c2r_full = F::c2r(n_x, full, row_spectra, n_xh, rows, n_x, FFTW_ESTIMATE);
+    c2r_full = F::c2r(n_x, full, row_spectra, n_xh, rows_out, n_x, FFTW_ESTIMATE);
     if (rest > 0) {
       r2c_rest = F::r2c(n_x, rest, rows, n_x, row_spectra, n_xh, FFTW_ESTIMATE);
-      c2r_rest = F::c2r(n_x, rest, row_spectra, n_xh, rows, n_x, FFTW_ESTIMATE);
+      c2r_rest = F::c2r(n_x, rest, row_spectra, n_xh, rows_out, n_x, FFTW_ESTIMATE);
     }
     columns_forward = F::c2c(n_y, static_cast<int>(kColumnsPerBlock), columns, FFTW_FORWARD, FFTW_ESTIMATE);
     if (!r2c_full || !c2r_full || !columns_forward || (rest > 0 && (!r2c_rest || !c2r_rest)))
@@ -89,6 +94,7 @@ struct SlabConvolutionEngine<T>::Plans {
         F::destroy(p);
     }
     F::free(rows);
+    F::free(rows_out);
     F::free(row_spectra);
     F::free(columns);
   }
@@ -97,12 +103,15 @@ struct SlabConvolutionEngine<T>::Plans {
 };
 
 template <class T>
-SlabConvolutionEngine<T>::SlabConvolutionEngine(const Slab& slab, std::vector<Index> all_column_starts,
+SlabConvolutionEngine<T>::SlabConvolutionEngine(const Slab& slab, Index lx, Index ly,
+                                                std::vector<Index> all_column_starts,
                                                 std::vector<Index> all_column_counts, MPI_Comm comm,
                                                 std::shared_ptr<ExchangeStorage> storage)
     : slab_(slab),
       comm_(comm),
-      nxh_(slab.nx / 2 + 1),
+      lx_(lx),
+      ly_(ly),
+      nxh_(lx / 2 + 1),
       column_starts_(std::move(all_column_starts)),
       column_counts_(std::move(all_column_counts)),
       my_columns_(column_counts_.at(static_cast<std::size_t>(rank_of(comm)))) {
@@ -127,7 +136,7 @@ SlabConvolutionEngine<T>::SlabConvolutionEngine(const Slab& slab, std::vector<In
   my_block_ = static_cast<std::complex<T>*>(storage_->my_block());
   if constexpr (!std::is_same_v<T, double>)
     caller_rows_.resize(static_cast<std::size_t>(kRowsPerChunk * slab.nx));
-  plans_ = std::make_unique<Plans>(slab.nx, slab.ny, nxh_, slab.count);
+  plans_ = std::make_unique<Plans>(lx, ly, nxh_, slab.count);
 }
 
 template <class T>
@@ -137,9 +146,9 @@ template <class T>
 std::size_t SlabConvolutionEngine<T>::bytes() const {
   return (own_storage_ ? storage_->by_destination_bytes() + storage_->my_block_bytes() : 0) +
          sizeof(double) * caller_rows_.capacity() +
-         sizeof(T) * static_cast<std::size_t>(kRowsPerChunk * slab_.nx) +
+         sizeof(T) * static_cast<std::size_t>(2 * kRowsPerChunk * lx_) +
          sizeof(std::complex<T>) *
-             static_cast<std::size_t>(kRowsPerChunk * nxh_ + Plans::kColumnsPerBlock * slab_.ny);
+             static_cast<std::size_t>(kRowsPerChunk * nxh_ + Plans::kColumnsPerBlock * ly_);
 }
 
 template <class T>
@@ -152,7 +161,8 @@ void SlabConvolutionEngine<T>::apply(const std::function<void(Index, Real*)>& pr
   using Cx = std::complex<T>;
   constexpr Index B = Plans::kColumnsPerBlock;
   Plans& plans = *plans_;
-  const Index nx = slab_.nx, ny = slab_.ny, ranks = static_cast<Index>(column_counts_.size());
+  const Index nx = slab_.nx, ny = slab_.ny, lx = lx_, ly = ly_,
+              ranks = static_cast<Index>(column_counts_.size());
   auto* spectra = reinterpret_cast<Cx*>(plans.row_spectra);
   auto* columns = reinterpret_cast<Cx*>(plans.columns);
   double* caller = caller_rows_.data();
@@ -163,11 +173,11 @@ void SlabConvolutionEngine<T>::apply(const std::function<void(Index, Real*)>& pr
     const Index rows = std::min(kRowsPerChunk, slab_.count - first);
     for (Index i = 0; i < rows; ++i) {
       if constexpr (std::is_same_v<T, double>) {
-        produce(first + i, plans.rows + i * nx);
+        produce(first + i, plans.rows + i * lx);
       } else {
         produce(first + i, caller);
         for (Index x = 0; x < nx; ++x)
-          plans.rows[i * nx + x] = static_cast<T>(caller[x]);
+          plans.rows[i * lx + x] = static_cast<T>(caller[x]);
       }
     }
     F::execute_r2c(rows == kRowsPerChunk ? plans.r2c_full : plans.r2c_rest, plans.rows, plans.row_spectra);
@@ -190,14 +200,16 @@ void SlabConvolutionEngine<T>::apply(const std::function<void(Index, Real*)>& pr
     const Index width = std::min(B, my_columns_ - c0);
     for (Index y = 0; y < ny; ++y)
       for (Index j = 0; j < width; ++j)
-        columns[j * ny + y] = my_block_[static_cast<std::size_t>(y * my_columns_ + c0 + j)];
-    if (width < B) std::fill(columns + width * ny, columns + B * ny, Cx(0));
+        columns[j * ly + y] = my_block_[static_cast<std::size_t>(y * my_columns_ + c0 + j)];
+    for (Index j = 0; j < width; ++j)  // the padding's rows (none when periodic)
+      std::fill(columns + j * ly + ny, columns + (j + 1) * ly, Cx(0));
+    if (width < B) std::fill(columns + width * ly, columns + B * ly, Cx(0));
     F::execute_c2c(plans.columns_forward, plans.columns);
     for (Index j = 0; j < width; ++j) {
-      Cx* column = columns + j * ny;
-      const double* m = multiplier.data() + (c0 + j) * ny;
+      Cx* column = columns + j * ly;
+      const double* m = multiplier.data() + (c0 + j) * ly;
       double sum = 0;
-      for (Index k = 0; k < ny; ++k) {
+      for (Index k = 0; k < ly; ++k) {
         const T mk = static_cast<T>(m[k]);
         sum += static_cast<double>(mk) * std::norm(std::complex<double>(column[k]));
         column[k] = std::conj(column[k] * mk);
@@ -207,7 +219,7 @@ void SlabConvolutionEngine<T>::apply(const std::function<void(Index, Real*)>& pr
     F::execute_c2c(plans.columns_forward, plans.columns);
     for (Index y = 0; y < ny; ++y)
       for (Index j = 0; j < width; ++j)
-        my_block_[static_cast<std::size_t>(y * my_columns_ + c0 + j)] = std::conj(columns[j * ny + y]);
+        my_block_[static_cast<std::size_t>(y * my_columns_ + c0 + j)] = std::conj(columns[j * ly + y]);
   }
   if (multiplied) multiplied(energy);
 
@@ -225,13 +237,14 @@ void SlabConvolutionEngine<T>::apply(const std::function<void(Index, Real*)>& pr
         std::copy_n(part + (first + i) * width, width, spectra + i * nxh_ + start);
       part += slab_.count * width;
     }
-    F::execute_c2r(rows == kRowsPerChunk ? plans.c2r_full : plans.c2r_rest, plans.row_spectra, plans.rows);
+    F::execute_c2r(rows == kRowsPerChunk ? plans.c2r_full : plans.c2r_rest, plans.row_spectra,
+                   plans.rows_out);
     for (Index i = 0; i < rows; ++i) {
       if constexpr (std::is_same_v<T, double>) {
-        consume(first + i, plans.rows + i * nx);
+        consume(first + i, plans.rows_out + i * lx);
       } else {
         for (Index x = 0; x < nx; ++x)
-          caller[x] = static_cast<double>(plans.rows[i * nx + x]);
+          caller[x] = static_cast<double>(plans.rows_out[i * lx + x]);
         consume(first + i, caller);
       }
     }

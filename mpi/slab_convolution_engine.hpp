@@ -1,14 +1,14 @@
-// The periodic convolution on slabs of rows with one exchange each way and no global transpose of its own:
-// what DistributedConvolution runs on two ranks and more, one thread a rank (docs/mpi.md "What a
-// distributed iteration costs"). FFTW-MPI's pair moves each value through a local transpose, the global
-// one and another local one each way, and multiplies in a pass of its own; here, as in the serial engine
-// (bem/convolution.hpp), each rank transforms its rows and writes each row's spectrum straight into the
-// send buffer's part for the rank that owns those columns; one MPI_Alltoallv leaves each rank its columns
-// as an ny x columns block, row-major, which it transforms a few columns at a time in cache (along y,
-// multiply, back: the serial engine's column blocks); the same block goes back by one MPI_Alltoallv, and
-// each row is gathered from the parts as it is transformed back. In double, or in single precision for the
-// solver's filter (the serial filter's precision, bem/fourier_preconditioner.hpp): the rows produced are
-// rounded to float before the transform, and its output read as doubles.
+// The convolution on slabs of rows (circular, or linear by zero padding) with one exchange each way and no
+// global transpose of its own: what DistributedConvolution runs on two ranks and more, one thread a rank
+// (docs/mpi.md "What a distributed iteration costs"). FFTW-MPI's pair moves each value through a local
+// transpose, the global one and another local one each way, and multiplies in a pass of its own; here, as in
+// the serial engine (bem/convolution.hpp), each rank transforms its rows and writes each row's spectrum
+// straight into the send buffer's part for the rank that owns those columns; one MPI_Alltoallv leaves each
+// rank its columns as an ny x columns block, row-major, which it transforms a few columns at a time in cache
+// (along y, multiply, back: the serial engine's column blocks); the same block goes back by one
+// MPI_Alltoallv, and each row is gathered from the parts as it is transformed back. In double, or in single
+// precision for the solver's filter (the serial filter's precision, bem/fourier_preconditioner.hpp): the rows
+// produced are rounded to float before the transform, and its output read as doubles.
 #pragma once
 
 #include <complex>
@@ -46,13 +46,15 @@ class ExchangeStorage {
 template <class T>
 class SlabConvolutionEngine {
  public:
-  // A periodic nx x ny grid split in `slab`s (slab_of); this rank's spectral columns are kx in
-  // [column_start, column_start + column_count) of the nx/2 + 1, as every rank's are given in
+  // An nx x ny grid split in `slab`s (slab_of), its transform's lattice lx x ly: the grid itself (periodic,
+  // circular) or 2 nx x 2 ny (zero padding, linear: the padding's rows are never stored or sent, as the
+  // serial engine skips them). This rank's spectral columns are kx in [start, start + count) of the
+  // lx/2 + 1, as every rank's are given in
   // `all_column_starts` / `all_column_counts` (rank order; FFTW-MPI's split, so that a multiplier made for
   // its transform serves here unchanged). Collective only in that every rank must make one.
   // `storage`: exchange buffers to use when they are large enough (another engine's, that never runs at
   // the same time as this one); else the engine makes its own.
-  SlabConvolutionEngine(const Slab& slab, std::vector<Index> all_column_starts,
+  SlabConvolutionEngine(const Slab& slab, Index lx, Index ly, std::vector<Index> all_column_starts,
                         std::vector<Index> all_column_counts, MPI_Comm comm,
                         std::shared_ptr<ExchangeStorage> storage = nullptr);
   ~SlabConvolutionEngine();
@@ -65,8 +67,8 @@ class SlabConvolutionEngine {
   const std::shared_ptr<ExchangeStorage>& storage() const { return storage_; }
 
   // out = IDFT(M . DFT(in)): produce(r, row) writes the nx inputs of slab row r (rows in order); M is this
-  // rank's columns' multiplier (in T for the product), column c's ny values (ky) at multiplier[c * ny + ky],
-  // even in ky, the pair's 1/(nx ny) folded in; column_weight[c] is 1 or 2 (the column's Hermitian partner
+  // rank's columns' multiplier (in T for the product), column c's ly values (ky) at multiplier[c * ly + ky],
+  // even in ky, the pair's 1/(lx ly) folded in; column_weight[c] is 1 or 2 (the column's Hermitian partner
   // counted). multiplied(energy), when given, receives this rank's sum of weight M |in_q|^2 before the
   // transform back; consume(r, row) reads the nx outputs of slab row r (rows in order). Collective.
   void apply(const std::function<void(Index, Real*)>& produce,
@@ -77,7 +79,7 @@ class SlabConvolutionEngine {
   struct Plans;
   Slab slab_;
   MPI_Comm comm_;
-  Index nxh_;
+  Index lx_, ly_, nxh_;
   std::vector<Index> column_starts_, column_counts_;
   Index my_columns_;
   // The rows' spectra by destination (this rank's rows x that rank's columns, row-major, in rank order),
