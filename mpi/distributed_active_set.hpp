@@ -2,7 +2,7 @@
 // active-set method"), on slabs (docs/mpi.md "The default solver"): the serial method's steps
 // (bem/solvers/active_set_*.cpp) with each rank holding its slab of the heights, pressure, displacement and
 // the CG's vectors, the operator and the filter as distributed convolutions (mpi/distributed_half_space.hpp:
-// periodic on two ranks and more the slab engine, mpi/slab_convolution_engine.hpp), every global
+// on two ranks and more the slab engine, mpi/slab_convolution_engine.hpp), every global
 // sum combined in rank order from an MPI_Allgather (so every rank takes the same decisions), the extended
 // filter's window sums over a halo of kExtensionRadius rows (mpi/row_exchange.hpp, from further ranks when
 // a slab is thinner), the few changed nodes' columns of G added by the operator applied to those changes

@@ -26,7 +26,7 @@ class DistributedConvolution {
   // Collective; the multiplier is zero until set. `share`: another convolution of the same grid and lattice
   // whose transform and exchange buffers this one uses too (a convolution's transform is scratch between
   // two applications, so two that never run at once need one: docs/mpi.md "Memory a point").
-  // `single_precision`: where the slab engine runs (periodic, two ranks and more, one thread a rank), its
+  // `single_precision`: where the slab engine runs (two ranks and more, one thread a rank), its
   // transform in float, the rows produced rounded to float (the solver's filter, whose serial transform is in
   // single precision); elsewhere in double.
   DistributedConvolution(const Grid& grid, bool padded, MPI_Comm comm, int threads = 1,
@@ -99,7 +99,7 @@ class DistributedConvolution {
   // cache with the multiply between, no transpose), the same multiplier; FFTW-MPI's plan with its local
   // transposes then only makes the multiplier.
   std::unique_ptr<Convolution<double>> alone_;
-  // Periodic on two ranks and more, one thread a rank: the rows' spectra exchanged straight into column
+  // Two ranks and more, one thread a rank: the rows' spectra exchanged straight into column
   // blocks (mpi/slab_convolution_engine.hpp) instead of FFTW-MPI's pair; in double shared with `share` as
   // the transform is, in single precision its own.
   std::shared_ptr<SlabConvolutionEngine<double>> engine_;
