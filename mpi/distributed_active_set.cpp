@@ -157,7 +157,12 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
       gather_bound_(gather_bound),
       operator_(grid, modulus, comm, threads),
       // The filter runs between the operator's applications, never during one: one transform for both.
-      filter_(make_distributed_unit_preconditioner(grid, comm, threads, &operator_.convolution())),
+      // In double (sharing the operator's engine or transform), its input and output rounded to float as the
+      // serial single-precision filter rounds them (filter_pass). In float on the slab engine it was 8 %
+      // faster at 2048² on 2 ranks, but its round-off, unlike the serial filter's, moved a capped scene's
+      // iterations by two under clang (studies/hardness_A.toml at --grid 32 on 2 ranks: 21 against one
+      // process's 23; docs/mpi.md "A transform of the project's own").
+      filter_(make_distributed_unit_preconditioner(grid, comm, threads, &operator_.convolution(), false)),
       n_(static_cast<std::size_t>(slab_.points())),
       points_(static_cast<double>(grid.points())),
       h_(std::move(local_heights)) {

@@ -86,16 +86,13 @@ std::unique_ptr<DistributedConvolution> make_distributed_preconditioner(const Gr
 }
 
 std::unique_ptr<DistributedConvolution> make_distributed_unit_preconditioner(
-    const Grid& grid, MPI_Comm comm, int threads, const DistributedConvolution* share) {
+    const Grid& grid, MPI_Comm comm, int threads, const DistributedConvolution* share,
+    bool single_precision) {
   validate(grid, "distributed filter grid");
   const bool padded = !grid.periodic;
   const Grid lattice_grid = filter_lattice(grid);
-  // In double (sharing the operator's engine or transform), its input and output rounded to float as the
-  // serial single-precision filter rounds them (mpi/distributed_active_set.cpp). The slab engine in float
-  // (DistributedConvolution's single_precision) was 8 % faster at 2048² on 2 ranks, but its float
-  // round-off, unlike the serial filter's, moved a capped scene's iterations by two under clang
-  // (studies/hardness_A.toml at --grid 32 on 2 ranks: 21 against one process's 23; docs/mpi.md).
-  auto convolution = std::make_unique<DistributedConvolution>(grid, padded, comm, threads, share, false);
+  auto convolution =
+      std::make_unique<DistributedConvolution>(grid, padded, comm, threads, share, single_precision);
   // |q| / max |q| with the pair's normalisation: the serial filter's arithmetic
   // (bem/fourier_preconditioner.cpp, (1/2)|q| / (points) first, then divided by its peak times the lattice's
   // points).

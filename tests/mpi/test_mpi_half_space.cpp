@@ -115,14 +115,15 @@ TEST(DistributedHalfSpace, ARankWithoutRowsStillTakesPart) {
   expect_operator_matches_serial({.nx = 2, .ny = 16, .lx = 1e-5, .ly = 1e-4, .periodic = true});
 }
 
-// The solver's filter, periodic: on two ranks and more in single precision (the slab engine), as the serial
-// filter is. Against the serial float filter on the same input rounded to float: two float transform pairs
-// computed in different orders differ by a few float ulps times log2 n, ~1e-6 of the peak; 1e-5 catches any
-// misplaced row or mode (errors of O(1)).
+// The solver's filter, periodic, in double (the solver's) and on two ranks and more in single precision too
+// (the slab engine's float transform). Against the serial float filter on the same input rounded to float:
+// float transform pairs computed in different orders differ by a few float ulps times log2 n, ~1e-6 of the
+// peak; 1e-5 catches any misplaced row or mode (errors of O(1)).
 constexpr double kFloatFilterTolerance = 1e-5;
 
-void expect_filter_matches_serial(const Grid& grid) {
-  const auto distributed = make_distributed_unit_preconditioner(grid, MPI_COMM_WORLD, 1, nullptr);
+void expect_filter_matches_serial(const Grid& grid, bool single_precision) {
+  const auto distributed =
+      make_distributed_unit_preconditioner(grid, MPI_COMM_WORLD, 1, nullptr, single_precision);
   const Slab& slab = distributed->slab();
   const HeightMap residual = test_field(grid.nx, grid.ny, 5) - 1.5;
   HeightMap local = rows_of(residual, slab);
@@ -133,15 +134,23 @@ void expect_filter_matches_serial(const Grid& grid) {
     Eigen::Array<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> out(grid.ny, grid.nx);
     make_unit_fourier_preconditioner<float>(grid)->apply(in.data(), out.data());
     EXPECT_LT(relative_difference(filtered, out.cast<double>()), kFloatFilterTolerance)
-        << grid.nx << " x " << grid.ny;
+        << grid.nx << " x " << grid.ny << (single_precision ? " in float" : " in double");
   }
 }
 
 TEST(DistributedFilter, EqualsTheSerialSinglePrecisionFilter) {
-  expect_filter_matches_serial({.nx = 64, .ny = 64, .lx = 1e-4, .ly = 1e-4, .periodic = true});
-  expect_filter_matches_serial({.nx = 45, .ny = 31, .lx = 2e-4, .ly = 1e-4, .periodic = true});
-  expect_filter_matches_serial({.nx = 16, .ny = 2, .lx = 1e-4, .ly = 1e-5, .periodic = true});
-  expect_filter_matches_serial({.nx = 2, .ny = 16, .lx = 1e-5, .ly = 1e-4, .periodic = true});
+  for (const bool single_precision : {false, true}) {
+    expect_filter_matches_serial({.nx = 64, .ny = 64, .lx = 1e-4, .ly = 1e-4, .periodic = true},
+                                 single_precision);
+    expect_filter_matches_serial({.nx = 45, .ny = 31, .lx = 2e-4, .ly = 1e-4, .periodic = true},
+                                 single_precision);
+    expect_filter_matches_serial({.nx = 16, .ny = 2, .lx = 1e-4, .ly = 1e-5, .periodic = true},
+                                 single_precision);
+    expect_filter_matches_serial({.nx = 2, .ny = 16, .lx = 1e-5, .ly = 1e-4, .periodic = true},
+                                 single_precision);
+    expect_filter_matches_serial({.nx = 24, .ny = 20, .lx = 1e-4, .ly = 1e-4, .periodic = false},
+                                 single_precision);
+  }
 }
 
 }  // namespace
