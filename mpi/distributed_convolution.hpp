@@ -38,7 +38,8 @@ class DistributedConvolution {
   Index lx() const { return lx_; }  // the transform's lattice: nx x ny, or 2 nx x 2 ny padded
   Index ly() const { return ly_; }
   // The transform, for filling its real slab (a kernel) and reading its spectrum when making a multiplier
-  // (padded only: a periodic convolution where the slab engine runs has none).
+  // (Love's kernel, padded): where the slab engine runs, made on this first call, collectively, and freed by
+  // set_multiplier.
   DistributedRealFft2d& transform();
   // This rank's spectral columns kx of the transform's lattice, where its multiplier is given.
   Index spectrum_start() const { return spectrum_.start; }

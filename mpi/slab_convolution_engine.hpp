@@ -7,8 +7,9 @@
 // rank its columns as an ny x columns block, row-major, which it transforms a few columns at a time in cache
 // (along y, multiply, back: the serial engine's column blocks); the same block goes back by one
 // MPI_Alltoallv, and each row is gathered from the parts as it is transformed back. In double, or in single
-// precision for the solver's filter (the serial filter's precision, bem/fourier_preconditioner.hpp): the rows
-// produced are rounded to float before the transform, and its output read as doubles.
+// precision (the serial filter's, bem/fourier_preconditioner.hpp; the solver's filter runs in double,
+// docs/mpi.md says why): the rows produced are rounded to float before the transform, its output read as
+// doubles.
 #pragma once
 
 #include <complex>
