@@ -58,6 +58,15 @@ int MPI_Alltoallv(const void* send, const int send_counts[], const int send_offs
   });
 }
 
+int MPI_Alltoallw(const void* send, const int send_counts[], const int send_offsets[],
+                  const MPI_Datatype send_types[], void* receive, const int receive_counts[],
+                  const int receive_offsets[], const MPI_Datatype receive_types[], MPI_Comm comm) {
+  return exchange([&] {
+    return PMPI_Alltoallw(send, send_counts, send_offsets, send_types, receive, receive_counts,
+                          receive_offsets, receive_types, comm);
+  });
+}
+
 int MPI_Sendrecv(const void* send, int send_count, MPI_Datatype send_type, int destination, int send_tag,
                  void* receive, int receive_count, MPI_Datatype receive_type, int source, int receive_tag,
                  MPI_Comm comm, MPI_Status* status) {
@@ -65,6 +74,11 @@ int MPI_Sendrecv(const void* send, int send_count, MPI_Datatype send_type, int d
     return PMPI_Sendrecv(send, send_count, send_type, destination, send_tag, receive, receive_count,
                          receive_type, source, receive_tag, comm, status);
   });
+}
+
+// The slab engine's exchange in shared memory (mpi/exchange_storage.hpp): a barrier where the messages were.
+int MPI_Barrier(MPI_Comm comm) {
+  return exchange([&] { return PMPI_Barrier(comm); });
 }
 
 int MPI_Allreduce(const void* send, void* receive, int count, MPI_Datatype type, MPI_Op op, MPI_Comm comm) {

@@ -2,14 +2,16 @@
 // global transpose of its own: what DistributedConvolution runs on two ranks and more, one thread a rank
 // (docs/mpi.md "What a distributed iteration costs"). FFTW-MPI's pair moves each value through a local
 // transpose, the global one and another local one each way, and multiplies in a pass of its own; here, as in
-// the serial engine (bem/convolution.hpp), each rank transforms its rows and writes each row's spectrum
-// straight into the send buffer's part for the rank that owns those columns; one MPI_Alltoallv leaves each
-// rank its columns as an ny x columns block, row-major, which it transforms a few columns at a time in cache
-// (along y, multiply, back: the serial engine's column blocks); the same block goes back by one
-// MPI_Alltoallv, and each row is gathered from the parts as it is transformed back. In double, or in single
-// precision (the serial filter's, bem/fourier_preconditioner.hpp; the solver's filter runs in double,
-// docs/mpi.md says why): the rows produced are rounded to float before the transform, its output read as
-// doubles.
+// the serial engine (bem/convolution.hpp), each rank transforms its rows, their spectra written in place in
+// its rows' buffer; each rank transforms its columns of every rank's rows a few columns at a time in cache
+// (along y, multiply, back: the serial engine's column blocks), and each rank transforms its rows back from
+// where they lie. Between the passes the columns reach their owner and come back: on one machine they are
+// read and written in place in memory the ranks share (mpi/exchange_storage.hpp), between two barriers, and
+// nothing is copied; otherwise one MPI_Alltoallw each way, whose derived types pick each rank's runs out of
+// the rows and into its ny x columns block. The same arithmetic either way, so the same bits.
+// In double, or in single precision (the serial filter's, bem/fourier_preconditioner.hpp; the solver's filter
+// runs in double, docs/mpi.md says why): the rows produced are rounded to float before the transform, its
+// output read as doubles.
 #pragma once
 
 #include <complex>
@@ -20,29 +22,10 @@
 #include <mpi.h>
 
 #include "contactbench/core/types.hpp"
+#include "contactbench/mpi/exchange_storage.hpp"
 #include "contactbench/mpi/slab.hpp"
 
 namespace contactbench::mpi {
-
-// The two exchange buffers, raw bytes (FFTW's alignment): an engine's own, or shared by engines that never
-// run at once (the solver's operator in double and its filter in float need the same values a point, the
-// filter half the bytes).
-class ExchangeStorage {
- public:
-  ExchangeStorage(std::size_t by_destination_bytes, std::size_t my_block_bytes);
-  ~ExchangeStorage();
-  ExchangeStorage(const ExchangeStorage&) = delete;
-  ExchangeStorage& operator=(const ExchangeStorage&) = delete;
-  void* by_destination() const { return by_destination_; }
-  void* my_block() const { return my_block_; }
-  std::size_t by_destination_bytes() const { return by_destination_bytes_; }
-  std::size_t my_block_bytes() const { return my_block_bytes_; }
-
- private:
-  void* by_destination_ = nullptr;
-  void* my_block_ = nullptr;
-  std::size_t by_destination_bytes_ = 0, my_block_bytes_ = 0;
-};
 
 template <class T>
 class SlabConvolutionEngine {
@@ -53,8 +36,9 @@ class SlabConvolutionEngine {
   // lx/2 + 1, as every rank's are given in
   // `all_column_starts` / `all_column_counts` (rank order; FFTW-MPI's split, so that a multiplier made for
   // its transform serves here unchanged). Collective only in that every rank must make one.
-  // `storage`: exchange buffers to use when they are large enough (another engine's, that never runs at
-  // the same time as this one); else the engine makes its own.
+  // `storage`: exchange buffers to use when they are large enough on every rank (another engine's, that
+  // never runs at the same time as this one); else the engine makes its own, with the transport
+  // choose_exchange_transport gives.
   SlabConvolutionEngine(const Slab& slab, Index lx, Index ly, std::vector<Index> all_column_starts,
                         std::vector<Index> all_column_counts, MPI_Comm comm,
                         std::shared_ptr<ExchangeStorage> storage = nullptr);
@@ -62,8 +46,8 @@ class SlabConvolutionEngine {
   SlabConvolutionEngine(const SlabConvolutionEngine&) = delete;
   SlabConvolutionEngine& operator=(const SlabConvolutionEngine&) = delete;
 
-  // Bytes it holds: the two exchange buffers (sizeof(T) a point of the slab each) unless they are another
-  // engine's, and a few rows and columns.
+  // Bytes it holds: the exchange buffers (two of sizeof(T) a point of the slab by messages, one in shared
+  // memory) unless they are another engine's, and a few rows and columns.
   std::size_t bytes() const;
   const std::shared_ptr<ExchangeStorage>& storage() const { return storage_; }
 
@@ -80,16 +64,26 @@ class SlabConvolutionEngine {
   struct Plans;
   Slab slab_;
   MPI_Comm comm_;
-  Index lx_, ly_, nxh_;
+  Index lx_, ly_, nxh_;  // the lattice, and its half spectrum's columns
   std::vector<Index> column_starts_, column_counts_;
   Index my_columns_;
-  // The rows' spectra by destination (this rank's rows x that rank's columns, row-major, in rank order),
-  // and this rank's columns, ny x my_columns_ row-major (every rank's rows, in rank order).
+  // This rank's columns are read in rows of my_stride_ values by messages (its block), of row_stride_ in
+  // shared memory (the rows' owners' parts): whole cache lines, an odd number of them (run_stride in the
+  // .cpp says why).
+  Index my_stride_, row_stride_, column_stride_ = 0;
+  // This rank's rows' spectra, row_stride_ apart (by messages its buffer, in shared memory its part of the
+  // window), and by messages this rank's columns of every rank's rows, ny x my_columns_ (my_stride_ apart,
+  // in rank order); rank s's rows of this rank's columns at column_sources_[s], column_stride_ apart.
   std::shared_ptr<ExchangeStorage> storage_;
   bool own_storage_ = true;
-  std::complex<T>* by_destination_ = nullptr;
+  std::complex<T>* rows_ = nullptr;
   std::complex<T>* my_block_ = nullptr;
-  std::vector<int> row_counts_, row_offsets_, column_counts_values_, column_offsets_values_;
+  std::vector<std::complex<T>*> column_sources_;
+  std::vector<Slab> slabs_;
+  // By messages: MPI_Alltoallw's description of the runs in place (make_message_types).
+  void make_message_types();
+  std::vector<MPI_Datatype> row_types_, block_types_;
+  std::vector<int> row_displacements_, block_displacements_, ones_;
   // The rows as the caller produces and consumes them (double), and the transforms' scratch and plans.
   std::vector<double> caller_rows_;
   std::unique_ptr<Plans> plans_;

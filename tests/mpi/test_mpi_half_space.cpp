@@ -2,10 +2,14 @@
 // (bem/half_space.hpp).
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <string>
+
 #include "contactbench/bem/fourier_preconditioner.hpp"
 #include "contactbench/bem/half_space.hpp"
 #include "contactbench/core/error.hpp"
 #include "contactbench/mpi/distributed_half_space.hpp"
+#include "contactbench/mpi/exchange_storage.hpp"
 #include "mpi_fixtures.hpp"
 
 namespace contactbench::mpi {
@@ -150,6 +154,73 @@ TEST(DistributedFilter, EqualsTheSerialSinglePrecisionFilter) {
                                  single_precision);
     expect_filter_matches_serial({.nx = 24, .ny = 20, .lx = 1e-4, .ly = 1e-4, .periodic = false},
                                  single_precision);
+  }
+}
+
+// The transport of the slab engine's exchanges chosen for one scope on every rank (kExchangeVariable).
+class ExchangeChoice {
+ public:
+  explicit ExchangeChoice(const char* value) {
+    if (const char* before = std::getenv(kExchangeVariable)) before_ = before;
+    setenv(kExchangeVariable, value, 1);
+  }
+  ~ExchangeChoice() {
+    if (before_.empty())
+      unsetenv(kExchangeVariable);
+    else
+      setenv(kExchangeVariable, before_.c_str(), 1);
+  }
+  ExchangeChoice(const ExchangeChoice&) = delete;
+  ExchangeChoice& operator=(const ExchangeChoice&) = delete;
+
+ private:
+  std::string before_;
+};
+
+// The operator, and the float filter sharing its exchange buffers, applied by one transport: gathered on
+// rank 0.
+std::pair<HeightMap, HeightMap> operator_and_float_filter(const Grid& grid, const char* transport) {
+  const ExchangeChoice choice(transport);
+  DistributedHalfSpace half_space(grid, kOperatorModulus, MPI_COMM_WORLD);
+  const auto filter =
+      make_distributed_unit_preconditioner(grid, MPI_COMM_WORLD, 1, &half_space.convolution(), true);
+  const Slab& slab = half_space.slab();
+  HeightMap displacement = rows_of(test_field(grid.nx, grid.ny, 3), slab);
+  HeightMap filtered = displacement;
+  half_space.apply(displacement.data(), displacement.data());
+  filter->apply(filtered.data(), filtered.data());
+  half_space.apply(displacement.data(), displacement.data());  // again, after the filter used the buffers
+  return {gather_to_root(displacement, slab, MPI_COMM_WORLD), gather_to_root(filtered, slab, MPI_COMM_WORLD)};
+}
+
+// Shared memory and messages move the same values into the same arithmetic: the same bits, periodic and
+// padded, a rank without rows or without columns included (on one rank neither runs: the serial engine).
+TEST(SlabExchange, SharedMemoryGivesTheBitsOfMessages) {
+  for (const Grid& grid : {Grid{.nx = 64, .ny = 64, .lx = 1e-4, .ly = 1e-4, .periodic = true},
+                           Grid{.nx = 45, .ny = 31, .lx = 2e-4, .ly = 1e-4, .periodic = true},
+                           Grid{.nx = 27, .ny = 35, .lx = 1e-4, .ly = 2e-4, .periodic = false},
+                           Grid{.nx = 16, .ny = 2, .lx = 1e-4, .ly = 1e-5, .periodic = true},
+                           Grid{.nx = 2, .ny = 16, .lx = 1e-5, .ly = 1e-4, .periodic = false}}) {
+    const auto [by_messages, filtered_by_messages] = operator_and_float_filter(grid, "messages");
+    const auto [shared, filtered_shared] = operator_and_float_filter(grid, "shared_memory");
+    if (rank_of(MPI_COMM_WORLD) == 0) {
+      EXPECT_TRUE((by_messages == shared).all()) << grid.nx << " x " << grid.ny;
+      EXPECT_TRUE((filtered_by_messages == filtered_shared).all()) << grid.nx << " x " << grid.ny;
+    }
+  }
+}
+
+TEST(SlabExchange, AnUnknownTransportIsRefusedOnEveryRankByName) {
+  const ExchangeChoice choice("carrier_pigeon");
+  const Grid grid{.nx = 16, .ny = 16, .lx = 1e-4, .ly = 1e-4, .periodic = true};
+  if (size_of(MPI_COMM_WORLD) == 1) GTEST_SKIP() << "one rank runs the serial engine: no exchange";
+  try {
+    DistributedHalfSpace half_space(grid, kOperatorModulus, MPI_COMM_WORLD);
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("CONTACTBENCH_MPI_EXCHANGE=carrier_pigeon"), std::string::npos) << message;
+    EXPECT_NE(message.find("auto, messages, shared_memory"), std::string::npos) << message;
   }
 }
 
