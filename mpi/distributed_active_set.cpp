@@ -157,12 +157,11 @@ DistributedActiveSet::DistributedActiveSet(const Grid& grid, std::vector<double>
       gather_bound_(gather_bound),
       operator_(grid, modulus, comm, threads),
       // The filter runs between the operator's applications, never during one: one transform for both.
-      // In double (sharing the operator's engine or transform), its input and output rounded to float as the
-      // serial single-precision filter rounds them (filter_pass). In float on the slab engine it was 8 %
-      // faster at 2048² on 2 ranks, but its round-off, unlike the serial filter's, moved a capped scene's
-      // iterations by two under clang (studies/hardness_A.toml at --grid 32 on 2 ranks: 21 against one
-      // process's 23; docs/mpi.md "A transform of the project's own").
-      filter_(make_distributed_unit_preconditioner(grid, comm, threads, &operator_.convolution(), false)),
+      // On the slab engine (two ranks and more, one thread a rank) in float, as the serial filter: the
+      // same FFTW plans of the same lengths and batches, so the same values (bit for bit in
+      // DistributedFilter's cases; docs/mpi.md "Exchanges in shared memory"). Elsewhere in double, its input
+      // and output rounded to float as the serial filter rounds them (filter_pass).
+      filter_(make_distributed_unit_preconditioner(grid, comm, threads, &operator_.convolution(), true)),
       n_(static_cast<std::size_t>(slab_.points())),
       points_(static_cast<double>(grid.points())),
       h_(std::move(local_heights)) {
@@ -356,7 +355,7 @@ ActiveSetOutcome DistributedActiveSet::solve(const ActiveSetProblem& problem, do
         reseat(p, total);
         scale_to(p, total);
         scale = 1;
-      } else if (scale != 1 && kept.g > 0) {
+      } else if (rescales_the_load(scale) && kept.g > 0) {  // as the serial method chooses
         displacement_current_ = displacement_fresh_ = false;
       }
     }

@@ -53,8 +53,8 @@ std::unique_ptr<DistributedConvolution> make_distributed_preconditioner(const Gr
 // The same filter scaled to a largest value of 1, as bem's make_unit_fourier_preconditioner (the same
 // multiplier values): the active-set method's filter (mpi/distributed_active_set.hpp). `share`: a convolution
 // of the same lattice (the operator's, when the grid is periodic or both are padded) whose transform it uses.
-// `single_precision`: on the slab engine, the transform in float (DistributedConvolution); the solver's
-// filter is in double (below, distributed_half_space.cpp). Collective.
+// `single_precision`: on the slab engine, the transform in float (DistributedConvolution), as the solver's
+// filter runs (mpi/distributed_active_set.cpp). Collective.
 std::unique_ptr<DistributedConvolution> make_distributed_unit_preconditioner(
     const Grid& grid, MPI_Comm comm, int threads = 1, const DistributedConvolution* share = nullptr,
     bool single_precision = false);

@@ -136,6 +136,11 @@ SlabConvolutionEngine<T>::SlabConvolutionEngine(const Slab& slab, Index lx, Inde
   // the earlier ranks' rows, my_stride_ apart.
   column_stride_ = shared ? row_stride_ : my_stride_;
   const Index my_start = column_starts_.at(static_cast<std::size_t>(rank_of(comm)));
+  // In shared memory this rank's first column lies where its run starts in the rows (kx = my_start), not
+  // always at a cache line; the first block is cut short to the next line, so that every later block reads
+  // one line a row, not two.
+  const Index per_line = Plans::kColumnsPerBlock;
+  first_block_ = shared && my_start % per_line != 0 ? per_line - my_start % per_line : per_line;
   Index received = 0;
   for (std::size_t s = 0; s < slabs.size(); ++s) {
     column_sources_.push_back(shared ? static_cast<std::complex<T>*>(storage_->segment(static_cast<int>(s))) +
@@ -250,8 +255,8 @@ void SlabConvolutionEngine<T>::apply(const std::function<void(Index, Real*)>& pr
         visit(slabs_[s].start + i, column_sources_[s] + i * column_stride_);
   };
   double energy = 0;
-  for (Index c0 = 0; c0 < my_columns_; c0 += B) {
-    const Index width = std::min(B, my_columns_ - c0);
+  for (Index c0 = 0, width = 0; c0 < my_columns_; c0 += width) {
+    width = std::min(c0 == 0 ? first_block_ : B, my_columns_ - c0);
     each_row([&](Index y, const Cx* row) {
       for (Index j = 0; j < width; ++j)
         columns[j * ly + y] = row[c0 + j];

@@ -9,8 +9,8 @@
 // read and written in place in memory the ranks share (mpi/exchange_storage.hpp), between two barriers, and
 // nothing is copied; otherwise one MPI_Alltoallw each way, whose derived types pick each rank's runs out of
 // the rows and into its ny x columns block. The same arithmetic either way, so the same bits.
-// In double, or in single precision (the serial filter's, bem/fourier_preconditioner.hpp; the solver's filter
-// runs in double, docs/mpi.md says why): the rows produced are rounded to float before the transform, its
+// In double, or in single precision (the serial filter's, bem/fourier_preconditioner.hpp, and so the
+// distributed solver's filter): the rows produced are rounded to float before the transform, its
 // output read as doubles.
 #pragma once
 
@@ -71,6 +71,7 @@ class SlabConvolutionEngine {
   // shared memory (the rows' owners' parts): whole cache lines, an odd number of them (run_stride in the
   // .cpp says why).
   Index my_stride_, row_stride_, column_stride_ = 0;
+  Index first_block_ = 0;  // columns in the first column block (the constructor says why it may be short)
   // This rank's rows' spectra, row_stride_ apart (by messages its buffer, in shared memory its part of the
   // window), and by messages this rank's columns of every rank's rows, ny x my_columns_ (my_stride_ apart,
   // in rank order); rank s's rows of this rank's columns at column_sources_[s], column_stride_ apart.

@@ -196,7 +196,8 @@ typename ActiveSet<T>::Sums ActiveSet<T>::count_on_set(std::vector<T>& p, double
     count = over_points([&](std::size_t begin, std::size_t end, Sums& part) {
       for (std::size_t k = begin; k < end; ++k) {
         rescaled(k);
-        if (scale != 1) u[k] = static_cast<T>(scale * static_cast<double>(u[k]));  // no plastic nodes
+        // No plastic nodes here, or a factor within kUnitScaleSlack of 1 (active_set_method.hpp).
+        if (scale != 1) u[k] = static_cast<T>(scale * static_cast<double>(u[k]));
         counted(k, part);
       }
     });

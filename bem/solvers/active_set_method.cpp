@@ -121,7 +121,7 @@ ActiveSetOutcome ActiveSet<T>::solve(const ActiveSetProblem& problem, double tol
         reseat(p, total);
         scale_to(p, total);
         scale = 1;
-      } else if (scale != 1 && kept.g > 0) {
+      } else if (rescales_the_load(scale) && kept.g > 0) {
         displacement_current_ = displacement_fresh_ = false;  // G p does not scale with p: made afresh
       }
     }

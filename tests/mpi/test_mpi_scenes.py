@@ -84,27 +84,17 @@ def bem_tolerances(scene):
             if m.get("method", label) == "bem"}
 
 
-def capped_bems(scene):
-    """The BEM methods capped at the scene's hardness (those that do not ignore it)."""
-    if "hardness" not in scene.get("interface", {}):
-        return set()
-    return {label for label, m in scene.get("methods", {}).items()
-            if m.get("method", label) == "bem" and "hardness" not in m.get("ignore", [])}
-
-
-def same_bem_rows(distributed, serial, tolerances, capped, what):
-    """capped: the BEMs with a hardness, whose iterations may differ by one (docs/mpi.md, "The default solver":
-    with plastic nodes the method makes G p afresh, one iteration, only when the load's rescaling factor is not
-    exactly 1, a branch the order of the sums decides; tests/mpi/test_mpi_active_set.cpp allows the same);
-    every other count equal."""
+def same_bem_rows(distributed, serial, tolerances, what):
+    """Every count equal, iterations included (with a hardness too: the one branch the order of the sums
+    decided, whether an outer step makes G p afresh, is decided alike since bem/solvers/active_set_method.hpp's
+    kUnitScaleSlack); the fields to their tolerances."""
     distributed = [r for r in distributed if r["method"] in tolerances]
     serial = [r for r in serial if r["method"] in tolerances]
     if not serial or len(distributed) != len(serial):
         failures.append(f"{what}: {len(distributed)} BEM rows against {len(serial)}")
         return
     for d, s in zip(distributed, serial):
-        slack = 1 if s["method"] in capped else 0
-        if abs(int(d["iterations"]) - int(s["iterations"])) > slack:
+        if int(d["iterations"]) != int(s["iterations"]):
             failures.append(f"{what}: {s['method']} iterations {d['iterations']} against {s['iterations']} at load "
                             f"{s['load']}")
         for key in ("method", "load", "area_fraction", "spots", "area_fraction_nodes", "area_fraction_corrected",
@@ -175,7 +165,7 @@ with tempfile.TemporaryDirectory() as work:
                 outputs.append(rows(os.path.join(folder, "curves.csv")))
             if len(outputs) == 2:
                 name = os.path.relpath(path, scenes_folder)
-                same_bem_rows(outputs[1], outputs[0], bem_tolerances(scene), capped_bems(scene),
+                same_bem_rows(outputs[1], outputs[0], bem_tolerances(scene),
                               f"{name} ({how}) on {ranks} ranks")
                 # The distributions (measured on rank 0 from the gathered fields): every table equal, numbers
                 # to the bound of the scene's tightest BEM (its tables are the BEM's fields').
