@@ -100,7 +100,8 @@ DistributedBemSolver::~DistributedBemSolver() = default;
 // Bytes a point of the slab, measured as bytes() / slab points with mpiexec -np 2 and 3 on 256^2 and 640 x
 // 512 surfaces (periodic / not; docs/mpi.md "Memory a point"), with 10 % of margin: polonsky_keer 86 / 136,
 // preconditioned_cg 116 / 217 (periodic on 2 ranks and more: the slab engine's two exchange buffers, 16 B,
-// in place of FFTW-MPI's slab, 8 B, for each of the operator and the preconditioner; one thread a rank).
+// in place of FFTW-MPI's slab, 8 B, for each of the operator and the preconditioner; one thread a rank; in
+// shared memory the engine holds one, 8 B, and the estimate keeps the larger).
 // active_set: what it holds from solve to solve (the pressure, heights, displacement, the transform and both
 // multipliers) 40 / 120, and during a solve either its work arrays (32, plus a transient selection array of
 // the cold start, at most 8) or, before them, its coarse start: the first level of at most kGatherBound
