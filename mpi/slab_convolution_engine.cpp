@@ -157,14 +157,23 @@ SlabConvolutionEngine<T>::SlabConvolutionEngine(const Slab& slab, Index lx, Inde
   plans_ = std::make_unique<Plans>(lx, ly, row_stride_, slab.count);
 }
 
-// By messages, each exchange's runs described in place (MPI_Alltoallw's derived types, byte offsets), so
-// that neither side copies them into a buffer of its own: to rank r, this rank's rows of r's columns, a
-// vector of slab rows of 2 width_r values row_stride_ apart, from r's first column; from rank s, s's rows
-// of this rank's columns into this rank's block, my_stride_ apart.
+// By messages, each exchange's runs described in place (MPI_Alltoallw's derived types), so that neither side
+// copies them into a buffer of its own: to rank r, this rank's rows of r's columns, a vector of slab rows of
+// 2 width_r values row_stride_ apart, from r's first column; from rank s, s's rows of this rank's columns
+// into this rank's block, my_stride_ apart. Each type carries its own byte offset (MPI_Alltoallw's
+// displacements are int bytes, which a rank's block beyond 2 GiB would overflow), the displacements 0.
 template <class T>
 void SlabConvolutionEngine<T>::make_message_types() {
   const MPI_Datatype value = mpi_type_of<T>();
-  const Index cx = static_cast<Index>(sizeof(std::complex<T>));
+  const auto cx = static_cast<MPI_Aint>(sizeof(std::complex<T>));
+  const auto placed = [](MPI_Datatype inner, MPI_Aint offset) {
+    int one = 1;
+    MPI_Datatype type = MPI_DATATYPE_NULL;
+    MPI_Type_create_struct(1, &one, &offset, &inner, &type);
+    MPI_Type_commit(&type);
+    MPI_Type_free(&inner);
+    return type;
+  };
   Index received = 0;
   for (std::size_t r = 0; r < slabs_.size(); ++r) {
     MPI_Datatype to_r = MPI_DATATYPE_NULL, from_r = MPI_DATATYPE_NULL;
@@ -174,13 +183,10 @@ void SlabConvolutionEngine<T>::make_message_types() {
     MPI_Type_vector(message_count(slabs_[r].count, kEngineExchange),
                     message_count(2 * my_columns_, kEngineExchange),
                     message_count(2 * my_stride_, kEngineExchange), value, &from_r);
-    MPI_Type_commit(&to_r);
-    MPI_Type_commit(&from_r);
-    row_types_.push_back(to_r);
-    block_types_.push_back(from_r);
-    row_displacements_.push_back(message_count(cx * column_starts_[r], kEngineExchange));
-    block_displacements_.push_back(message_count(cx * received, kEngineExchange));
+    row_types_.push_back(placed(to_r, cx * static_cast<MPI_Aint>(column_starts_[r])));
+    block_types_.push_back(placed(from_r, cx * static_cast<MPI_Aint>(received)));
     ones_.push_back(1);
+    zeros_.push_back(0);
     received += slabs_[r].count * my_stride_;
   }
 }
@@ -222,11 +228,11 @@ void SlabConvolutionEngine<T>::apply(const std::function<void(Index, Real*)>& pr
     void* rows = rows_;
     void* block = my_block_;
     if (to_columns)
-      MPI_Alltoallw(rows, ones_.data(), row_displacements_.data(), row_types_.data(), block, ones_.data(),
-                    block_displacements_.data(), block_types_.data(), comm_);
+      MPI_Alltoallw(rows, ones_.data(), zeros_.data(), row_types_.data(), block, ones_.data(), zeros_.data(),
+                    block_types_.data(), comm_);
     else
-      MPI_Alltoallw(block, ones_.data(), block_displacements_.data(), block_types_.data(), rows, ones_.data(),
-                    row_displacements_.data(), row_types_.data(), comm_);
+      MPI_Alltoallw(block, ones_.data(), zeros_.data(), block_types_.data(), rows, ones_.data(),
+                    zeros_.data(), row_types_.data(), comm_);
   };
 
   // 1. Rows: produced, transformed along x, each row's spectrum written in place in this rank's rows.

@@ -84,7 +84,7 @@ class SlabConvolutionEngine {
   // By messages: MPI_Alltoallw's description of the runs in place (make_message_types).
   void make_message_types();
   std::vector<MPI_Datatype> row_types_, block_types_;
-  std::vector<int> row_displacements_, block_displacements_, ones_;
+  std::vector<int> ones_, zeros_;  // the counts and displacements (in the types) of every rank's part
   // The rows as the caller produces and consumes them (double), and the transforms' scratch and plans.
   std::vector<double> caller_rows_;
   std::unique_ptr<Plans> plans_;
