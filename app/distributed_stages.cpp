@@ -707,20 +707,11 @@ class DistributedRunner final : public StageRunner {
   int ranks_here_ = 1;
 };
 
-// The ranks that share this rank's machine (its memory). Collective.
-int ranks_on_this_machine() {
-  MPI_Comm machine = MPI_COMM_NULL;
-  MPI_Comm_split_type(kWorld, MPI_COMM_TYPE_SHARED, mpi::rank_of(kWorld), MPI_INFO_NULL, &machine);
-  const int size = mpi::size_of(machine);
-  MPI_Comm_free(&machine);
-  return size;
-}
-
 }  // namespace
 
 int run_as_mpi_ranks(int& argc, char**& argv, const std::function<int(const StageRunner&)>& command) {
   mpi::Environment environment(argc, argv);
-  const int ranks_here = ranks_on_this_machine();
+  const int ranks_here = mpi::ranks_sharing_memory(kWorld);
   if (!is_root()) {
     serve();
     return 0;

@@ -46,15 +46,6 @@ bool all_ranks(bool mine, MPI_Comm comm) {
   return value != 0;
 }
 
-// Every rank of comm on this rank's machine? Collective.
-bool one_machine(MPI_Comm comm) {
-  MPI_Comm machine = MPI_COMM_NULL;
-  MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, rank_of(comm), MPI_INFO_NULL, &machine);
-  const bool whole = size_of(machine) == size_of(comm);
-  MPI_Comm_free(&machine);
-  return all_ranks(whole, comm);
-}
-
 // Room in the shared-memory folder for every rank's part (the largest times the ranks), with an eighth to
 // spare. Collective.
 bool shared_memory_has_room(MPI_Comm comm, std::size_t bytes_per_rank) {
@@ -69,10 +60,6 @@ bool shared_memory_has_room(MPI_Comm comm, std::size_t bytes_per_rank) {
 
 }  // namespace
 
-std::string name_of(ExchangeTransport transport) {
-  return transport == ExchangeTransport::messages ? "messages" : "shared_memory";
-}
-
 ExchangeTransport choose_exchange_transport(MPI_Comm comm, std::size_t bytes_per_rank) {
   // Read on every rank; a refusal on one is a refusal on all, so that no rank waits for another that threw.
   std::string refusal;
@@ -82,14 +69,12 @@ ExchangeTransport choose_exchange_transport(MPI_Comm comm, std::size_t bytes_per
   } catch (const Error& e) {
     refusal = e.what();
   }
-  if (!all_ranks(refusal.empty(), comm))
-    throw Error(refusal.empty() ? std::string(kExchangeVariable) + " is not a transport on another rank"
-                                : refusal);
+  throw_on_any_rank(!refusal.empty(), refusal, comm);
   // The same answer on every rank: the choice is each rank's, agreed by all.
   const bool asked_for_messages = !all_ranks(requested != Requested::messages, comm);
   if (asked_for_messages || size_of(comm) == 1) return ExchangeTransport::messages;
   const bool forced = !all_ranks(requested != Requested::shared_memory, comm);
-  if (!one_machine(comm)) {
+  if (!all_ranks(ranks_sharing_memory(comm) == size_of(comm), comm)) {
     if (forced)
       throw Error(std::string(kExchangeVariable) +
                   "=shared_memory: the ranks are on several machines; accepted there: auto, messages");
@@ -105,16 +90,16 @@ ExchangeTransport choose_exchange_transport(MPI_Comm comm, std::size_t bytes_per
   return ExchangeTransport::shared_memory;
 }
 
-ExchangeStorage::ExchangeStorage(MPI_Comm comm, ExchangeTransport transport, std::size_t by_destination_bytes,
-                                 std::size_t my_block_bytes)
-    : transport_(transport), comm_(comm), by_destination_bytes_(by_destination_bytes) {
+ExchangeStorage::ExchangeStorage(MPI_Comm comm, ExchangeTransport transport, std::size_t rows_bytes,
+                                 std::size_t block_bytes)
+    : transport_(transport), comm_(comm), rows_bytes_(rows_bytes) {
   if (transport == ExchangeTransport::messages) {
-    my_block_bytes_ = my_block_bytes;
-    by_destination_ = fftw_malloc(std::max<std::size_t>(by_destination_bytes, 16));
-    my_block_ = fftw_malloc(std::max<std::size_t>(my_block_bytes, 16));
-    if (!by_destination_ || !my_block_) {
-      fftw_free(by_destination_);
-      fftw_free(my_block_);
+    block_bytes_ = block_bytes;
+    rows_ = fftw_malloc(std::max<std::size_t>(rows_bytes, 16));
+    block_ = fftw_malloc(std::max<std::size_t>(block_bytes, 16));
+    if (!rows_ || !block_) {
+      fftw_free(rows_);
+      fftw_free(block_);
       throw Error("mpi: out of memory for the slab convolution's exchange buffers");
     }
     return;
@@ -127,8 +112,8 @@ ExchangeStorage::ExchangeStorage(MPI_Comm comm, ExchangeTransport transport, std
   MPI_Info_create(&info);
   MPI_Info_set(info, "alloc_shared_noncontig", "true");
   void* base = nullptr;
-  const int made = MPI_Win_allocate_shared(static_cast<MPI_Aint>(by_destination_bytes + kLine), 1, info, comm,
-                                           &base, &window_);
+  const int made =
+      MPI_Win_allocate_shared(static_cast<MPI_Aint>(rows_bytes + kLine), 1, info, comm, &base, &window_);
   MPI_Info_free(&info);
   if (!all_ranks(made == MPI_SUCCESS, comm)) {
     if (made == MPI_SUCCESS) MPI_Win_free(&window_);
@@ -141,7 +126,7 @@ ExchangeStorage::ExchangeStorage(MPI_Comm comm, ExchangeTransport transport, std
     MPI_Win_shared_query(window_, r, &size, &unit, &base);
     segments_.push_back(at_line(base));
   }
-  by_destination_ = segments_.at(static_cast<std::size_t>(rank_of(comm)));
+  rows_ = segments_.at(static_cast<std::size_t>(rank_of(comm)));
   // One passive epoch for the window's life: its accesses are plain loads and stores, ordered by
   // synchronise().
   MPI_Win_lock_all(MPI_MODE_NOCHECK, window_);
@@ -153,8 +138,8 @@ ExchangeStorage::~ExchangeStorage() {
     MPI_Win_free(&window_);
     return;
   }
-  fftw_free(by_destination_);
-  fftw_free(my_block_);
+  fftw_free(rows_);
+  fftw_free(block_);
 }
 
 void ExchangeStorage::synchronise() const {

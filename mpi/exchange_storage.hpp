@@ -26,34 +26,31 @@ inline constexpr const char* kExchangeVariable = "CONTACTBENCH_MPI_EXCHANGE";
 // less room than every rank's part, refused by an Error too.
 ExchangeTransport choose_exchange_transport(MPI_Comm comm, std::size_t bytes_per_rank);
 
-std::string name_of(ExchangeTransport transport);
-
-// The two exchange buffers, raw bytes (FFTW's alignment): an engine's own, or shared by engines that never
-// run at once (the solver's operator in double and its filter in float need the same values a point, the
-// filter half the bytes). In shared memory there is one, `by_destination`, this rank's part of the window;
-// `segment(r)` is rank r's part (read and written by this rank where its columns are).
+// The engine's buffers, raw bytes (FFTW's alignment): an engine's own, or shared by engines that never run at
+// once (the solver's operator in double and its filter in float need the same values a point, the filter
+// half the bytes). `rows`: this rank's rows' spectra; `block`, by messages only: this rank's columns of
+// every rank's rows. In shared memory `rows` is this rank's part of the window and `segment(r)` rank r's
+// part (read and written by this rank where its columns are).
 class ExchangeStorage {
  public:
   // Collective where the transport is shared memory (the window is made by every rank together).
-  ExchangeStorage(MPI_Comm comm, ExchangeTransport transport, std::size_t by_destination_bytes,
-                  std::size_t my_block_bytes);
+  ExchangeStorage(MPI_Comm comm, ExchangeTransport transport, std::size_t rows_bytes,
+                  std::size_t block_bytes);
   // Collective in shared memory (the window is freed by every rank together).
   ~ExchangeStorage();
   ExchangeStorage(const ExchangeStorage&) = delete;
   ExchangeStorage& operator=(const ExchangeStorage&) = delete;
 
   ExchangeTransport transport() const { return transport_; }
-  void* by_destination() const { return by_destination_; }
-  void* my_block() const { return my_block_; }
+  void* rows() const { return rows_; }
+  void* block() const { return block_; }
   void* segment(int rank) const { return segments_.at(static_cast<std::size_t>(rank)); }
-  std::size_t by_destination_bytes() const { return by_destination_bytes_; }
-  std::size_t my_block_bytes() const { return my_block_bytes_; }
   // Does it have room for an engine needing these bytes? (In shared memory the block is never used.)
-  bool fits(std::size_t by_destination_bytes, std::size_t my_block_bytes) const {
-    return by_destination_bytes_ >= by_destination_bytes &&
-           (transport_ == ExchangeTransport::shared_memory || my_block_bytes_ >= my_block_bytes);
+  bool fits(std::size_t rows_bytes, std::size_t block_bytes) const {
+    return rows_bytes_ >= rows_bytes &&
+           (transport_ == ExchangeTransport::shared_memory || block_bytes_ >= block_bytes);
   }
-  std::size_t bytes() const { return by_destination_bytes_ + my_block_bytes_; }
+  std::size_t bytes() const { return rows_bytes_ + block_bytes_; }
 
   // Shared memory: every rank's writes to the window seen by every rank, once all have come here
   // (MPI_Win_sync, MPI_Barrier, MPI_Win_sync: the unified model's idiom). Collective.
@@ -63,10 +60,10 @@ class ExchangeStorage {
   ExchangeTransport transport_;
   MPI_Comm comm_;
   MPI_Win window_ = MPI_WIN_NULL;
-  void* by_destination_ = nullptr;
-  void* my_block_ = nullptr;
+  void* rows_ = nullptr;
+  void* block_ = nullptr;
   std::vector<void*> segments_;
-  std::size_t by_destination_bytes_ = 0, my_block_bytes_ = 0;
+  std::size_t rows_bytes_ = 0, block_bytes_ = 0;
 };
 
 }  // namespace contactbench::mpi

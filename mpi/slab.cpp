@@ -21,6 +21,14 @@ int size_of(MPI_Comm comm) {
   return size;
 }
 
+int ranks_sharing_memory(MPI_Comm comm) {
+  MPI_Comm machine = MPI_COMM_NULL;
+  MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, rank_of(comm), MPI_INFO_NULL, &machine);
+  const int size = size_of(machine);
+  MPI_Comm_free(&machine);
+  return size;
+}
+
 Slab slab_of(Index nx, Index ny, MPI_Comm comm) {
   if (nx < 1 || ny < 1)
     throw Error("mpi: a slab needs a grid of at least 1 x 1 points, got " + std::to_string(nx) + " x " +

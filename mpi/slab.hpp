@@ -31,6 +31,8 @@ std::vector<Slab> all_slabs(Index nx, Index ny, MPI_Comm comm);
 
 int rank_of(MPI_Comm comm);
 int size_of(MPI_Comm comm);
+// The ranks of comm that share this rank's machine (its memory), this one included. Collective.
+int ranks_sharing_memory(MPI_Comm comm);
 
 // For files and checks only (a rank-0 copy of the whole field is what distributing avoids):
 // the whole ny x nx field on rank 0 (an empty array elsewhere) from every rank's count x nx slab.

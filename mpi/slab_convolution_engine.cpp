@@ -22,6 +22,8 @@ constexpr const char* kEngineExchange = "an exchange of the slab convolution";
 // Rows per transform call and a block of columns of 64 bytes a row, as the serial engine's
 // (bem/convolution.cpp): a chunk of rows in L2, a block of columns one cache line of each row.
 constexpr Index kRowsPerChunk = 8;
+template <class T>
+constexpr Index kValuesPerLine = 64 / static_cast<Index>(sizeof(std::complex<T>));
 
 // The row stride of a run of `width` spectral values: whole cache lines, an odd number of them. A column
 // block reads one line from each of ny rows; with a stride of a power of two lines (a rank's 1024 columns of
@@ -30,9 +32,8 @@ constexpr Index kRowsPerChunk = 8;
 // time against 14 %); an odd number of lines spreads them over every set.
 template <class T>
 Index run_stride(Index width) {
-  constexpr Index per_line = 64 / static_cast<Index>(sizeof(std::complex<T>));
-  const Index lines = (width + per_line - 1) / per_line;
-  return (lines % 2 == 0 ? lines + 1 : lines) * per_line;
+  const Index lines = (width + kValuesPerLine<T> - 1) / kValuesPerLine<T>;
+  return (lines % 2 == 0 ? lines + 1 : lines) * kValuesPerLine<T>;
 }
 
 // MPI's type of a transform's real values.
@@ -47,7 +48,7 @@ MPI_Datatype mpi_type_of() {
 template <class T>
 struct SlabConvolutionEngine<T>::Plans {
   using F = Fftw<T>;
-  static constexpr Index kColumnsPerBlock = 64 / static_cast<Index>(sizeof(std::complex<T>));
+  static constexpr Index kColumnsPerBlock = kValuesPerLine<T>;
   T* rows = nullptr;                      // a chunk of rows, in T, as transformed (zero beyond nx)
   T* rows_out = nullptr;                  // a chunk of rows transformed back (all lx values)
   typename F::Cx* row_spectra = nullptr;  // to plan their spectra on (they are written into the rows' part)
@@ -128,8 +129,8 @@ SlabConvolutionEngine<T>::SlabConvolutionEngine(const Slab& slab, Index lx, Inde
   storage_ = own_storage_ ? std::make_shared<ExchangeStorage>(comm, choose_exchange_transport(comm, to_bytes),
                                                               to_bytes, from_bytes)
                           : std::move(storage);
-  rows_ = static_cast<std::complex<T>*>(storage_->by_destination());
-  my_block_ = static_cast<std::complex<T>*>(storage_->my_block());
+  rows_ = static_cast<std::complex<T>*>(storage_->rows());
+  my_block_ = static_cast<std::complex<T>*>(storage_->block());
   const bool shared = storage_->transport() == ExchangeTransport::shared_memory;
   // Where rank s's rows of this rank's columns are, my_columns_ values a row: in shared memory in rank s's
   // own part, from this rank's first column on, row_stride_ apart; by messages in this rank's block, after
