@@ -48,8 +48,14 @@ DistributedConvolution::DistributedConvolution(const Grid& grid, bool padded, MP
     const Index kx = spectrum_.start + c;
     column_weight_.push_back((kx == 0 || (lx_ % 2 == 0 && kx == lx_ / 2)) ? 1.0 : 2.0);
   }
-  if (size_of(comm) == 1 && threads <= 1)
-    alone_ = std::make_unique<Convolution<double>>(grid.nx, grid.ny, padded, 1);
+  // One rank on one thread: the serial engine, in float where asked with the serial filter's estimated
+  // plans (bem/fourier_preconditioner.hpp), so the same bits as the serial solver's filter.
+  if (size_of(comm) == 1 && threads <= 1) {
+    if (single_precision)
+      alone_float_ = std::make_unique<Convolution<float>>(grid.nx, grid.ny, padded, 1, FftRigor::estimate);
+    else
+      alone_ = std::make_unique<Convolution<double>>(grid.nx, grid.ny, padded, 1);
+  }
   if (slab_engine) {
     if (share && share->engine_ && !single_precision) {
       engine_ = share->engine_;
@@ -118,14 +124,15 @@ void DistributedConvolution::set_multiplier(std::vector<double> multiplier) {
       sum += weight * multiplier_[static_cast<std::size_t>(c * ly_ + row)];
   }
   self_response_ = sum_over_ranks(sum, comm_);
-  if (alone_) {
+  if (alone_ || alone_float_) {
     // The serial engine's layout: ly rows (ky) by lx / 2 + 1 columns (kx); here column-major by kx.
     const Index columns = spectrum_.count;
     Eigen::Array<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> m(ly_, columns);
     for (Index c = 0; c < columns; ++c)
       for (Index row = 0; row < ly_; ++row)
         m(row, c) = multiplier_[static_cast<std::size_t>(c * ly_ + row)];
-    alone_->set_multiplier(m);
+    if (alone_) alone_->set_multiplier(m);
+    if (alone_float_) alone_float_->set_multiplier(m);
   }
 }
 
@@ -135,7 +142,7 @@ void DistributedConvolution::apply(const Real* in, Real* out) {
     alone_->apply(in, out);
     return;
   }
-  if (!padded_ || engine_ || float_engine_) {
+  if (!padded_ || engine_ || float_engine_ || alone_float_) {
     apply([&](Index r, Real* row) { std::copy_n(in + r * nx, nx, row); },
           [&](Index r, const Real* row) { std::copy_n(row, nx, out + r * nx); });
     return;
@@ -177,6 +184,30 @@ void DistributedConvolution::apply(const RowProducer& produce, const RowConsumer
       alone_->apply(rows_in, rows_out, {}, true, product);
     else
       alone_->apply(rows_in, rows_out);
+    return;
+  }
+  if (alone_float_) {
+    // The rows produced in double, rounded to float as they enter, read back as doubles (as the float
+    // engine does, and the serial filter's own passes).
+    std::vector<double>& row = buffers_->float_row;
+    row.resize(static_cast<std::size_t>(slab_.nx));
+    auto rows_in = [&](Index first, Index rows, float* buffer, Index ld, int) {
+      for (Index i = 0; i < rows; ++i) {
+        produce(first + i, row.data());
+        std::copy(row.begin(), row.end(), buffer + i * ld);
+      }
+    };
+    auto rows_out = [&](Index first, Index rows, const float* buffer, Index ld, int) {
+      for (Index i = 0; i < rows; ++i) {
+        std::copy_n(buffer + i * ld, row.size(), row.begin());
+        consume(first + i, row.data());
+      }
+    };
+    auto product = [&](double energy) { multiplied(energy); };
+    if (multiplied)
+      alone_float_->apply(rows_in, rows_out, {}, true, product);
+    else
+      alone_float_->apply(rows_in, rows_out);
     return;
   }
   if (engine_) {

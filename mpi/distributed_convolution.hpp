@@ -26,9 +26,9 @@ class DistributedConvolution {
   // Collective; the multiplier is zero until set. `share`: another convolution of the same grid and lattice
   // whose transform and exchange buffers this one uses too (a convolution's transform is scratch between
   // two applications, so two that never run at once need one: docs/mpi.md "Memory a point").
-  // `single_precision`: where the slab engine runs (two ranks and more, one thread a rank), its
-  // transform in float, the rows produced rounded to float (the solver's filter, whose serial transform is in
-  // single precision); elsewhere in double.
+  // `single_precision`: where the slab engine or the serial one runs (one thread a rank), the transform in
+  // float, the rows produced rounded to float (the solver's filter, whose serial transform is in single
+  // precision); with several threads a rank (FFTW-MPI's pair) in double.
   DistributedConvolution(const Grid& grid, bool padded, MPI_Comm comm, int threads = 1,
                          const DistributedConvolution* share = nullptr, bool single_precision = false);
   ~DistributedConvolution();
@@ -93,6 +93,7 @@ class DistributedConvolution {
   // (padded_rows); shared with the transform.
   struct Buffers {
     std::vector<double> receive, padded_rows;
+    std::vector<double> float_row;  // one rank in float: a row as produced and consumed
   };
   std::shared_ptr<Buffers> buffers_;
   std::vector<double> column_weight_;  // per spectral column: 1 or 2 (its Hermitian partner counted)
@@ -100,6 +101,7 @@ class DistributedConvolution {
   // cache with the multiply between, no transpose), the same multiplier; FFTW-MPI's plan with its local
   // transposes then only makes the multiplier.
   std::unique_ptr<Convolution<double>> alone_;
+  std::unique_ptr<Convolution<float>> alone_float_;  // the same in single precision (`single_precision`)
   // Two ranks and more, one thread a rank: the rows' spectra exchanged straight into column
   // blocks (mpi/slab_convolution_engine.hpp) instead of FFTW-MPI's pair; in double shared with `share` as
   // the transform is, in single precision its own.
