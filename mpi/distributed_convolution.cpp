@@ -4,6 +4,8 @@
 #include <climits>
 #include <complex>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include "contactbench/core/error.hpp"
 #include "contactbench/mpi/message_count.hpp"
@@ -19,6 +21,41 @@ constexpr const char* kConvolutionExchange = "an exchange of the distributed con
 Index shared_rows(Index start_a, Index count_a, Index start_b, Index count_b, Index limit) {
   return std::max<Index>(std::min({start_a + count_a, start_b + count_b, limit}) - std::max(start_a, start_b),
                          0);
+}
+
+// The serial engine (one rank, one thread) through the row callbacks. In float the rows produced in double
+// are rounded as they enter and read back as doubles (as the float slab engine does, and the serial filter's
+// own passes); `row` holds one row for that.
+template <class T>
+void apply_alone(Convolution<T>& convolution, std::vector<double>& row,
+                 const DistributedConvolution::RowProducer& produce,
+                 const DistributedConvolution::RowConsumer& consume,
+                 const std::function<void(double)>& multiplied) {
+  auto rows_in = [&](Index first, Index rows, T* buffer, Index ld, int) {
+    for (Index i = 0; i < rows; ++i) {
+      if constexpr (std::is_same_v<T, double>) {
+        produce(first + i, buffer + i * ld);
+      } else {
+        produce(first + i, row.data());
+        std::copy(row.begin(), row.end(), buffer + i * ld);
+      }
+    }
+  };
+  auto rows_out = [&](Index first, Index rows, const T* buffer, Index ld, int) {
+    for (Index i = 0; i < rows; ++i) {
+      if constexpr (std::is_same_v<T, double>) {
+        consume(first + i, buffer + i * ld);
+      } else {
+        std::copy_n(buffer + i * ld, row.size(), row.begin());
+        consume(first + i, row.data());
+      }
+    }
+  };
+  auto product = [&](double energy) { multiplied(energy); };
+  if (multiplied)
+    convolution.apply(rows_in, rows_out, {}, true, product);
+  else
+    convolution.apply(rows_in, rows_out);
 }
 
 }  // namespace
@@ -171,43 +208,12 @@ void DistributedConvolution::apply(const Real* in, Real* out) {
 void DistributedConvolution::apply(const RowProducer& produce, const RowConsumer& consume,
                                    const std::function<void(double)>& multiplied) {
   if (alone_) {
-    auto rows_in = [&](Index first, Index rows, double* buffer, Index ld, int) {
-      for (Index i = 0; i < rows; ++i)
-        produce(first + i, buffer + i * ld);
-    };
-    auto rows_out = [&](Index first, Index rows, const double* buffer, Index ld, int) {
-      for (Index i = 0; i < rows; ++i)
-        consume(first + i, buffer + i * ld);
-    };
-    auto product = [&](double energy) { multiplied(energy); };
-    if (multiplied)
-      alone_->apply(rows_in, rows_out, {}, true, product);
-    else
-      alone_->apply(rows_in, rows_out);
+    apply_alone(*alone_, buffers_->float_row, produce, consume, multiplied);
     return;
   }
   if (alone_float_) {
-    // The rows produced in double, rounded to float as they enter, read back as doubles (as the float
-    // engine does, and the serial filter's own passes).
-    std::vector<double>& row = buffers_->float_row;
-    row.resize(static_cast<std::size_t>(slab_.nx));
-    auto rows_in = [&](Index first, Index rows, float* buffer, Index ld, int) {
-      for (Index i = 0; i < rows; ++i) {
-        produce(first + i, row.data());
-        std::copy(row.begin(), row.end(), buffer + i * ld);
-      }
-    };
-    auto rows_out = [&](Index first, Index rows, const float* buffer, Index ld, int) {
-      for (Index i = 0; i < rows; ++i) {
-        std::copy_n(buffer + i * ld, row.size(), row.begin());
-        consume(first + i, row.data());
-      }
-    };
-    auto product = [&](double energy) { multiplied(energy); };
-    if (multiplied)
-      alone_float_->apply(rows_in, rows_out, {}, true, product);
-    else
-      alone_float_->apply(rows_in, rows_out);
+    buffers_->float_row.resize(static_cast<std::size_t>(slab_.nx));
+    apply_alone(*alone_float_, buffers_->float_row, produce, consume, multiplied);
     return;
   }
   if (engine_) {
