@@ -14,7 +14,7 @@ cmake --build --preset release -j 2 --target bench_mpi >/dev/null
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_WAIT_POLICY=PASSIVE OMP_NUM_THREADS=1
 commit=$(git rev-parse --short HEAD)
 git diff --quiet HEAD -- core bem mpi bench || commit="$commit+uncommitted"
-machine="$(lscpu | sed -n 's/^Model name: *//p' | head -n 1) with $(nproc) cores"
+machine="$(lscpu | sed -n 's/^Model name: *//p' | head -n 1) with $(nproc --all) cores"  # --all: nproc obeys OMP_NUM_THREADS
 out=${OUT:-results/bench/mpi_largest_solve.md}
 mkdir -p results/bench
 work=$(mktemp -d)
