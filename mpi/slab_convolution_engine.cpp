@@ -38,9 +38,9 @@ Index run_stride(Index width) {
 
 // A column of `length` spectral values times its multiplier m (in double, rounded to T as the serial
 // engine's multiplier is), conjugated for the transform back (see apply); with `energy`, returns sum m |c|^2
-// before the product. Re and im in loops over the values, so that they vectorise (a reduction over complex
-// values did not): the serial engine's multiply_column (bem/convolution.cpp) on a multiplier of all ly
-// values, since a padded operator's (Love's kernel transformed) is even only to round-off.
+// before the product. The serial engine's multiply_column (bem/convolution.cpp: re and im in simd loops over
+// the values) on a multiplier of all ly values, since a padded operator's (Love's kernel transformed) is
+// even only to round-off.
 template <class T>
 double multiply_conjugated(std::complex<T>* column, const double* __restrict m, Index length, bool energy) {
   T* __restrict c = reinterpret_cast<T*>(column);
