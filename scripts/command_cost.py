@@ -3,7 +3,7 @@
 results/bench/command_cost.md.
 
 Usage: scripts/command_cost.py [--repetitions 3] [--threads 2] [--build build/release] [--out FILE]
-                               [--baseline CONTACTBENCH]
+                               [--baseline CONTACTBENCH] [--omp-wait-policy passive|default]
 
 Measures, interleaved (cold, warm, off, cold, warm, off, ...) so that the machine's load falls on each alike:
   1. `contactbench bem S --periodic --loads 0.000478 --threads T` on a 1024^2 periodic surface S (surface A's
@@ -91,10 +91,16 @@ def main():
     parser.add_argument("--out", default="results/bench/command_cost.md")
     parser.add_argument("--baseline", help="another contactbench program, measured interleaved (its commit is "
                         "what `contactbench --version` says)")
+    parser.add_argument("--omp-wait-policy", choices=["passive", "default"], default="passive",
+                        help="OpenMP's waiting between parallel regions: passive (OMP_WAIT_POLICY=PASSIVE, "
+                        "threads sleep: fair on a machine shared with other jobs) or default (the variable "
+                        "unset: libgomp spins a while first, what a user's command does)")
     args = parser.parse_args()
     cli = ROOT / args.build / "app" / "contactbench"
     threads = str(args.threads)
     env = dict(os.environ, OMP_WAIT_POLICY="PASSIVE")
+    if args.omp_wait_policy == "default":
+        env.pop("OMP_WAIT_POLICY")
     env.pop("CONTACTBENCH_FFTW_WISDOM", None)
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, capture_output=True,
                             text=True).stdout.strip()
@@ -175,7 +181,9 @@ def main():
         "# What a whole command costs: FFTW planning with and without wisdom kept between runs",
         "",
         f"Made by `scripts/command_cost.py --repetitions {args.repetitions} --threads {args.threads}"
-        f"{' --baseline OLD/contactbench' if args.baseline else ''}` at commit "
+        f"{' --baseline OLD/contactbench' if args.baseline else ''}"
+        f"{' --omp-wait-policy default' if args.omp_wait_policy == 'default' else ''}"
+        f"{' --out ' + args.out if args.out != parser.get_default('out') else ''}` at commit "
         f"{commit} on {date}; {args.threads} threads, machine: {machine}. Load average (1 min) while it ran: "
         f"{min(loads):.1f} to {max(loads):.1f} on {os.cpu_count()} cores: the machine is shared and the times "
         "are noisy; medians of the repetitions, each repetition's value listed.",
@@ -185,7 +193,11 @@ def main():
         "level's plans measured, FFTW_MEASURE, and the file is written: a machine's first run); warm: the file "
         "the cold run wrote (plans read, not measured: every later run); none: `--fftw-wisdom none` (nothing "
         "kept: measured only where the run's own expected work pays back, which one load or one scene does "
-        "not, so estimated). The cases run interleaved." + baseline_note,
+        "not, so estimated). The cases run interleaved. OpenMP's waiting: "
+        + ("libgomp's default (OMP_WAIT_POLICY unset: threads spin a while before they sleep, what a user's "
+           "command does)" if args.omp_wait_policy == "default" else
+           "OMP_WAIT_POLICY=PASSIVE (threads sleep between parallel regions: fair to other jobs on a shared "
+           "machine)") + "." + baseline_note,
         "",
         "## One load on a 1024^2 periodic surface, the whole `contactbench bem` process",
         "",
