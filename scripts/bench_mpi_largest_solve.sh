@@ -9,6 +9,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 n=${1:-16384}
+if ! [[ "$n" =~ ^[1-9][0-9]*$ ]]; then
+  echo "bench_mpi_largest_solve.sh: n must be a whole number of points a side (e.g. 16384), got '$n'" >&2
+  exit 2
+fi
 cmake --preset release >/dev/null
 cmake --build --preset release -j 2 --target bench_mpi >/dev/null
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_WAIT_POLICY=PASSIVE OMP_NUM_THREADS=1
