@@ -241,8 +241,9 @@ def main():
         "## The paper's surface A scene, `contactbench run`",
         "",
         f"Command: `contactbench run scenes/paper/surface_A.toml --threads {args.threads} --no-plots --quiet "
-        "--fftw-wisdom FILE|none`. BEM stage: the seconds of the stages named bem in summary.json (512^2 and "
-        "1024^2 solves of 12 loads, for the extrapolated area); planning: the `fftw planning` line of "
+        "--fftw-wisdom FILE|none`. BEM stage: the seconds of the stages named bem in summary.json (12 loads "
+        "solved on 512^2 and 1024^2 points for the extrapolated area, and since the error bar's third grid "
+        "(docs/theory.md section 9.2) on 256^2 points too); planning: the `fftw planning` line of "
         "\"Stages that ran\" (part of the BEM stage's seconds).",
         "",
         "| case | BEM stage [s], median | each run [s] | of which planning [s], median | each run [s] | whole "
